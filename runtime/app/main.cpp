@@ -1,0 +1,91 @@
+// shadenet [options] script.lua [args...]: runs a Lua experiment script, headless by default.
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include <lua.hpp>
+
+#include "app/options.h"
+#include "gl/context.h"
+#include "lua/module.h"
+
+namespace {
+
+int traceback(lua_State* L) {
+  const char* msg = lua_tostring(L, 1);
+  if (!msg) msg = lua_pushfstring(L, "(error object is a %s value)", luaL_typename(L, 1));
+  lua_getglobal(L, "debug");
+  lua_getfield(L, -1, "traceback");
+  lua_pushstring(L, msg);
+  lua_pushinteger(L, 2);
+  lua_call(L, 2, 1);
+  return 1;
+}
+
+// Runs the script; prints "script.lua:LINE: message" and a traceback on error.
+int run_script(const sn::app::Options& opt) {
+  lua_State* L = luaL_newstate();
+  if (!L) {
+    fprintf(stderr, "shadenet: cannot create a Lua state\n");
+    return 1;
+  }
+  luaL_openlibs(L);
+  sn::lua::install(L);
+
+  // The global `arg`, as the standalone lua interpreter sets it.
+  lua_createtable(L, int(opt.script_args.size()), 1);
+  lua_pushstring(L, opt.script.c_str());
+  lua_rawseti(L, -2, 0);
+  for (size_t i = 0; i < opt.script_args.size(); ++i) {
+    lua_pushstring(L, opt.script_args[i].c_str());
+    lua_rawseti(L, -2, int(i + 1));
+  }
+  lua_setglobal(L, "arg");
+
+  int status = 0;
+  lua_pushcfunction(L, traceback);
+  if (luaL_loadfile(L, opt.script.c_str()) != 0) {
+    fprintf(stderr, "%s\n", lua_tostring(L, -1));
+    status = 1;
+  } else {
+    for (const auto& a : opt.script_args) lua_pushstring(L, a.c_str());
+    if (lua_pcall(L, int(opt.script_args.size()), 0, 1) != 0) {
+      fprintf(stderr, "%s\n", lua_tostring(L, -1));
+      status = 1;
+    }
+  }
+  lua_close(L);  // runs every __gc while the GL context still lives
+  return status;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  sn::app::Options opt;
+  try {
+    opt = sn::app::parse_options(argc, argv);
+  } catch (const std::exception& e) {
+    fprintf(stderr, "shadenet: %s\n%s", e.what(), sn::app::usage().c_str());
+    return 2;
+  }
+  if (opt.help) {
+    printf("%s", sn::app::usage().c_str());
+    return 0;
+  }
+  try {
+    if (opt.window) sn::gl::set_current(sn::gl::Context::window(opt.width, opt.height, "shadenet"));
+    if (opt.version) {
+      const auto& info = sn::gl::current().info();
+      printf("shadenet %s\nGL renderer: %s\nGL version: %s\n", SHADENET_VERSION, info.renderer.c_str(),
+             info.version.c_str());
+      return 0;
+    }
+  } catch (const std::exception& e) {
+    fprintf(stderr, "shadenet: %s\n", e.what());
+    return 1;
+  }
+  int status = run_script(opt);
+  sn::gl::destroy_current();
+  return status;
+}

@@ -1,0 +1,46 @@
+#include "app/options.h"
+
+#include <stdexcept>
+
+namespace sn::app {
+
+std::string usage() {
+  return "usage: shadenet [options] script.lua [args...]\n"
+         "Runs a Lua experiment script (require \"shadenet\"); its arguments are in the global `arg`.\n"
+         "options:\n"
+         "  --window           open a GLFW window instead of running headless (EGL)\n"
+         "  --size WxH         window size (default 960x720)\n"
+         "  --help             print this help\n"
+         "  --version          print the version, GL renderer and GL version\n";
+}
+
+Options parse_options(int argc, char** argv) {
+  Options o;
+  int i = 1;
+  for (; i < argc; ++i) {
+    std::string a = argv[i];
+    if (a.empty() || a[0] != '-' || a == "-") break;
+    if (a == "--") {
+      ++i;
+      break;
+    }
+    if (a == "--help" || a == "-h") o.help = true;
+    else if (a == "--version" || a == "-v") o.version = true;
+    else if (a == "--window") o.window = true;
+    else if (a == "--size") {
+      if (i + 1 >= argc) throw std::invalid_argument("--size needs a value such as 1280x720");
+      std::string v = argv[++i];
+      if (sscanf(v.c_str(), "%dx%d", &o.width, &o.height) != 2 || o.width < 1 || o.height < 1)
+        throw std::invalid_argument("--size: expected WIDTHxHEIGHT, got '" + v + "'");
+    } else
+      throw std::invalid_argument("unknown option '" + a + "' (valid: --window, --size, --help, --version)");
+  }
+  if (i < argc) {
+    o.script = argv[i++];
+    for (; i < argc; ++i) o.script_args.push_back(argv[i]);
+  }
+  if (o.script.empty() && !o.help && !o.version) throw std::invalid_argument("no script given");
+  return o;
+}
+
+}  // namespace sn::app

@@ -1,0 +1,19 @@
+// The command line: shadenet [options] script.lua [args...], options before the script.
+#pragma once
+#include <string>
+#include <vector>
+
+namespace sn::app {
+
+struct Options {
+  bool help = false, version = false, window = false, watch = false;
+  int width = 960, height = 720;  // window size
+  std::string script;
+  std::vector<std::string> script_args;
+};
+
+// Throws with a message naming the bad option and listing the valid ones.
+Options parse_options(int argc, char** argv);
+std::string usage();
+
+}  // namespace sn::app

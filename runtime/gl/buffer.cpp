@@ -1,0 +1,102 @@
+#include "gl/buffer.h"
+
+#include <epoxy/gl.h>
+
+#include <cstring>
+#include <stdexcept>
+
+namespace sn::gl {
+
+namespace {
+const ElemInfo kInfo[] = {
+    {"float32", 1, true, true}, {"uint32", 1, false, false}, {"int32", 1, false, true},
+    {"vec2", 2, true, true},    {"vec4", 4, true, true},     {"uvec4", 4, false, false},
+    {"ivec4", 4, false, true},
+};
+constexpr GLbitfield kStorage =
+    GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT | GL_MAP_WRITE_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
+}  // namespace
+
+const ElemInfo& elem_info(ElemType t) { return kInfo[static_cast<int>(t)]; }
+
+std::string elem_type_names() {
+  std::string s;
+  for (const ElemInfo& e : kInfo) s += (s.empty() ? "" : ", ") + std::string(e.name);
+  return s;
+}
+
+ElemType parse_elem_type(const std::string& name) {
+  if (name == "float") return ElemType::float32;
+  for (int i = 0; i < int(std::size(kInfo)); ++i)
+    if (name == kInfo[i].name) return static_cast<ElemType>(i);
+  throw std::invalid_argument("unknown buffer type '" + name + "' (valid: " + elem_type_names() + ")");
+}
+
+Buffer::Buffer(ElemType type, std::size_t count) : type_(type), count_(count) {
+  if (count == 0) throw std::invalid_argument("buffer size must be at least 1 element");
+  glCreateBuffers(1, &id_);
+  glNamedBufferStorage(id_, GLsizeiptr(bytes()), nullptr, kStorage);
+  if (glGetError() == GL_OUT_OF_MEMORY) {
+    glDeleteBuffers(1, &id_);
+    throw std::runtime_error("out of GPU memory for a buffer of " + std::to_string(bytes()) + " bytes");
+  }
+  const uint32_t zero = 0;
+  glClearNamedBufferData(id_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+}
+
+Buffer::~Buffer() {
+  if (mapped_) glUnmapNamedBuffer(id_);
+  glDeleteBuffers(1, &id_);
+}
+
+static void check_range(const Buffer& b, std::size_t first, std::size_t n) {
+  if (first + n > b.components())
+    throw std::out_of_range("buffer range " + std::to_string(first) + "+" + std::to_string(n) +
+                            " is outside its " + std::to_string(b.components()) + " components");
+}
+
+void Buffer::upload(const void* data, std::size_t first, std::size_t n) {
+  check_range(*this, first, n);
+  if (mapped_) {  // a mapped buffer is written through its mapping
+    std::memcpy(static_cast<char*>(mapped_) + first * 4, data, n * 4);
+    return;
+  }
+  glNamedBufferSubData(id_, GLintptr(first * 4), GLsizeiptr(n * 4), data);
+}
+
+void Buffer::download(void* data, std::size_t first, std::size_t n) const {
+  check_range(*this, first, n);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  if (mapped_) {
+    finish();
+    std::memcpy(data, static_cast<const char*>(mapped_) + first * 4, n * 4);
+    return;
+  }
+  glGetNamedBufferSubData(id_, GLintptr(first * 4), GLsizeiptr(n * 4), data);
+}
+
+void Buffer::fill_float(float v) { glClearNamedBufferData(id_, GL_R32F, GL_RED, GL_FLOAT, &v); }
+void Buffer::fill_uint(uint32_t v) { glClearNamedBufferData(id_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &v); }
+
+std::vector<float> Buffer::download_floats() const {
+  std::vector<float> out(components());
+  download(out.data(), 0, out.size());
+  return out;
+}
+
+void* Buffer::map() {
+  if (!mapped_) {
+    mapped_ = glMapNamedBufferRange(id_, 0, GLsizeiptr(bytes()),
+                                    GL_MAP_READ_BIT | GL_MAP_WRITE_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT);
+    if (!mapped_) throw std::runtime_error("could not map the buffer into host memory");
+  }
+  finish();
+  return mapped_;
+}
+
+void finish() {
+  glMemoryBarrier(GL_ALL_BARRIER_BITS);
+  glFinish();
+}
+
+}  // namespace sn::gl

@@ -1,0 +1,58 @@
+// A typed GPU storage buffer (std430 layout): what scripts fill, dispatch over and read back.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace sn::gl {
+
+enum class ElemType { float32, uint32, int32, vec2, vec4, uvec4, ivec4 };
+
+struct ElemInfo {
+  const char* name;
+  int components;   // scalars per element
+  bool is_float;    // float components; otherwise 32-bit integers
+  bool is_signed;   // int32 / ivec4
+};
+const ElemInfo& elem_info(ElemType t);
+// Parses "float32" (alias "float"), "uint32", "int32", "vec2", "vec4", "uvec4", "ivec4";
+// throws listing the valid names.
+ElemType parse_elem_type(const std::string& name);
+std::string elem_type_names();
+
+class Buffer {
+ public:
+  Buffer(ElemType type, std::size_t count);  // zero-filled
+  ~Buffer();
+  Buffer(const Buffer&) = delete;
+  Buffer& operator=(const Buffer&) = delete;
+
+  unsigned id() const { return id_; }
+  ElemType type() const { return type_; }
+  std::size_t count() const { return count_; }  // elements
+  std::size_t components() const { return count_ * elem_info(type_).components; }
+  std::size_t bytes() const { return components() * 4; }
+
+  // Raw 32-bit component access; `first` and `n` count components, not elements.
+  void upload(const void* data, std::size_t first, std::size_t n);
+  void download(void* data, std::size_t first, std::size_t n) const;
+  void fill_float(float v);
+  void fill_uint(uint32_t v);
+  std::vector<float> download_floats() const;
+
+  // A pointer to the whole buffer mapped into host memory (persistent, coherent), valid while
+  // the buffer lives. GPU writes become visible after sn::gl::finish().
+  void* map();
+
+ private:
+  unsigned id_ = 0;
+  ElemType type_;
+  std::size_t count_;
+  void* mapped_ = nullptr;
+};
+
+// Waits until every submitted GL command has completed and its writes are visible.
+void finish();
+
+}  // namespace sn::gl

@@ -1,0 +1,180 @@
+#include "gl/program.h"
+
+#include <epoxy/gl.h>
+
+#include <stdexcept>
+
+namespace sn::gl {
+
+namespace {
+
+unsigned compile(GLenum stage, const ShaderSource& src) {
+  GLuint sh = glCreateShader(stage);
+  const char* text = src.text.c_str();
+  glShaderSource(sh, 1, &text, nullptr);
+  glCompileShader(sh);
+  GLint ok = 0;
+  glGetShaderiv(sh, GL_COMPILE_STATUS, &ok);
+  if (!ok) {
+    GLint len = 0;
+    glGetShaderiv(sh, GL_INFO_LOG_LENGTH, &len);
+    std::string log(std::max(len, 1), '\0');
+    glGetShaderInfoLog(sh, len, nullptr, log.data());
+    glDeleteShader(sh);
+    std::string msg = rewrite_log(log.c_str(), src);
+    if (!msg.empty() && msg.back() == '\n') msg.pop_back();
+    throw std::runtime_error(msg.empty() ? src.files[0] + ": compile failed" : msg);
+  }
+  return sh;
+}
+
+std::string stage_key(const char* tag, const ShaderSource& s) { return std::string(tag) + "\n" + s.key(); }
+
+std::map<std::string, std::shared_ptr<Program>>& cache() {
+  static std::map<std::string, std::shared_ptr<Program>> c;
+  return c;
+}
+
+}  // namespace
+
+Program::Program(const ProgramDesc& desc) {
+  std::vector<unsigned> shaders;
+  auto cleanup = [&] {
+    for (unsigned s : shaders) glDeleteShader(s);
+  };
+  compute_ = !desc.compute.empty();
+  if (compute_ == (!desc.vertex.empty() || !desc.fragment.empty()))
+    throw std::invalid_argument("a program takes either 'compute' or 'vertex' + 'fragment'");
+  try {
+    if (compute_) {
+      shaders.push_back(compile(GL_COMPUTE_SHADER, preprocess(desc.compute, desc.defines)));
+      name_ = desc.compute;
+    } else {
+      if (desc.vertex.empty() || desc.fragment.empty())
+        throw std::invalid_argument("a graphics program needs both 'vertex' and 'fragment'");
+      shaders.push_back(compile(GL_VERTEX_SHADER, preprocess(desc.vertex, desc.defines)));
+      shaders.push_back(compile(GL_FRAGMENT_SHADER, preprocess(desc.fragment, desc.defines)));
+      name_ = desc.vertex + " + " + desc.fragment;
+    }
+  } catch (...) {
+    cleanup();
+    throw;
+  }
+  id_ = glCreateProgram();
+  for (unsigned s : shaders) glAttachShader(id_, s);
+  glLinkProgram(id_);
+  cleanup();
+  GLint ok = 0;
+  glGetProgramiv(id_, GL_LINK_STATUS, &ok);
+  if (!ok) {
+    GLint len = 0;
+    glGetProgramiv(id_, GL_INFO_LOG_LENGTH, &len);
+    std::string log(std::max(len, 1), '\0');
+    glGetProgramInfoLog(id_, len, nullptr, log.data());
+    glDeleteProgram(id_);
+    throw std::runtime_error(name_ + ": link failed: " + std::string(log.c_str()));
+  }
+  if (compute_) glGetProgramiv(id_, GL_COMPUTE_WORK_GROUP_SIZE, local_size_);
+
+  GLint count = 0;
+  glGetProgramInterfaceiv(id_, GL_UNIFORM, GL_ACTIVE_RESOURCES, &count);
+  for (GLint i = 0; i < count; ++i) {
+    const GLenum props[] = {GL_NAME_LENGTH, GL_TYPE, GL_LOCATION, GL_ARRAY_SIZE};
+    GLint vals[4];
+    glGetProgramResourceiv(id_, GL_UNIFORM, i, 4, props, 4, nullptr, vals);
+    if (vals[2] < 0) continue;  // a block member
+    std::string n(vals[0], '\0');
+    glGetProgramResourceName(id_, GL_UNIFORM, i, vals[0], nullptr, n.data());
+    n.resize(n.find('\0') == std::string::npos ? n.size() : n.find('\0'));
+    if (n.size() > 3 && n.compare(n.size() - 3, 3, "[0]") == 0) n.resize(n.size() - 3);
+    uniforms_[n] = UniformInfo{vals[2], unsigned(vals[1]), vals[3]};
+  }
+}
+
+Program::~Program() { glDeleteProgram(id_); }
+
+const UniformInfo* Program::uniform(const std::string& name) const {
+  auto it = uniforms_.find(name);
+  return it == uniforms_.end() ? nullptr : &it->second;
+}
+
+std::vector<std::string> Program::uniform_names() const {
+  std::vector<std::string> v;
+  for (const auto& [k, _] : uniforms_) v.push_back(k);
+  return v;
+}
+
+void Program::set_uniform(const std::string& name, const std::vector<double>& v) {
+  const UniformInfo* u = uniform(name);
+  if (!u) {
+    std::string valid;
+    for (const auto& n : uniform_names()) valid += (valid.empty() ? "" : ", ") + n;
+    throw std::invalid_argument("program " + name_ + " has no uniform '" + name + "' (valid: " +
+                                (valid.empty() ? "none" : valid) + ")");
+  }
+  auto need = [&](size_t n) {
+    if (v.size() != n * size_t(u->size))
+      throw std::invalid_argument("uniform '" + name + "' takes " + std::to_string(n * u->size) + " numbers, got " +
+                                  std::to_string(v.size()));
+  };
+  std::vector<float> f(v.begin(), v.end());
+  std::vector<int> iv(v.begin(), v.end());
+  std::vector<unsigned> uv(v.begin(), v.end());
+  GLuint p = id_;
+  GLint loc = u->location, n = u->size;
+  switch (u->type) {
+    case GL_FLOAT: need(1), glProgramUniform1fv(p, loc, n, f.data()); break;
+    case GL_FLOAT_VEC2: need(2), glProgramUniform2fv(p, loc, n, f.data()); break;
+    case GL_FLOAT_VEC3: need(3), glProgramUniform3fv(p, loc, n, f.data()); break;
+    case GL_FLOAT_VEC4: need(4), glProgramUniform4fv(p, loc, n, f.data()); break;
+    case GL_FLOAT_MAT3: need(9), glProgramUniformMatrix3fv(p, loc, n, GL_FALSE, f.data()); break;
+    case GL_FLOAT_MAT4: need(16), glProgramUniformMatrix4fv(p, loc, n, GL_FALSE, f.data()); break;
+    case GL_INT: case GL_BOOL: case GL_SAMPLER_2D: case GL_IMAGE_2D:
+      need(1), glProgramUniform1iv(p, loc, n, iv.data()); break;
+    case GL_INT_VEC2: need(2), glProgramUniform2iv(p, loc, n, iv.data()); break;
+    case GL_INT_VEC3: need(3), glProgramUniform3iv(p, loc, n, iv.data()); break;
+    case GL_INT_VEC4: need(4), glProgramUniform4iv(p, loc, n, iv.data()); break;
+    case GL_UNSIGNED_INT: need(1), glProgramUniform1uiv(p, loc, n, uv.data()); break;
+    case GL_UNSIGNED_INT_VEC2: need(2), glProgramUniform2uiv(p, loc, n, uv.data()); break;
+    case GL_UNSIGNED_INT_VEC3: need(3), glProgramUniform3uiv(p, loc, n, uv.data()); break;
+    case GL_UNSIGNED_INT_VEC4: need(4), glProgramUniform4uiv(p, loc, n, uv.data()); break;
+    default: throw std::invalid_argument("uniform '" + name + "' has a type shadenet cannot set from numbers");
+  }
+}
+
+std::shared_ptr<Program> get_program(const ProgramDesc& desc) {
+  // The key is the preprocessed text, so an edited file or include is a new program.
+  std::string key;
+  if (!desc.compute.empty()) {
+    key = stage_key("compute", preprocess(desc.compute, desc.defines));
+  } else {
+    if (desc.vertex.empty() || desc.fragment.empty())
+      throw std::invalid_argument("a program takes either 'compute' or 'vertex' + 'fragment'");
+    key = stage_key("vertex", preprocess(desc.vertex, desc.defines)) +
+          stage_key("fragment", preprocess(desc.fragment, desc.defines));
+  }
+  auto& c = cache();
+  auto it = c.find(key);
+  if (it != c.end()) return it->second;
+  auto p = std::make_shared<Program>(desc);
+  c.emplace(key, p);
+  return p;
+}
+
+void clear_program_cache() { cache().clear(); }
+std::size_t program_cache_size() { return cache().size(); }
+
+void dispatch(Program& p, unsigned gx, unsigned gy, unsigned gz) {
+  if (!p.is_compute()) throw std::invalid_argument("dispatch needs a compute program, got " + p.name());
+  GLint max[3];
+  for (int i = 0; i < 3; ++i) glGetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, i, &max[i]);
+  if (gx == 0 || gy == 0 || gz == 0 || gx > unsigned(max[0]) || gy > unsigned(max[1]) || gz > unsigned(max[2]))
+    throw std::invalid_argument("workgroup count " + std::to_string(gx) + "x" + std::to_string(gy) + "x" +
+                                std::to_string(gz) + " is outside 1..(" + std::to_string(max[0]) + "x" +
+                                std::to_string(max[1]) + "x" + std::to_string(max[2]) + ")");
+  glUseProgram(p.id());
+  glDispatchCompute(gx, gy, gz);
+  glMemoryBarrier(GL_ALL_BARRIER_BITS);
+}
+
+}  // namespace sn::gl

@@ -1,0 +1,59 @@
+// Compute and graphics programs built from files under shaders/, specialised by #defines and
+// cached by their full preprocessed source, so the same request never compiles twice.
+#pragma once
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "gl/shader_source.h"
+
+namespace sn::gl {
+
+struct ProgramDesc {
+  std::string compute, vertex, fragment;  // paths; compute xor (vertex + fragment)
+  Defines defines;
+};
+
+struct UniformInfo {
+  int location;
+  unsigned type;  // GL_FLOAT, GL_FLOAT_VEC3, GL_INT, GL_FLOAT_MAT4, GL_SAMPLER_2D, ...
+  int size;       // array length
+};
+
+class Program {
+ public:
+  // Compiles and links; throws "shaders/FILE.glsl:LINE: message" (with the source line) on error.
+  explicit Program(const ProgramDesc& desc);
+  ~Program();
+  Program(const Program&) = delete;
+  Program& operator=(const Program&) = delete;
+
+  unsigned id() const { return id_; }
+  bool is_compute() const { return compute_; }
+  const std::string& name() const { return name_; }
+  int local_size(int axis) const { return local_size_[axis]; }
+
+  const UniformInfo* uniform(const std::string& name) const;
+  std::vector<std::string> uniform_names() const;
+  // Sets a uniform from numbers (converted to its declared type); throws for an unknown name
+  // (listing the valid ones) or a wrong number of values.
+  void set_uniform(const std::string& name, const std::vector<double>& values);
+
+ private:
+  unsigned id_ = 0;
+  bool compute_ = false;
+  std::string name_;
+  int local_size_[3] = {1, 1, 1};
+  std::map<std::string, UniformInfo> uniforms_;
+};
+
+// The cache: equal sources and defines give the same Program object.
+std::shared_ptr<Program> get_program(const ProgramDesc& desc);
+void clear_program_cache();
+std::size_t program_cache_size();
+
+// Runs `groups` workgroups of the bound compute program and orders its writes before later reads.
+void dispatch(Program& p, unsigned gx, unsigned gy = 1, unsigned gz = 1);
+
+}  // namespace sn::gl

@@ -1,0 +1,77 @@
+#include "gl/render_target.h"
+
+#include <epoxy/gl.h>
+
+#include <stdexcept>
+#include <string>
+
+namespace sn::gl {
+
+RenderTarget::RenderTarget(int width, int height, int n) : width_(width), height_(height), n_(n) {
+  GLint max_size = 0;
+  glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_size);
+  if (width < 1 || height < 1 || width > max_size || height > max_size)
+    throw std::invalid_argument("render target size " + std::to_string(width) + "x" + std::to_string(height) +
+                                " is outside 1.." + std::to_string(max_size));
+  if (n < 1 || n > kMaxAttachments)
+    throw std::invalid_argument("render target colour attachments must be 1.." + std::to_string(kMaxAttachments));
+  glCreateFramebuffers(1, &fbo_);
+  glCreateTextures(GL_TEXTURE_2D, n, color_);
+  GLenum bufs[kMaxAttachments];
+  for (int i = 0; i < n; ++i) {
+    glTextureStorage2D(color_[i], 1, GL_RGBA32F, width, height);
+    glTextureParameteri(color_[i], GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(color_[i], GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glNamedFramebufferTexture(fbo_, GL_COLOR_ATTACHMENT0 + i, color_[i], 0);
+    bufs[i] = GL_COLOR_ATTACHMENT0 + i;
+  }
+  glNamedFramebufferDrawBuffers(fbo_, n, bufs);
+  glCreateRenderbuffers(1, &depth_);
+  glNamedRenderbufferStorage(depth_, GL_DEPTH_COMPONENT32F, width, height);
+  glNamedFramebufferRenderbuffer(fbo_, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
+  GLenum status = glCheckNamedFramebufferStatus(fbo_, GL_FRAMEBUFFER);
+  if (status != GL_FRAMEBUFFER_COMPLETE) {
+    release();
+    throw std::runtime_error("render target incomplete (status 0x" + std::to_string(status) + ")");
+  }
+}
+
+RenderTarget::~RenderTarget() { release(); }
+
+void RenderTarget::release() {
+  if (fbo_) glDeleteFramebuffers(1, &fbo_);
+  glDeleteTextures(n_, color_);
+  if (depth_) glDeleteRenderbuffers(1, &depth_);
+  fbo_ = depth_ = 0;
+  for (unsigned& c : color_) c = 0;
+}
+
+void RenderTarget::bind() {
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  glViewport(0, 0, width_, height_);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+}
+
+void RenderTarget::clear(std::array<float, 4> rgba) {
+  for (int i = 0; i < n_; ++i) glClearNamedFramebufferfv(fbo_, GL_COLOR, i, rgba.data());
+  float one = 1.f;
+  glClearNamedFramebufferfv(fbo_, GL_DEPTH, 0, &one);
+}
+
+io::Image RenderTarget::read(int i) const {
+  if (i < 0 || i >= n_)
+    throw std::out_of_range("render target has attachments 1.." + std::to_string(n_) + ", asked for " +
+                            std::to_string(i + 1));
+  glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+  io::Image img(width_, height_, 4);
+  glGetTextureImage(color_[i], 0, GL_RGBA, GL_FLOAT, GLsizei(img.pixels.size() * 4), img.pixels.data());
+  // GL's first row is the bottom one; images run top to bottom.
+  const size_t row = size_t(width_) * 4;
+  for (int y = 0; y < height_ / 2; ++y)
+    std::swap_ranges(img.pixels.begin() + y * row, img.pixels.begin() + (y + 1) * row,
+                     img.pixels.begin() + (height_ - 1 - y) * row);
+  return img;
+}
+
+}  // namespace sn::gl

@@ -1,0 +1,158 @@
+#include "gl/shader_source.h"
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+namespace fs = std::filesystem;
+
+namespace sn::gl {
+
+namespace {
+
+std::string read_file(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot read shader file '" + display_path(p.string()) + "'");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+std::vector<std::string> split_lines(const std::string& text) {
+  std::vector<std::string> lines;
+  std::string line;
+  std::istringstream in(text);
+  while (std::getline(in, line)) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    lines.push_back(line);
+  }
+  return lines;
+}
+
+fs::path project_root() { return fs::path(shader_root()).parent_path(); }
+
+struct Expander {
+  ShaderSource& out;
+  std::set<std::string> included;  // each file is pasted once (like #pragma once)
+  std::vector<std::string> stack;
+
+  void expand(const std::string& name, const std::string& text, const fs::path& dir) {
+    int index = int(out.files.size());
+    out.files.push_back(name);
+    out.lines.push_back(split_lines(text));
+    stack.push_back(name);
+    static const std::regex include_re(R"(^\s*#\s*include\s+[\"<]([^\">]+)[\">]\s*(//.*)?$)");
+    static const std::regex version_re(R"(^\s*#\s*version\b.*)");
+    out.text += "#line 1 " + std::to_string(index) + "\n";
+    const auto& lines = out.lines.back();
+    for (size_t i = 0; i < lines.size(); ++i) {
+      std::smatch m;
+      if (std::regex_match(lines[i], m, include_re)) {
+        fs::path target = dir / m[1].str();
+        if (!fs::exists(target)) target = fs::path(shader_root()) / "include" / m[1].str();
+        if (!fs::exists(target)) target = fs::path(shader_root()) / m[1].str();
+        if (!fs::exists(target))
+          throw std::runtime_error(name + ":" + std::to_string(i + 1) + ": cannot find #include \"" + m[1].str() +
+                                   "\" (looked beside the file and in shaders/include/)");
+        std::string canon = fs::weakly_canonical(target).string();
+        for (const auto& s : stack)
+          if (s == display_path(canon))
+            throw std::runtime_error(name + ":" + std::to_string(i + 1) + ": #include cycle through '" + s + "'");
+        if (included.insert(canon).second) expand(display_path(canon), read_file(canon), fs::path(canon).parent_path());
+        out.text += "#line " + std::to_string(i + 2) + " " + std::to_string(index) + "\n";
+      } else if (std::regex_match(lines[i], version_re)) {
+        out.text += "\n";  // the loader writes #version itself
+      } else {
+        out.text += lines[i] + "\n";
+      }
+    }
+    stack.pop_back();
+  }
+};
+
+std::string prolog(const Defines& defines) {
+  std::string s = "#version 450 core\n";
+  for (const auto& [k, v] : defines) s += "#define " + k + " " + v + "\n";
+  return s;
+}
+
+}  // namespace
+
+std::string ShaderSource::key() const { return text; }
+
+std::string shader_root() {
+  if (const char* env = getenv("SHADENET_SHADERS"); env && *env) return fs::absolute(env).string();
+  char exe[4096];
+  ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
+  if (n > 0) {
+    exe[n] = 0;
+    fs::path p = fs::path(exe).parent_path().parent_path() / "shaders";
+    if (fs::is_directory(p)) return p.string();
+  }
+  return (fs::path(SHADENET_SOURCE_DIR) / "shaders").string();
+}
+
+std::string resolve_shader_path(const std::string& path) {
+  if (fs::exists(path)) return fs::absolute(path).string();
+  fs::path under = fs::path(shader_root()) / path;
+  if (fs::exists(under)) return under.string();
+  throw std::runtime_error("shader file '" + path + "' not found (looked in the working directory and in " +
+                           display_path(shader_root()) + "/)");
+}
+
+std::string display_path(const std::string& path) {
+  std::error_code ec;
+  fs::path abs = fs::weakly_canonical(fs::absolute(path), ec);
+  fs::path root = fs::weakly_canonical(project_root(), ec);
+  auto rel = abs.lexically_relative(root);
+  if (!rel.empty() && *rel.begin() != "..") return rel.string();
+  return path;
+}
+
+ShaderSource preprocess(const std::string& path, const Defines& defines) {
+  std::string abs = resolve_shader_path(path);
+  ShaderSource src;
+  src.text = prolog(defines);
+  Expander ex{src, {fs::weakly_canonical(abs).string()}, {}};
+  ex.expand(display_path(abs), read_file(abs), fs::path(abs).parent_path());
+  return src;
+}
+
+ShaderSource preprocess_text(const std::string& name, const std::string& text, const Defines& defines) {
+  ShaderSource src;
+  src.text = prolog(defines);
+  Expander ex{src, {}, {}};
+  ex.expand(name, text, fs::path(shader_root()));
+  return src;
+}
+
+std::string rewrite_log(const std::string& log, const ShaderSource& src) {
+  static const std::regex mesa_re(R"(^(\d+):(\d+)\((\d+)\):\s*(.*)$)");  // 0:12(3): error: ...
+  static const std::regex nv_re(R"(^(\d+)\((\d+)\)\s*:\s*(.*)$)");       // 0(12) : error C0000: ...
+  std::string out;
+  for (const std::string& line : split_lines(log)) {
+    std::smatch m;
+    int file = -1, lineno = 0;
+    std::string msg;
+    if (std::regex_match(line, m, mesa_re)) {
+      file = std::stoi(m[1]), lineno = std::stoi(m[2]), msg = m[4];
+    } else if (std::regex_match(line, m, nv_re)) {
+      file = std::stoi(m[1]), lineno = std::stoi(m[2]), msg = m[3];
+    }
+    if (file >= 0 && file < int(src.files.size())) {
+      out += src.files[file] + ":" + std::to_string(lineno) + ": " + msg + "\n";
+      const auto& lines = src.lines[file];
+      if (lineno >= 1 && lineno <= int(lines.size())) out += "    " + lines[lineno - 1] + "\n";
+    } else if (!line.empty()) {
+      out += line + "\n";
+    }
+  }
+  return out;
+}
+
+}  // namespace sn::gl

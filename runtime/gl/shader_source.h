@@ -1,0 +1,36 @@
+// GLSL files as the driver sees them: #version and #define lines prepended, #include "file"
+// expanded with #line markers, and driver logs mapped back to `shaders/FILE.glsl:LINE`.
+#pragma once
+#include <map>
+#include <string>
+#include <vector>
+
+namespace sn::gl {
+
+using Defines = std::map<std::string, std::string>;
+
+struct ShaderSource {
+  std::string text;                              // what glShaderSource receives
+  std::vector<std::string> files;                // source-string number -> display path
+  std::vector<std::vector<std::string>> lines;   // per file, its lines (for error context)
+  std::string key() const;                       // cache key: the full text
+};
+
+// The folder holding shadenet's shaders: $SHADENET_SHADERS, <exe>/../shaders, or the source tree's.
+std::string shader_root();
+// Finds `path` as given (relative to the working directory), else under shader_root();
+// throws naming both places when neither has it.
+std::string resolve_shader_path(const std::string& path);
+// Turns an absolute or relative path into the name errors show (relative to the project root
+// when the file is inside it, e.g. "shaders/include/mlp.glsl").
+std::string display_path(const std::string& path);
+
+ShaderSource preprocess(const std::string& path, const Defines& defines);
+// Same, from text held in memory (named `name` in messages).
+ShaderSource preprocess_text(const std::string& name, const std::string& text, const Defines& defines);
+
+// Rewrites a Mesa or NVIDIA info log ("0:12(3): error: ..." / "0(12) : error ...") into
+// "shaders/FILE.glsl:LINE: error: ..." lines, each followed by the offending source line.
+std::string rewrite_log(const std::string& log, const ShaderSource& src);
+
+}  // namespace sn::gl

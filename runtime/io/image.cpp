@@ -1,0 +1,115 @@
+#include "io/image.h"
+
+#include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <stdexcept>
+#include <unistd.h>
+
+namespace sn::io {
+
+namespace fs = std::filesystem;
+
+namespace {
+Image read_from(std::unique_ptr<OIIO::ImageInput> in, const std::string& what) {
+  if (!in) throw std::runtime_error(what + ": not a readable image (" + OIIO::geterror() + ")");
+  const OIIO::ImageSpec& spec = in->spec();
+  if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
+    throw std::runtime_error(what + ": image has no pixels");
+  Image img(spec.width, spec.height, spec.nchannels);
+  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, img.pixels.data()))
+    throw std::runtime_error(what + ": corrupt image data (" + in->geterror() + ")");
+  in->close();
+  return img;
+}
+}  // namespace
+
+Image load_image(const std::string& path) {
+  if (!fs::exists(path)) throw std::runtime_error("image file '" + path + "' does not exist");
+  return read_from(OIIO::ImageInput::open(path), "image file '" + path + "'");
+}
+
+Image decode_image(const std::vector<unsigned char>& bytes, const std::string& what) {
+  OIIO::Filesystem::IOMemReader mem(const_cast<unsigned char*>(bytes.data()), bytes.size());
+  OIIO::ImageSpec config;
+  config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &mem);
+  // OpenImageIO picks the reader from a name; sniff PNG/JPEG magic numbers to name it.
+  std::string name = "embedded.png";
+  if (bytes.size() > 2 && bytes[0] == 0xFF && bytes[1] == 0xD8) name = "embedded.jpg";
+  return read_from(OIIO::ImageInput::open(name, &config, &mem), what);
+}
+
+void save_image(const Image& img, const std::string& path) {
+  if (img.pixels.empty()) throw std::runtime_error("cannot save an empty image to '" + path + "'");
+  std::string ext = fs::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
+  bool is_float = ext == ".exr" || ext == ".hdr" || ext == ".tif" || ext == ".tiff";
+  if (!(is_float || ext == ".png" || ext == ".jpg" || ext == ".jpeg" || ext == ".bmp"))
+    throw std::runtime_error("cannot save '" + path + "': unknown image extension '" + ext +
+                             "' (valid: .png, .exr, .jpg, .bmp, .tif, .hdr)");
+  fs::path parent = fs::path(path).parent_path();
+  if (!parent.empty()) fs::create_directories(parent);
+  // The temporary name keeps the extension so OpenImageIO picks the same writer.
+  std::string tmp = (parent / ("." + fs::path(path).stem().string() + ".tmp" + std::to_string(getpid()) + ext)).string();
+  auto out = OIIO::ImageOutput::create(tmp);
+  if (!out) throw std::runtime_error("cannot save '" + path + "': " + OIIO::geterror());
+  OIIO::ImageSpec spec(img.width, img.height, img.channels, is_float ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+  if (!out->open(tmp, spec)) throw std::runtime_error("cannot save '" + path + "': " + out->geterror());
+  bool ok;
+  if (is_float) {
+    ok = out->write_image(OIIO::TypeDesc::FLOAT, img.pixels.data());
+  } else {
+    std::vector<unsigned char> bytes(img.pixels.size());
+    for (size_t i = 0; i < bytes.size(); ++i) {
+      float v = img.pixels[i];
+      v = std::isfinite(v) ? std::clamp(v, 0.f, 1.f) : 0.f;
+      bytes[i] = (unsigned char)(v * 255.f + 0.5f);
+    }
+    ok = out->write_image(OIIO::TypeDesc::UINT8, bytes.data());
+  }
+  std::string err = ok ? "" : out->geterror();
+  ok = out->close() && ok;
+  if (!ok) {
+    std::remove(tmp.c_str());
+    throw std::runtime_error("cannot save '" + path + "': " + err);
+  }
+  fs::rename(tmp, path);
+}
+
+static void same_size(const Image& a, const Image& b) {
+  if (a.width != b.width || a.height != b.height || a.channels != b.channels)
+    throw std::invalid_argument("images differ in size: " + std::to_string(a.width) + "x" + std::to_string(a.height) +
+                                "x" + std::to_string(a.channels) + " vs " + std::to_string(b.width) + "x" +
+                                std::to_string(b.height) + "x" + std::to_string(b.channels));
+}
+
+Image difference(const Image& a, const Image& b) {
+  same_size(a, b);
+  Image d(a.width, a.height, a.channels);
+  for (size_t i = 0; i < d.pixels.size(); ++i) d.pixels[i] = std::abs(a.pixels[i] - b.pixels[i]);
+  return d;
+}
+
+double mse(const Image& a, const Image& b, int channels, const Image* mask, int mask_channel) {
+  same_size(a, b);
+  if (channels < 0 || channels > a.channels) channels = a.channels;
+  if (mask && (mask->width != a.width || mask->height != a.height || mask_channel >= mask->channels))
+    throw std::invalid_argument("mask does not match the images");
+  double sum = 0;
+  size_t n = 0;
+  for (int y = 0; y < a.height; ++y)
+    for (int x = 0; x < a.width; ++x) {
+      if (mask && mask->at(x, y, mask_channel) <= 0.5f) continue;
+      for (int c = 0; c < channels; ++c) {
+        double d = double(a.at(x, y, c)) - b.at(x, y, c);
+        sum += d * d;
+      }
+      ++n;
+    }
+  return n ? sum / (double(n) * channels) : 0.0;
+}
+
+}  // namespace sn::io

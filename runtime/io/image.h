@@ -1,0 +1,34 @@
+// Float images in memory, loaded and saved through OpenImageIO (PNG, EXR, and whatever else it
+// reads). Rows run top to bottom, channels are interleaved.
+#pragma once
+#include <string>
+#include <vector>
+
+namespace sn::io {
+
+struct Image {
+  int width = 0, height = 0, channels = 0;
+  std::vector<float> pixels;  // width * height * channels
+
+  Image() = default;
+  Image(int w, int h, int c, float fill = 0.f) : width(w), height(h), channels(c), pixels(size_t(w) * h * c, fill) {}
+  float& at(int x, int y, int c) { return pixels[(size_t(y) * width + x) * channels + c]; }
+  float at(int x, int y, int c) const { return pixels[(size_t(y) * width + x) * channels + c]; }
+};
+
+// Throws naming the file and OpenImageIO's reason when it is missing or not an image.
+Image load_image(const std::string& path);
+// Decodes an image held in memory (e.g. a texture embedded in a glTF file).
+Image decode_image(const std::vector<unsigned char>& bytes, const std::string& what);
+// Writes to a temporary file beside `path` and renames it, so a failure never leaves a
+// half-written image. 8-bit formats (PNG, JPEG) are clamped to [0,1] and sRGB-free (values
+// stored as given); EXR keeps full float. Throws on an unknown extension.
+void save_image(const Image& img, const std::string& path);
+
+// |a - b| per channel (sizes must match).
+Image difference(const Image& a, const Image& b);
+// Mean squared error over channels [0, channels) (all when -1) of the pixels where `mask` (if
+// given, channel `mask_channel`) is > 0.5.
+double mse(const Image& a, const Image& b, int channels = -1, const Image* mask = nullptr, int mask_channel = 3);
+
+}  // namespace sn::io

@@ -1,0 +1,224 @@
+#include "lua/binding.h"
+
+#include <cmath>
+
+namespace sn::lua {
+
+int guarded(lua_State* L, int (*f)(lua_State*)) {
+  bool failed = false;
+  try {
+    return f(L);
+  } catch (const std::exception& e) {
+    luaL_where(L, 1);
+    lua_pushstring(L, e.what());
+    lua_concat(L, 2);
+    failed = true;
+  }
+  // Outside the catch: every C++ destructor has run before the longjmp.
+  return failed ? lua_error(L) : 0;
+}
+
+void define_type(lua_State* L, const char* type, const luaL_Reg* methods, lua_CFunction tostring_fn,
+                 const luaL_Reg* metamethods) {
+  luaL_newmetatable(L, type);
+  lua_pushstring(L, type);
+  lua_setfield(L, -2, "__name");
+  lua_newtable(L);
+  for (const luaL_Reg* r = methods; r && r->name; ++r) {
+    lua_pushcfunction(L, r->func);
+    lua_setfield(L, -2, r->name);
+  }
+  lua_setfield(L, -2, "__index");
+  if (tostring_fn) {
+    lua_pushcfunction(L, tostring_fn);
+    lua_setfield(L, -2, "__tostring");
+  }
+  for (const luaL_Reg* r = metamethods; r && r->name; ++r) {
+    lua_pushcfunction(L, r->func);
+    lua_setfield(L, -2, r->name);
+  }
+  lua_pop(L, 1);
+}
+
+void* test_type(lua_State* L, int idx, const char* type) {
+  void* p = lua_touserdata(L, idx);
+  if (!p || !lua_getmetatable(L, idx)) return nullptr;
+  luaL_getmetatable(L, type);
+  bool same = lua_rawequal(L, -1, -2);
+  lua_pop(L, 2);
+  return same ? p : nullptr;
+}
+
+std::string type_name_at(lua_State* L, int idx) {
+  if (lua_getmetatable(L, idx)) {
+    lua_getfield(L, -1, "__name");
+    if (lua_isstring(L, -1)) {
+      std::string n = lua_tostring(L, -1);
+      lua_pop(L, 2);
+      return n;
+    }
+    lua_pop(L, 2);
+  }
+  return luaL_typename(L, idx);
+}
+
+double check_number(lua_State* L, int idx, const char* what) {
+  if (lua_type(L, idx) != LUA_TNUMBER)
+    throw Error(std::string(what) + ": number expected, got " + type_name_at(L, idx));
+  return lua_tonumber(L, idx);
+}
+
+long long check_integer(lua_State* L, int idx, const char* what) {
+  double v = check_number(L, idx, what);
+  if (std::floor(v) != v) throw Error(std::string(what) + ": integer expected, got " + std::to_string(v));
+  return (long long)v;
+}
+
+std::string check_string(lua_State* L, int idx, const char* what) {
+  if (lua_type(L, idx) != LUA_TSTRING)
+    throw Error(std::string(what) + ": string expected, got " + type_name_at(L, idx));
+  return lua_tostring(L, idx);
+}
+
+std::vector<double> check_numbers(lua_State* L, int idx, const char* what, int n) {
+  idx = absindex(L, idx);
+  if (lua_type(L, idx) == LUA_TNUMBER && n <= 1) return {lua_tonumber(L, idx)};
+  if (!lua_istable(L, idx)) throw Error(std::string(what) + ": table of numbers expected, got " + type_name_at(L, idx));
+  int len = int(lua_objlen(L, idx));
+  if (n >= 0 && len != n)
+    throw Error(std::string(what) + ": " + std::to_string(n) + " numbers expected, got " + std::to_string(len));
+  std::vector<double> v(len);
+  for (int i = 1; i <= len; ++i) {
+    lua_rawgeti(L, idx, i);
+    if (lua_type(L, -1) != LUA_TNUMBER) {
+      std::string t = type_name_at(L, -1);
+      lua_pop(L, 1);
+      throw Error(std::string(what) + ": element " + std::to_string(i) + " is " + t + ", not a number");
+    }
+    v[i - 1] = lua_tonumber(L, -1);
+    lua_pop(L, 1);
+  }
+  return v;
+}
+
+std::string join(const std::vector<std::string>& items, const char* sep) {
+  std::string s;
+  for (const auto& i : items) s += (s.empty() ? "" : sep) + i;
+  return s;
+}
+
+int check_choice(const std::string& value, std::initializer_list<const char*> valid, const char* what) {
+  int i = 0;
+  std::vector<std::string> names;
+  for (const char* v : valid) {
+    if (value == v) return i;
+    names.push_back(v);
+    ++i;
+  }
+  throw Error(std::string("unknown ") + what + " '" + value + "' (valid: " + join(names) + ")");
+}
+
+Options::Options(lua_State* L, int idx, const char* what, std::initializer_list<const char*> valid)
+    : L_(L), idx_(absindex(L, idx)), what_(what) {
+  if (!lua_istable(L, idx_)) throw Error(std::string(what) + ": options table expected, got " + type_name_at(L, idx_));
+  lua_pushnil(L);
+  while (lua_next(L, idx_)) {
+    lua_pop(L, 1);
+    bool ok = false;
+    if (lua_type(L, -1) == LUA_TSTRING) {
+      std::string k = lua_tostring(L, -1);
+      for (const char* v : valid) ok = ok || k == v;
+      if (!ok) {
+        std::vector<std::string> names(valid.begin(), valid.end());
+        lua_pop(L, 1);
+        throw Error(std::string(what) + ": unknown option '" + k + "' (valid: " + join(names) + ")");
+      }
+    } else {
+      lua_pop(L, 1);
+      throw Error(std::string(what) + ": options must be named (key = value)");
+    }
+  }
+}
+
+int Options::push(const char* key) const {
+  lua_getfield(L_, idx_, key);
+  return lua_gettop(L_);
+}
+
+bool Options::has(const char* key) const {
+  push(key);
+  bool r = !lua_isnil(L_, -1);
+  lua_pop(L_, 1);
+  return r;
+}
+
+std::string Options::where(const char* key) const { return std::string(what_) + " option '" + key + "'"; }
+
+double Options::number(const char* key) const {
+  if (!has(key)) throw Error(where(key) + " is required");
+  return number(key, 0);
+}
+double Options::number(const char* key, double def) const {
+  int i = push(key);
+  double v = lua_isnil(L_, i) ? def : check_number(L_, i, where(key).c_str());
+  lua_pop(L_, 1);
+  return v;
+}
+long long Options::integer(const char* key) const {
+  if (!has(key)) throw Error(where(key) + " is required");
+  return integer(key, 0);
+}
+long long Options::integer(const char* key, long long def) const {
+  int i = push(key);
+  long long v = lua_isnil(L_, i) ? def : check_integer(L_, i, where(key).c_str());
+  lua_pop(L_, 1);
+  return v;
+}
+bool Options::boolean(const char* key, bool def) const {
+  int i = push(key);
+  bool v = def;
+  if (!lua_isnil(L_, i)) {
+    if (!lua_isboolean(L_, i)) {
+      std::string t = type_name_at(L_, i);
+      lua_pop(L_, 1);
+      throw Error(where(key) + ": boolean expected, got " + t);
+    }
+    v = lua_toboolean(L_, i);
+  }
+  lua_pop(L_, 1);
+  return v;
+}
+std::string Options::string(const char* key) const {
+  if (!has(key)) throw Error(where(key) + " is required");
+  return string(key, "");
+}
+std::string Options::string(const char* key, const std::string& def) const {
+  int i = push(key);
+  std::string v;
+  try {
+    v = lua_isnil(L_, i) ? def : check_string(L_, i, where(key).c_str());
+  } catch (...) {
+    lua_pop(L_, 1);
+    throw;
+  }
+  lua_pop(L_, 1);
+  return v;
+}
+int Options::choice(const char* key, std::initializer_list<const char*> valid, int def) const {
+  if (!has(key)) return def;
+  return check_choice(string(key), valid, where(key).c_str());
+}
+std::vector<double> Options::numbers(const char* key, int n) const {
+  int i = push(key);
+  std::vector<double> v;
+  try {
+    v = check_numbers(L_, i, where(key).c_str(), n);
+  } catch (...) {
+    lua_pop(L_, 1);
+    throw;
+  }
+  lua_pop(L_, 1);
+  return v;
+}
+
+}  // namespace sn::lua

@@ -1,0 +1,137 @@
+// How C++ meets Lua. Every binding body runs inside `guarded`, which turns a C++ exception into
+// a Lua error carrying the script's file:line (never luaL_error inside a catch: the longjmp
+// would skip destructors). Objects are shared_ptr userdata with __gc and :release(); options
+// tables are strict (unknown keys and enum strings are errors listing the valid ones).
+#pragma once
+#include <lua.hpp>
+
+#include <initializer_list>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace sn::lua {
+
+// lua_absindex is Lua 5.2; LuaJIT speaks 5.1.
+inline int absindex(lua_State* L, int i) { return (i > 0 || i <= LUA_REGISTRYINDEX) ? i : lua_gettop(L) + i + 1; }
+
+// A script-facing error; thrown anywhere below a binding.
+struct Error : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Runs f(L); a C++ exception becomes a Lua error "file.lua:LINE: message".
+int guarded(lua_State* L, int (*f)(lua_State*));
+template <int (*F)(lua_State*)>
+int wrap(lua_State* L) {
+  return guarded(L, F);
+}
+// luaL_Reg-style table whose functions all go through `wrap`.
+#define SN_FN(name, fn) {name, ::sn::lua::wrap<fn>}
+
+// ---- objects ----
+template <class T>
+struct Box {
+  std::shared_ptr<T> ptr;
+};
+
+// Creates the metatable `type` ("Buffer", "Program", ...) with `methods` as __index, __gc and a
+// :release() method. `tostring_fn` may be null (prints "Buffer: 0x...").
+void define_type(lua_State* L, const char* type, const luaL_Reg* methods, lua_CFunction tostring_fn = nullptr,
+                 const luaL_Reg* metamethods = nullptr);
+
+template <class T>
+void push(lua_State* L, std::shared_ptr<T> p, const char* type) {
+  void* mem = lua_newuserdata(L, sizeof(Box<T>));
+  new (mem) Box<T>{std::move(p)};
+  luaL_getmetatable(L, type);
+  if (lua_isnil(L, -1)) throw Error(std::string("internal: type ") + type + " not defined");
+  lua_setmetatable(L, -2);
+}
+
+// Internal: the userdata at idx if its metatable is `type`, else null.
+void* test_type(lua_State* L, int idx, const char* type);
+std::string type_name_at(lua_State* L, int idx);
+
+template <class T>
+std::shared_ptr<T>& check_box(lua_State* L, int idx, const char* type) {
+  void* ud = test_type(L, idx, type);
+  if (!ud) throw Error(std::string(type) + " expected, got " + type_name_at(L, idx));
+  auto& p = static_cast<Box<T>*>(ud)->ptr;
+  if (!p) throw Error(std::string("this ") + type + " was released; it can no longer be used");
+  return p;
+}
+template <class T>
+T& check(lua_State* L, int idx, const char* type) {
+  return *check_box<T>(L, idx, type);
+}
+template <class T>
+std::shared_ptr<T> check_shared(lua_State* L, int idx, const char* type) {
+  return check_box<T>(L, idx, type);
+}
+// __gc / :release() for Box<T>: frees the C++ object once; later use is a clear error.
+template <class T>
+int release(lua_State* L) {
+  if (void* ud = lua_touserdata(L, 1)) static_cast<Box<T>*>(ud)->ptr.reset();
+  return 0;
+}
+template <class T>
+int gc(lua_State* L) {
+  if (void* ud = lua_touserdata(L, 1)) static_cast<Box<T>*>(ud)->~Box<T>();
+  return 0;
+}
+// define_type for a Box<T>: wires __gc and :release to the right destructor.
+template <class T>
+void define_box_type(lua_State* L, const char* type, const luaL_Reg* methods, lua_CFunction tostring_fn = nullptr,
+                     const luaL_Reg* metamethods = nullptr) {
+  define_type(L, type, methods, tostring_fn, metamethods);
+  luaL_getmetatable(L, type);
+  lua_pushcfunction(L, gc<T>);
+  lua_setfield(L, -2, "__gc");
+  lua_getfield(L, -1, "__index");
+  if (lua_istable(L, -1)) {
+    lua_pushcfunction(L, release<T>);
+    lua_setfield(L, -2, "release");
+  }
+  lua_pop(L, 2);
+}
+
+// ---- plain values ----
+double check_number(lua_State* L, int idx, const char* what);
+long long check_integer(lua_State* L, int idx, const char* what);
+std::string check_string(lua_State* L, int idx, const char* what);
+// A Lua array of numbers ({1,2,3}); `n` = required length or -1.
+std::vector<double> check_numbers(lua_State* L, int idx, const char* what, int n = -1);
+// Picks `value` from `valid`; throws "unknown WHAT 'value' (valid: a, b, c)".
+int check_choice(const std::string& value, std::initializer_list<const char*> valid, const char* what);
+std::string join(const std::vector<std::string>& items, const char* sep = ", ");
+
+// ---- option tables ----
+// Reads a table argument of named options; unknown keys are an error listing the valid keys.
+class Options {
+ public:
+  Options(lua_State* L, int idx, const char* what, std::initializer_list<const char*> valid);
+  bool has(const char* key) const;
+  double number(const char* key, double def) const;
+  double number(const char* key) const;  // required
+  long long integer(const char* key, long long def) const;
+  long long integer(const char* key) const;
+  bool boolean(const char* key, bool def) const;
+  std::string string(const char* key, const std::string& def) const;
+  std::string string(const char* key) const;
+  int choice(const char* key, std::initializer_list<const char*> valid, int def) const;
+  std::vector<double> numbers(const char* key, int n = -1) const;
+  // Pushes the raw value (nil when absent) and returns its stack index (absolute).
+  int push(const char* key) const;
+  lua_State* state() const { return L_; }
+  const char* what() const { return what_; }
+  std::string where(const char* key) const;  // "sn.buffer option 'size'"
+
+ private:
+  lua_State* L_;
+  int idx_;
+  const char* what_;
+};
+
+}  // namespace sn::lua

@@ -1,0 +1,20 @@
+// The `shadenet` Lua module: C++ bindings (one wrap_*.cpp per exposed type) plus the Lua-side
+// prelude runtime/lua/shadenet.lua, embedded at build time.
+#pragma once
+#include <lua.hpp>
+
+namespace sn::lua {
+
+// Makes `require "shadenet"` (and the embedded "shadenet.*" modules) available in L.
+void install(lua_State* L);
+
+// Each binding file adds its functions to the module table on top of the stack.
+void open_buffer(lua_State* L);
+void open_program(lua_State* L);
+void open_image(lua_State* L);
+void open_target(lua_State* L);
+void open_mesh(lua_State* L);
+void open_camera(lua_State* L);
+void open_context(lua_State* L);
+
+}  // namespace sn::lua

@@ -1,0 +1,178 @@
+// sn.program{...} and program:dispatch{...}: compute and graphics programs from shaders/.
+#include <epoxy/gl.h>
+
+#include "gl/buffer.h"
+#include "gl/program.h"
+#include "gl/render_target.h"
+#include "lua/binding.h"
+#include "lua/module.h"
+#include "lua/program_bindings.h"
+
+namespace sn::lua {
+
+namespace {
+
+constexpr const char* kType = "Program";
+using gl::Program;
+
+gl::Defines read_defines(lua_State* L, int idx) {
+  gl::Defines d;
+  if (lua_isnil(L, idx)) return d;
+  if (!lua_istable(L, idx)) throw Error("sn.program option 'defines': table expected, got " + type_name_at(L, idx));
+  lua_pushnil(L);
+  while (lua_next(L, idx)) {
+    if (lua_type(L, -2) != LUA_TSTRING) throw Error("sn.program 'defines': keys must be names");
+    std::string k = lua_tostring(L, -2);
+    std::string v;
+    if (lua_type(L, -1) == LUA_TBOOLEAN) v = lua_toboolean(L, -1) ? "1" : "0";
+    else if (lua_type(L, -1) == LUA_TNUMBER) {
+      double x = lua_tonumber(L, -1);
+      char buf[64];
+      if (x == (long long)x) snprintf(buf, sizeof buf, "%lld", (long long)x);
+      else snprintf(buf, sizeof buf, "%.9g", x);
+      v = buf;
+    } else if (lua_type(L, -1) == LUA_TSTRING) v = lua_tostring(L, -1);
+    else throw Error("sn.program 'defines': " + k + " must be a number, string or boolean");
+    d[k] = v;
+    lua_pop(L, 1);
+  }
+  return d;
+}
+
+// sn.program{ compute = "file.comp" } or { vertex = "a.vert", fragment = "a.frag" }, defines = {...}
+int w_new(lua_State* L) {
+  Options o(L, 1, "sn.program", {"compute", "vertex", "fragment", "defines"});
+  gl::ProgramDesc desc;
+  desc.compute = o.string("compute", "");
+  desc.vertex = o.string("vertex", "");
+  desc.fragment = o.string("fragment", "");
+  int d = o.push("defines");
+  desc.defines = read_defines(L, d);
+  lua_pop(L, 1);
+  push(L, gl::get_program(desc), kType);
+  return 1;
+}
+
+// prog:dispatch{ groups = {x,y,z} | n, buffers = {...}, uniforms = {...}, textures = {...} }
+int w_dispatch(lua_State* L) {
+  Program& p = check<Program>(L, 1, kType);
+  Options o(L, 2, "program:dispatch", {"groups", "buffers", "uniforms", "textures"});
+  auto g = o.numbers("groups");
+  if (g.empty() || g.size() > 3) throw Error("program:dispatch option 'groups': 1 to 3 numbers expected");
+  apply_bindings(L, o, p);
+  gl::dispatch(p, unsigned(g[0]), g.size() > 1 ? unsigned(g[1]) : 1, g.size() > 2 ? unsigned(g[2]) : 1);
+  return 0;
+}
+
+int w_uniforms(lua_State* L) {
+  auto names = check<Program>(L, 1, kType).uniform_names();
+  lua_createtable(L, int(names.size()), 0);
+  for (size_t i = 0; i < names.size(); ++i) {
+    lua_pushstring(L, names[i].c_str());
+    lua_rawseti(L, -2, int(i + 1));
+  }
+  return 1;
+}
+
+int w_local_size(lua_State* L) {
+  Program& p = check<Program>(L, 1, kType);
+  for (int i = 0; i < 3; ++i) lua_pushinteger(L, p.local_size(i));
+  return 3;
+}
+
+int w_tostring(lua_State* L) {
+  auto* ud = static_cast<Box<Program>*>(test_type(L, 1, kType));
+  if (!ud || !ud->ptr) lua_pushstring(L, "Program (released)");
+  else lua_pushfstring(L, "Program(%s)", ud->ptr->name().c_str());
+  return 1;
+}
+
+int w_cache_size(lua_State* L) {
+  lua_pushinteger(L, lua_Integer(gl::program_cache_size()));
+  return 1;
+}
+
+}  // namespace
+
+void apply_bindings(lua_State* L, const Options& o, gl::Program& p) {
+  // buffers: array part binds in order from binding 0; named entries bind to the SSBO block of that name.
+  int bi = o.push("buffers");
+  if (!lua_isnil(L, bi)) {
+    if (!lua_istable(L, bi)) throw Error(o.where("buffers") + ": table expected");
+    lua_pushnil(L);
+    while (lua_next(L, bi)) {
+      auto& buf = check<gl::Buffer>(L, -1, "Buffer");
+      GLuint binding;
+      if (lua_type(L, -2) == LUA_TNUMBER) {
+        binding = GLuint(lua_tonumber(L, -2) - 1);
+      } else {
+        std::string name = lua_tostring(L, -2);
+        GLuint index = glGetProgramResourceIndex(p.id(), GL_SHADER_STORAGE_BLOCK, name.c_str());
+        if (index == GL_INVALID_INDEX) throw Error(o.where("buffers") + ": program has no buffer block '" + name + "'");
+        const GLenum prop = GL_BUFFER_BINDING;
+        GLint b = 0;
+        glGetProgramResourceiv(p.id(), GL_SHADER_STORAGE_BLOCK, index, 1, &prop, 1, nullptr, &b);
+        binding = GLuint(b);
+      }
+      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, buf.id());
+      lua_pop(L, 1);
+    }
+  }
+  lua_pop(L, 1);
+
+  int ui = o.push("uniforms");
+  if (!lua_isnil(L, ui)) {
+    if (!lua_istable(L, ui)) throw Error(o.where("uniforms") + ": table expected");
+    lua_pushnil(L);
+    while (lua_next(L, ui)) {
+      if (lua_type(L, -2) != LUA_TSTRING) throw Error(o.where("uniforms") + ": keys must be uniform names");
+      std::string name = lua_tostring(L, -2);
+      auto v = lua_type(L, -1) == LUA_TBOOLEAN ? std::vector<double>{double(lua_toboolean(L, -1))}
+                                               : check_numbers(L, -1, ("uniform '" + name + "'").c_str());
+      p.set_uniform(name, v);
+      lua_pop(L, 1);
+    }
+  }
+  lua_pop(L, 1);
+
+  // textures = { u_name = target } (attachment 1) or { u_name = {target, i} }
+  int ti = o.push("textures");
+  if (!lua_isnil(L, ti)) {
+    if (!lua_istable(L, ti)) throw Error(o.where("textures") + ": table expected");
+    int unit = 0;
+    lua_pushnil(L);
+    while (lua_next(L, ti)) {
+      if (lua_type(L, -2) != LUA_TSTRING) throw Error(o.where("textures") + ": keys must be sampler names");
+      std::string name = lua_tostring(L, -2);
+      int attachment = 0;
+      if (lua_istable(L, -1)) {
+        lua_rawgeti(L, -1, 2);
+        attachment = lua_isnil(L, -1) ? 0 : int(check_integer(L, -1, "texture attachment")) - 1;
+        lua_pop(L, 1);
+        lua_rawgeti(L, -1, 1);
+        lua_replace(L, -2);
+      }
+      auto& t = check<gl::RenderTarget>(L, -1, "Target");
+      if (attachment < 0 || attachment >= t.attachments())
+        throw Error("texture '" + name + "': attachment " + std::to_string(attachment + 1) + " out of range 1.." +
+                    std::to_string(t.attachments()));
+      glBindTextureUnit(GLuint(unit), t.color_texture(attachment));
+      p.set_uniform(name, {double(unit)});
+      ++unit;
+      lua_pop(L, 1);
+    }
+  }
+  lua_pop(L, 1);
+}
+
+void open_program(lua_State* L) {
+  static const luaL_Reg methods[] = {SN_FN("dispatch", w_dispatch), SN_FN("uniforms", w_uniforms),
+                                     SN_FN("local_size", w_local_size), {nullptr, nullptr}};
+  define_box_type<Program>(L, kType, methods, wrap<w_tostring>);
+  lua_pushcfunction(L, wrap<w_new>);
+  lua_setfield(L, -2, "program");
+  lua_pushcfunction(L, wrap<w_cache_size>);
+  lua_setfield(L, -2, "program_cache_size");
+}
+
+}  // namespace sn::lua

@@ -1,0 +1,79 @@
+// sn.target{...}: offscreen render targets (float colour + depth) and sn.present(target).
+#include "gl/context.h"
+#include "gl/render_target.h"
+#include "lua/binding.h"
+#include "lua/module.h"
+
+namespace sn::lua {
+
+namespace {
+
+constexpr const char* kType = "Target";
+using gl::RenderTarget;
+
+RenderTarget& self(lua_State* L) { return check<RenderTarget>(L, 1, kType); }
+
+// sn.target{ width, height, colors = 1 }
+int w_new(lua_State* L) {
+  Options o(L, 1, "sn.target", {"width", "height", "colors"});
+  push(L, std::make_shared<RenderTarget>(int(o.integer("width")), int(o.integer("height")), int(o.integer("colors", 1))),
+       kType);
+  return 1;
+}
+
+int w_clear(lua_State* L) {
+  std::array<float, 4> c = {0, 0, 0, 0};
+  RenderTarget& t = self(L);
+  if (!lua_isnoneornil(L, 2)) {
+    auto v = check_numbers(L, 2, "target:clear colour", 4);
+    for (int i = 0; i < 4; ++i) c[i] = float(v[i]);
+  }
+  t.clear(c);
+  return 0;
+}
+
+// target:read([attachment = 1]) -> Image (RGBA float, top row first)
+int w_read(lua_State* L) {
+  RenderTarget& t = self(L);
+  int i = lua_isnoneornil(L, 2) ? 0 : int(check_integer(L, 2, "attachment")) - 1;
+  push(L, std::make_shared<io::Image>(t.read(i)), "Image");
+  return 1;
+}
+
+int w_size(lua_State* L) {
+  RenderTarget& t = self(L);
+  lua_pushinteger(L, t.width()), lua_pushinteger(L, t.height());
+  return 2;
+}
+
+// sn.present(target): shows attachment 1 in the window (no-op headless); returns false once
+// the window was closed.
+int w_present(lua_State* L) {
+  RenderTarget& t = check<RenderTarget>(L, 1, kType);
+  auto& ctx = gl::current();
+  ctx.present(t.fbo(), t.width(), t.height());
+  ctx.poll();
+  lua_pushboolean(L, !ctx.should_close());
+  return 1;
+}
+
+int w_tostring(lua_State* L) {
+  auto* ud = static_cast<Box<RenderTarget>*>(test_type(L, 1, kType));
+  if (!ud || !ud->ptr) lua_pushstring(L, "Target (released)");
+  else lua_pushfstring(L, "Target(%dx%d, %d colours)", ud->ptr->width(), ud->ptr->height(), ud->ptr->attachments());
+  return 1;
+}
+
+}  // namespace
+
+void open_target(lua_State* L) {
+  static const luaL_Reg methods[] = {SN_FN("clear", w_clear), SN_FN("read", w_read), SN_FN("size", w_size),
+                                     {nullptr, nullptr}};
+  define_box_type<RenderTarget>(L, kType, methods, wrap<w_tostring>);
+  lua_pushcfunction(L, wrap<w_new>);
+  lua_setfield(L, -2, "target");
+  lua_pushcfunction(L, wrap<w_present>);
+  lua_setfield(L, -2, "present");
+}
+
+}  // namespace sn::lua
