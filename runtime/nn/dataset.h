@@ -1,0 +1,25 @@
+// Training data as every backend reads it: covered-pixel samples split into training and
+// validation rows. Inputs and targets are row-major floats; targets are already in the colour
+// space the networks learn in (`color`).
+#pragma once
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "nn/mlp_spec.h"
+
+namespace sn::nn {
+
+struct Dataset {
+  int inputs = 0, outputs = 0;
+  ColorSpace color = ColorSpace::rgb;
+  std::vector<float> train_x, train_y;  // train_count() rows
+  std::vector<float> val_x, val_y;      // val_count() rows
+  std::vector<std::string> input_names;  // e.g. {"normal", "view"}: what a network trained on it reads
+  std::string key;                       // content key of what produced it (for caching)
+
+  std::size_t train_count() const { return inputs ? train_x.size() / inputs : 0; }
+  std::size_t val_count() const { return inputs ? val_x.size() / inputs : 0; }
+};
+
+}  // namespace sn::nn

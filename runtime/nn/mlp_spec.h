@@ -1,0 +1,46 @@
+// What a fully connected network is: its widths, activations and colour space, and where each
+// parameter lives in the one flat float array that every backend (cpu, gl, oracle, fragment
+// shader) shares. Layer l maps width(l) -> width(l+1); its weights are row-major
+// [out][in] followed by its biases [out]; layers follow each other in order.
+#pragma once
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace sn::nn {
+
+enum class Activation { linear, tanh, sigmoid, relu, leaky_relu };
+enum class ColorSpace { rgb, hsv, cie_xyz, cie_lab };
+
+const char* activation_name(Activation a);
+Activation parse_activation(const std::string& name);  // throws listing the valid names
+const char* color_space_name(ColorSpace c);
+ColorSpace parse_color_space(const std::string& name);  // "rgb", "hsv", "cie" (= cie_lab), "cie_xyz", "cie_lab"
+
+constexpr int kMaxWidth = 64;
+constexpr int kMaxHidden = 32;
+
+struct MlpSpec {
+  int inputs = 6;
+  std::vector<int> hidden;  // widths of the hidden layers, 1..kMaxWidth each, 1..kMaxHidden of them
+  int outputs = 3;
+  Activation activation = Activation::tanh;
+  double slope = 0.01;  // leaky_relu's a
+  Activation output_activation = Activation::linear;
+  ColorSpace color = ColorSpace::rgb;
+
+  int layers() const { return int(hidden.size()) + 1; }  // weight layers
+  int width(int i) const;  // i = 0: inputs, 1..hidden: hidden, layers(): outputs
+  std::size_t weight_offset(int layer) const;  // layer 0-based
+  std::size_t bias_offset(int layer) const;
+  std::size_t param_count() const;
+  int max_width() const;
+  // Throws with a message naming the bad field and its valid range.
+  void validate() const;
+  // "mlp(6 -> 13x4 -> 6x4 -> 3, tanh)": runs of equal widths are written WIDTHxCOUNT.
+  std::string describe() const;
+  // Same architecture (parameters can be trained in one group).
+  bool same_shape(const MlpSpec& o) const;
+};
+
+}  // namespace sn::nn
