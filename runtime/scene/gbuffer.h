@@ -1,0 +1,34 @@
+// The G-buffer pass: one mesh-set seen from one camera, rasterised into per-pixel attributes.
+// Only the attributes asked for are rasterised (the fragment shader is specialised by #define),
+// each into its own RGBA32F attachment, in the order asked for: the value in .xyz (uv in .xy)
+// and coverage in .w (1 on the mesh, 0 on the background).
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "gl/render_target.h"
+
+namespace sn::scene {
+
+// Attribute names a G-buffer (and so a network input) can hold:
+//   "normal"         world-space unit normal (3)
+//   "view"           world-space unit direction from the surface towards the eye (3)
+//   "position"       object-space position, as stored in the mesh file (3)
+//   "world_position" world-space position (3)
+//   "uv"             texture coordinates (2)
+//   "base_color"     the mesh's base-colour texture at uv, as stored (3; for textured models)
+const std::vector<std::string>& gbuffer_attribute_names();
+// Components a network reads from the attribute (3, or 2 for "uv"); throws listing the valid names.
+int attribute_width(const std::string& name);
+
+struct GBuffer {
+  std::shared_ptr<gl::RenderTarget> target;  // attachment i holds attributes[i]
+  std::vector<std::string> attributes;
+  int width = 0, height = 0;
+
+  // Attachment index of `name`; throws listing the attributes this G-buffer holds.
+  int attachment(const std::string& name) const;
+};
+
+}  // namespace sn::scene
