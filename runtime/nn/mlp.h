@@ -1,0 +1,47 @@
+// A network as the runtime holds it: its spec, its parameters in the shared flat layout
+// (nn/mlp_spec.h), what it reads, and counters the renderer and scripts watch. Adam moments
+// are not here: they belong to one training run (nn/trainer.h).
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "nn/mlp_spec.h"
+
+namespace sn::nn {
+
+enum class Init { xavier, he };
+const char* init_name(Init i);
+Init parse_init(const std::string& name);  // "xavier" | "he"; throws listing the valid names
+
+struct Mlp {
+  MlpSpec spec;
+  std::vector<float> params;  // spec.param_count() floats, layout of MlpSpec
+  // G-buffer attributes the input vector is assembled from, in order (e.g. {"normal", "view"});
+  // empty until set by the user or by the first training on a Dataset that names them.
+  std::vector<std::string> input_names;
+  // Bumped on every change of `params` (edits, training, restore_best, load): the renderer
+  // re-uploads the weights when it differs from what it last uploaded.
+  uint64_t version = 1;
+  uint64_t trained_steps = 0;  // Adam steps applied over the network's whole life
+  // Parameters at the epoch of the lowest validation MSE of the last training run (empty before
+  // any run); `restore_best()` copies them into `params`.
+  std::vector<float> best_params;
+  double best_val_mse = 0;
+  int best_epoch = 0;  // 1-based epoch of best_params, 0 = none
+
+  Mlp() = default;
+  // Validates the spec and initialises the parameters (see nn/init.h).
+  Mlp(const MlpSpec& s, Init init, uint64_t seed);
+
+  void touch() { ++version; }
+  bool restore_best();  // false when there is no best snapshot
+
+  // Views on layer `l` (0-based): weights row-major [out][in], then biases [out].
+  float* weights(int l) { return params.data() + spec.weight_offset(l); }
+  float* biases(int l) { return params.data() + spec.bias_offset(l); }
+  const float* weights(int l) const { return params.data() + spec.weight_offset(l); }
+  const float* biases(int l) const { return params.data() + spec.bias_offset(l); }
+};
+
+}  // namespace sn::nn
