@@ -34,7 +34,9 @@ int run_script(const sn::app::Options& opt) {
   sn::lua::install(L);
 
   // The global `arg`, as the standalone lua interpreter sets it.
-  lua_createtable(L, int(opt.script_args.size()), 1);
+  lua_createtable(L, int(opt.script_args.size()), 2);
+  lua_pushstring(L, opt.program.c_str());  // arg[-1]: this executable, for scripts that run shadenet again
+  lua_rawseti(L, -2, -1);
   lua_pushstring(L, opt.script.c_str());
   lua_rawseti(L, -2, 0);
   for (size_t i = 0; i < opt.script_args.size(); ++i) {

@@ -16,6 +16,7 @@ std::string usage() {
 
 Options parse_options(int argc, char** argv) {
   Options o;
+  o.program = argc > 0 ? argv[0] : "shadenet";
   int i = 1;
   for (; i < argc; ++i) {
     std::string a = argv[i];

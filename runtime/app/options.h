@@ -8,6 +8,7 @@ namespace sn::app {
 struct Options {
   bool help = false, version = false, window = false, watch = false;
   int width = 960, height = 720;  // window size
+  std::string program;  // argv[0]
   std::string script;
   std::vector<std::string> script_args;
 };

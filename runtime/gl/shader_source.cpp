@@ -49,7 +49,7 @@ struct Expander {
     static const std::regex include_re(R"(^\s*#\s*include\s+[\"<]([^\">]+)[\">]\s*(//.*)?$)");
     static const std::regex version_re(R"(^\s*#\s*version\b.*)");
     out.text += "#line 1 " + std::to_string(index) + "\n";
-    const auto& lines = out.lines.back();
+    const std::vector<std::string> lines = out.lines.back();  // a copy: nested includes grow out.lines
     for (size_t i = 0; i < lines.size(); ++i) {
       std::smatch m;
       if (std::regex_match(lines[i], m, include_re)) {

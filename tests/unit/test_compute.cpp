@@ -1,0 +1,76 @@
+// Compute dispatch end to end: a shader's output equals the same computation in C++.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "gl/buffer.h"
+#include "gl/context.h"
+#include "gl/program.h"
+
+#include <epoxy/gl.h>
+
+using namespace sn::gl;
+
+TEST(Compute, ShaderMatchesCpp) {
+  current();
+  const int n = 10000;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> u(-3.f, 3.f);
+  std::vector<float> x(n);
+  for (float& v : x) v = u(rng);
+  Buffer in(ElemType::float32, n), out(ElemType::float32, n);
+  in.upload(x.data(), 0, n);
+  auto p = get_program({.compute = "tests/data/shaders/poly.comp", .defines = {{"LOCAL_SIZE", "64"}}});
+  p->set_uniform("u_count", {double(n)});
+  p->set_uniform("u_scale", {0.5});
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, out.id());
+  dispatch(*p, (n + 63) / 64);
+  auto y = out.download_floats();
+  for (int i = 0; i < n; ++i) {
+    double xd = x[i];
+    double expect = 0.5 * (xd * xd * xd - 2.0 * xd) + std::tanh(xd);
+    ASSERT_NEAR(y[i], expect, 2e-5 * std::max(1.0, std::abs(expect))) << "at " << i << " x=" << xd;
+  }
+}
+
+TEST(Compute, ProgramCacheReusesEqualSources) {
+  current();
+  auto a = get_program({.compute = "tests/data/shaders/poly.comp", .defines = {{"LOCAL_SIZE", "64"}}});
+  auto b = get_program({.compute = "tests/data/shaders/poly.comp", .defines = {{"LOCAL_SIZE", "64"}}});
+  auto c = get_program({.compute = "tests/data/shaders/poly.comp", .defines = {{"LOCAL_SIZE", "32"}}});
+  EXPECT_EQ(a.get(), b.get());
+  EXPECT_NE(a.get(), c.get());
+  EXPECT_EQ(c->local_size(0), 32);
+}
+
+TEST(Buffer, UploadDownloadFillAndRange) {
+  current();
+  Buffer b(ElemType::vec4, 3);
+  EXPECT_EQ(b.components(), 12u);
+  float v[4] = {1, 2, 3, 4};
+  b.upload(v, 4, 4);
+  auto all = b.download_floats();
+  EXPECT_EQ(all[0], 0.f);
+  EXPECT_EQ(all[5], 2.f);
+  b.fill_float(0.25f);
+  EXPECT_EQ(b.download_floats()[11], 0.25f);
+  EXPECT_THROW(b.upload(v, 10, 4), std::out_of_range);
+  EXPECT_THROW(parse_elem_type("half"), std::invalid_argument);
+}
+
+TEST(Buffer, MappedPointerSeesShaderWrites) {
+  current();
+  Buffer in(ElemType::float32, 64), out(ElemType::float32, 64);
+  float* p = static_cast<float*>(in.map());
+  for (int i = 0; i < 64; ++i) p[i] = float(i);
+  auto prog = get_program({.compute = "tests/data/shaders/poly.comp", .defines = {{"LOCAL_SIZE", "64"}}});
+  prog->set_uniform("u_count", {64});
+  prog->set_uniform("u_scale", {1.0});
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, out.id());
+  dispatch(*prog, 1);
+  float* q = static_cast<float*>(out.map());  // map() waits for the GPU
+  EXPECT_NEAR(q[2], 2.0 * 2 * 2 - 4 + std::tanh(2.0), 1e-5);
+}

@@ -1,0 +1,55 @@
+// The GLSL loader: #include expansion, #define injection and the mapping of driver logs back
+// to the file and line a person wrote.
+#include <gtest/gtest.h>
+
+#include "gl/shader_source.h"
+
+using namespace sn::gl;
+
+TEST(ShaderSource, DefinesAndVersionComeFirst) {
+  ShaderSource s = preprocess_text("inline.comp", "void main() {}\n", {{"WIDTH", "8"}, {"ACT", "tanh"}});
+  EXPECT_EQ(s.text.rfind("#version 450 core\n#define ACT tanh\n#define WIDTH 8\n#line 1 0\n", 0), 0u);
+}
+
+TEST(ShaderSource, IncludeIsExpandedOnceWithLineMarkers) {
+  ShaderSource s = preprocess("tests/data/shaders/uses_broken.comp", {});
+  ASSERT_EQ(s.files.size(), 2u);
+  EXPECT_EQ(s.files[0], "tests/data/shaders/uses_broken.comp");
+  EXPECT_EQ(s.files[1], "tests/data/shaders/broken_helper.glsl");
+  // after the include, line numbering resumes in file 0 at the line after the #include (line 4)
+  EXPECT_NE(s.text.find("#line 1 1\n"), std::string::npos);
+  EXPECT_NE(s.text.find("#line 4 0\n"), std::string::npos);
+}
+
+TEST(ShaderSource, MesaLogMapsToIncludedFile) {
+  ShaderSource s = preprocess("tests/data/shaders/uses_broken.comp", {});
+  std::string out = rewrite_log("1:5(12): error: `undeclared_thing' undeclared\n", s);
+  EXPECT_EQ(out,
+            "tests/data/shaders/broken_helper.glsl:5: error: `undeclared_thing' undeclared\n"
+            "        return undeclared_thing * 2.0;\n");
+}
+
+TEST(ShaderSource, NvidiaLogMapsToIncludedFile) {
+  ShaderSource s = preprocess("tests/data/shaders/uses_broken.comp", {});
+  std::string out = rewrite_log("1(5) : error C1008: undefined variable \"undeclared_thing\"\n", s);
+  EXPECT_EQ(out.substr(0, out.find('\n')),
+            "tests/data/shaders/broken_helper.glsl:5: error C1008: undefined variable \"undeclared_thing\"");
+}
+
+TEST(ShaderSource, MissingFileNamesBothPlaces) {
+  try {
+    preprocess("no/such/file.comp", {});
+    FAIL() << "expected an error";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("shader file 'no/such/file.comp' not found"), std::string::npos) << e.what();
+  }
+}
+
+TEST(ShaderSource, IncludeCycleIsAnError) {
+  try {
+    preprocess("tests/data/shaders/self_include.glsl", {});
+    FAIL() << "expected an error";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("self_include.glsl:2: #include cycle"), std::string::npos) << e.what();
+  }
+}
