@@ -23,7 +23,7 @@ unsigned compile(GLenum stage, const ShaderSource& src) {
     glDeleteShader(sh);
     std::string msg = rewrite_log(log.c_str(), src);
     if (!msg.empty() && msg.back() == '\n') msg.pop_back();
-    throw std::runtime_error(msg.empty() ? src.files[0] + ": compile failed" : msg);
+    throw std::runtime_error("GLSL compile error in " + src.files[0] + (msg.empty() ? "" : ":\n" + msg));
   }
   return sh;
 }

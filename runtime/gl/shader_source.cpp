@@ -36,6 +36,13 @@ std::vector<std::string> split_lines(const std::string& text) {
 
 fs::path project_root() { return fs::path(shader_root()).parent_path(); }
 
+// Mesa reports some errors with source-string 0 whatever #line said, so the file index is also
+// encoded in the line number itself: line kStride * index + n is line n of file `index`.
+constexpr int kStride = 100000;
+std::string line_marker(int index, int line) {
+  return "#line " + std::to_string(kStride * index + line) + " " + std::to_string(index) + "\n";
+}
+
 struct Expander {
   ShaderSource& out;
   std::set<std::string> included;  // each file is pasted once (like #pragma once)
@@ -48,7 +55,7 @@ struct Expander {
     stack.push_back(name);
     static const std::regex include_re(R"(^\s*#\s*include\s+[\"<]([^\">]+)[\">]\s*(//.*)?$)");
     static const std::regex version_re(R"(^\s*#\s*version\b.*)");
-    out.text += "#line 1 " + std::to_string(index) + "\n";
+    out.text += line_marker(index, 1);
     const std::vector<std::string> lines = out.lines.back();  // a copy: nested includes grow out.lines
     for (size_t i = 0; i < lines.size(); ++i) {
       std::smatch m;
@@ -64,7 +71,7 @@ struct Expander {
           if (s == display_path(canon))
             throw std::runtime_error(name + ":" + std::to_string(i + 1) + ": #include cycle through '" + s + "'");
         if (included.insert(canon).second) expand(display_path(canon), read_file(canon), fs::path(canon).parent_path());
-        out.text += "#line " + std::to_string(i + 2) + " " + std::to_string(index) + "\n";
+        out.text += line_marker(index, int(i) + 2);
       } else if (std::regex_match(lines[i], version_re)) {
         out.text += "\n";  // the loader writes #version itself
       } else {
@@ -144,6 +151,7 @@ std::string rewrite_log(const std::string& log, const ShaderSource& src) {
     } else if (std::regex_match(line, m, nv_re)) {
       file = std::stoi(m[1]), lineno = std::stoi(m[2]), msg = m[3];
     }
+    if (lineno >= kStride) file = lineno / kStride, lineno %= kStride;
     if (file >= 0 && file < int(src.files.size())) {
       out += src.files[file] + ":" + std::to_string(lineno) + ": " + msg + "\n";
       const auto& lines = src.lines[file];
