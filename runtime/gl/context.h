@@ -3,6 +3,9 @@
 #pragma once
 #include <memory>
 #include <string>
+#include <utility>
+
+#include "io/image.h"
 
 namespace sn::gl {
 
@@ -23,8 +26,12 @@ class Context {
   const ContextInfo& info() const { return info_; }
   virtual bool windowed() const { return false; }
   // Shows the colour attachment 0 of framebuffer `fbo` (size w x h) in the window, scaled to fit.
-  virtual void present(unsigned fbo, int w, int h) { (void)fbo, (void)w, (void)h; }
+  // With `capture`, also reads back what the window shows (its whole framebuffer, RGBA).
+  virtual void present(unsigned fbo, int w, int h, io::Image* capture = nullptr) {
+    (void)fbo, (void)w, (void)h, (void)capture;
+  }
   virtual void set_title(const std::string&) {}
+  virtual std::pair<int, int> framebuffer_size() const { return {0, 0}; }
   virtual bool should_close() const { return false; }
   // Processes window events; waits up to `timeout_s` for one when > 0 (an idle window sleeps).
   virtual void poll(double timeout_s = 0) { (void)timeout_s; }

@@ -41,7 +41,7 @@ class GlfwWindow final : public Context {
     glfwTerminate();
   }
   bool windowed() const override { return true; }
-  void present(unsigned fbo, int w, int h) override {
+  void present(unsigned fbo, int w, int h, io::Image* capture) override {
     int fw = 0, fh = 0;
     glfwGetFramebufferSize(window_, &fw, &fh);
     // Keep the aspect ratio: letterbox the image inside the window.
@@ -51,10 +51,26 @@ class GlfwWindow final : public Context {
     glViewport(0, 0, fw, fh);
     glClearColor(0.1f, 0.1f, 0.1f, 1.f);
     glClear(GL_COLOR_BUFFER_BIT);
-    glBlitNamedFramebuffer(fbo, 0, 0, 0, w, h, x0, y0, x0 + dw, y0 + dh, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+    glBlitNamedFramebuffer(fbo, 0, 0, 0, w, h, x0, y0, x0 + dw, y0 + dh, GL_COLOR_BUFFER_BIT,
+                           dw == w && dh == h ? GL_NEAREST : GL_LINEAR);
+    if (capture) {  // read the back buffer before the swap leaves it undefined
+      *capture = io::Image(fw, fh, 4);
+      glReadBuffer(GL_BACK);
+      glPixelStorei(GL_PACK_ALIGNMENT, 1);
+      glReadPixels(0, 0, fw, fh, GL_RGBA, GL_FLOAT, capture->pixels.data());
+      const size_t row = size_t(fw) * 4;
+      for (int y = 0; y < fh / 2; ++y)
+        std::swap_ranges(capture->pixels.begin() + y * row, capture->pixels.begin() + (y + 1) * row,
+                         capture->pixels.begin() + (fh - 1 - y) * row);
+    }
     glfwSwapBuffers(window_);
   }
   void set_title(const std::string& title) override { glfwSetWindowTitle(window_, title.c_str()); }
+  std::pair<int, int> framebuffer_size() const override {
+    int fw = 0, fh = 0;
+    glfwGetFramebufferSize(window_, &fw, &fh);
+    return {fw, fh};
+  }
   bool should_close() const override { return glfwWindowShouldClose(window_); }
   void poll(double timeout_s) override {
     if (timeout_s > 0) glfwWaitEventsTimeout(timeout_s);

@@ -57,6 +57,25 @@ int w_present(lua_State* L) {
   return 1;
 }
 
+// sn.screenshot(target) -> Image: presents the target and reads back what the window shows
+// (the whole window, letterboxed); headless it is an error.
+int w_screenshot(lua_State* L) {
+  RenderTarget& t = check<RenderTarget>(L, 1, kType);
+  auto& ctx = gl::current();
+  if (!ctx.windowed()) throw Error("sn.screenshot needs a window: run with --window (headless, use target:read())");
+  auto img = std::make_shared<io::Image>();
+  ctx.present(t.fbo(), t.width(), t.height(), img.get());
+  push(L, std::move(img), "Image");
+  return 1;
+}
+
+// sn.window_size() -> width, height of the window's framebuffer (0, 0 headless)
+int w_window_size(lua_State* L) {
+  auto [w, h] = gl::current().framebuffer_size();
+  lua_pushinteger(L, w), lua_pushinteger(L, h);
+  return 2;
+}
+
 int w_tostring(lua_State* L) {
   auto* ud = static_cast<Box<RenderTarget>*>(test_type(L, 1, kType));
   if (!ud || !ud->ptr) lua_pushstring(L, "Target (released)");
@@ -74,6 +93,10 @@ void open_target(lua_State* L) {
   lua_setfield(L, -2, "target");
   lua_pushcfunction(L, wrap<w_present>);
   lua_setfield(L, -2, "present");
+  lua_pushcfunction(L, wrap<w_screenshot>);
+  lua_setfield(L, -2, "screenshot");
+  lua_pushcfunction(L, wrap<w_window_size>);
+  lua_setfield(L, -2, "window_size");
 }
 
 }  // namespace sn::lua
