@@ -1,0 +1,28 @@
+// Constants and guarded operations shared by the lighting models. CPU twin:
+// runtime/shading/lighting.cpp (same constants, same guards), docs/lighting.md.
+const float PI = 3.14159265358979;
+const float LIGHTING_MIN_LENGTH2 = 1e-30;      // a shorter vector counts as zero
+const float LIGHTING_MIN_ALPHA = 1e-3;         // GGX width floor: a mirror is a delta no pixel shows
+const float LIGHTING_MIN_DENOMINATOR = 1e-30;
+
+// x / |x|, or the zero vector for a zero-length x (normalize(0) is NaN).
+vec3 safe_normalize(vec3 x) { return x * inversesqrt(max(dot(x, x), LIGHTING_MIN_LENGTH2)); }
+
+// max(cos t, 0)^e for the angle t between a and b (any lengths), 0^0 = 1 (GLSL leaves pow(0, 0)
+// undefined). A sharp lobe lives where cos t is within a few ulps of 1, where pow(dot, e) would
+// multiply float's rounding by e; there the power is taken as (1 - sin^2 t)^(e/2) with sin^2 t
+// from the cross product (log(1 - s) by its series for small s). Far from the peak
+// (sin^2 t >= 1/2) the dot itself is the precise quantity.
+float cos_lobe(vec3 a, vec3 b, float e) {
+  float d = dot(a, b);
+  float aa = dot(a, a) * dot(b, b);
+  if (!(d > 0.0) || !(aa > LIGHTING_MIN_LENGTH2)) return e == 0.0 ? 1.0 : 0.0;
+  vec3 c = cross(a, b);
+  float s = clamp(dot(c, c) / aa, 0.0, 1.0);  // sin^2 t
+  if (s >= 0.5) return pow(min(d * inversesqrt(aa), 1.0), e);
+  float log_cos2 = s < 0.05 ? -s * (1.0 + s * (1.0 / 2.0 + s * (1.0 / 3.0 + s * (1.0 / 4.0 + s * (1.0 / 5.0 + s / 6.0)))))
+                            : log(1.0 - s);
+  return exp(0.5 * e * log_cos2);
+}
+
+float clamp_dot(vec3 a, vec3 b) { return clamp(dot(a, b), -1.0, 1.0); }
