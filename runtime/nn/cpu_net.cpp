@@ -1,0 +1,526 @@
+// The 32-byte vectors below never cross a non-inlined call, so GCC's ABI note does not apply.
+#pragma GCC diagnostic ignored "-Wpsabi"
+
+#include "nn/cpu_net.h"
+
+#include <immintrin.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <new>
+
+#include "nn/fast_tanh.h"
+
+namespace sn::nn {
+
+namespace {
+
+typedef float v8 __attribute__((vector_size(32)));
+typedef int v8i __attribute__((vector_size(32)));
+#define SN_INLINE inline __attribute__((always_inline))
+
+constexpr int kLanes = 8;
+std::size_t round8(std::size_t n) { return (n + 7) & ~std::size_t(7); }
+std::size_t round16(std::size_t n) { return (n + 15) & ~std::size_t(15); }
+
+SN_INLINE v8 splat(float x) { return v8{x, x, x, x, x, x, x, x}; }
+SN_INLINE float hsum(v8 v) { return ((v[0] + v[4]) + (v[1] + v[5])) + ((v[2] + v[6]) + (v[3] + v[7])); }
+
+struct Avx2 {};
+struct Sse2 {};
+
+template <class Isa>
+SN_INLINE v8 vsqrt(v8 x) {
+  if constexpr (std::is_same_v<Isa, Avx2>) {
+    return (v8)__builtin_ia32_sqrtps256((__m256)x);
+  } else {
+    typedef float v4 __attribute__((vector_size(16)));
+    v4 lo = {x[0], x[1], x[2], x[3]}, hi = {x[4], x[5], x[6], x[7]};
+    lo = (v4)_mm_sqrt_ps((__m128)lo);
+    hi = (v4)_mm_sqrt_ps((__m128)hi);
+    return v8{lo[0], lo[1], lo[2], lo[3], hi[0], hi[1], hi[2], hi[3]};
+  }
+}
+
+// a = act(z), and d act / dz written in terms of a (all four hidden activations allow it).
+template <Activation A>
+SN_INLINE v8 act(v8 z, float slope) {
+  if constexpr (A == Activation::tanh) return fast_tanh(z);
+  if constexpr (A == Activation::sigmoid) return 0.5f + 0.5f * fast_tanh(0.5f * z);
+  if constexpr (A == Activation::relu) return z > 0.0f ? z : splat(0.0f);
+  if constexpr (A == Activation::leaky_relu) return z > 0.0f ? z : slope * z;
+  return z;
+}
+template <Activation A>
+SN_INLINE v8 act_grad(v8 a, float slope) {
+  if constexpr (A == Activation::tanh) return 1.0f - a * a;
+  if constexpr (A == Activation::sigmoid) return a * (1.0f - a);
+  if constexpr (A == Activation::relu) return a > 0.0f ? splat(1.0f) : splat(0.0f);
+  if constexpr (A == Activation::leaky_relu) return a > 0.0f ? splat(1.0f) : splat(slope);
+  return splat(1.0f);
+}
+// The output layer's activation is chosen per neuron at run time (few neurons, cheap).
+SN_INLINE v8 act_any(Activation a, v8 z, float slope) {
+  switch (a) {
+    case Activation::tanh: return act<Activation::tanh>(z, slope);
+    case Activation::sigmoid: return act<Activation::sigmoid>(z, slope);
+    case Activation::relu: return act<Activation::relu>(z, slope);
+    case Activation::leaky_relu: return act<Activation::leaky_relu>(z, slope);
+    default: return z;
+  }
+}
+SN_INLINE v8 act_grad_any(Activation a, v8 y, float slope) {
+  switch (a) {
+    case Activation::tanh: return act_grad<Activation::tanh>(y, slope);
+    case Activation::sigmoid: return act_grad<Activation::sigmoid>(y, slope);
+    case Activation::relu: return act_grad<Activation::relu>(y, slope);
+    case Activation::leaky_relu: return act_grad<Activation::leaky_relu>(y, slope);
+    default: return splat(1.0f);
+  }
+}
+
+}  // namespace
+
+// Padded offsets, all in floats from the arena start and multiples of 16 (64 bytes).
+// Parameters: layer l = rows [out][inpad] (inpad = in rounded up to 8, pad columns stay 0),
+// then biases [round8(out)].
+struct CpuNet::Layout {
+  int L = 0;
+  int in[kMaxHidden + 1] = {}, out[kMaxHidden + 1] = {}, inpad[kMaxHidden + 1] = {};
+  std::size_t woff[kMaxHidden + 1] = {}, boff[kMaxHidden + 1] = {};  // within a parameter copy
+  std::size_t P = 0;  // floats per parameter copy
+  std::size_t aoff[kMaxHidden + 2] = {};  // activations of layer l (width(l) x 8), from o_act
+  std::size_t toff[kMaxHidden + 1] = {};  // transposed activations (8 x inpad), from o_at
+  int maxw = 0;
+  std::size_t o_p[2] = {}, o_m = 0, o_v = 0, o_g = 0, o_act = 0, o_at = 0, o_d[2] = {}, total = 0;
+  Activation hidden = Activation::tanh, output = Activation::linear;
+  float slope = 0;
+
+  explicit Layout(const MlpSpec& s) {
+    L = s.layers();
+    hidden = s.activation;
+    output = s.output_activation;
+    slope = float(s.slope);
+    maxw = s.max_width();
+    std::size_t at = 0, a = 0;
+    for (int l = 0; l < L; ++l) {
+      in[l] = s.width(l);
+      out[l] = s.width(l + 1);
+      inpad[l] = int(round8(in[l]));
+      woff[l] = P;
+      boff[l] = P + std::size_t(out[l]) * inpad[l];
+      P = round16(boff[l] + round8(out[l]));
+      toff[l] = at;
+      at += round16(std::size_t(kLanes) * inpad[l]);
+    }
+    for (int l = 0; l <= L; ++l) {
+      aoff[l] = a;
+      a += round16(std::size_t(s.width(l)) * kLanes);
+    }
+    std::size_t d = round16(std::size_t(maxw) * kLanes);
+    std::size_t o = 0;
+    for (auto* f : {&o_p[0], &o_p[1], &o_m, &o_v, &o_g}) *f = o, o += P;
+    o_act = o, o += a;
+    o_at = o, o += at;
+    o_d[0] = o, o += d;
+    o_d[1] = o, o += d;
+    total = o;
+  }
+};
+
+namespace {
+
+using Layout = CpuNet::Layout;
+
+// Where a kernel finds everything of one net.
+struct View {
+  const Layout& S;
+  float* base;
+  int cur;
+  float* p() const { return base + S.o_p[cur]; }
+  float* pnext() const { return base + S.o_p[cur ^ 1]; }
+  v8* act(int l) const { return reinterpret_cast<v8*>(base + S.o_act + S.aoff[l]); }
+  float* at(int l) const { return base + S.o_at + S.toff[l]; }
+  v8* d(int k) const { return reinterpret_cast<v8*>(base + S.o_d[k]); }
+};
+
+// z[j] = b[j] + sum_i W[j][i] a[i] for R rows at once (R independent FMA chains).
+template <int R>
+SN_INLINE void rows_forward(const float* W, int inpad, const float* b, int in, const v8* a, v8* z) {
+  v8 acc[R];
+  for (int j = 0; j < R; ++j) acc[j] = splat(b[j]);
+  for (int i = 0; i < in; ++i) {
+    const v8 ai = a[i];
+    for (int j = 0; j < R; ++j) acc[j] += splat(W[j * inpad + i]) * ai;
+  }
+  for (int j = 0; j < R; ++j) z[j] = acc[j];
+}
+
+// prev[j] = sum_o W[o][j] d[o] for R columns at once.
+template <int R>
+SN_INLINE void cols_backward(const float* W, int inpad, int out, const v8* d, v8* prev) {
+  v8 acc[R];
+  for (int j = 0; j < R; ++j) acc[j] = splat(0.0f);
+  for (int o = 0; o < out; ++o) {
+    const v8 dv = d[o];
+    for (int j = 0; j < R; ++j) acc[j] += splat(W[o * inpad + j]) * dv;
+  }
+  for (int j = 0; j < R; ++j) prev[j] = acc[j];
+}
+
+// G[j][:] += sum_s d[j][s] * aT[s][:] for R rows: the weight gradient as outer products, with
+// the minibatch (s) as the reduction and the inputs on the SIMD axis.
+template <int R>
+SN_INLINE void rows_gradient(float* G, int inpad, const float* d, const float* aT) {
+  for (int k = 0; k < inpad; k += kLanes) {
+    v8 acc[R];
+    for (int j = 0; j < R; ++j) acc[j] = *reinterpret_cast<const v8*>(G + j * inpad + k);
+    for (int s = 0; s < kLanes; ++s) {
+      const v8 a = *reinterpret_cast<const v8*>(aT + s * inpad + k);
+      for (int j = 0; j < R; ++j) acc[j] += splat(d[j * kLanes + s]) * a;
+    }
+    for (int j = 0; j < R; ++j) *reinterpret_cast<v8*>(G + j * inpad + k) = acc[j];
+  }
+}
+
+// Runs F<R>(first, R) over [0, n) in groups of 8 and one remainder group.
+template <template <int> class F, class... Args>
+SN_INLINE void in_groups(int n, Args&&... args) {
+  int j = 0;
+  for (; j + 8 <= n; j += 8) F<8>::run(j, args...);
+  switch (n - j) {
+    case 7: F<7>::run(j, args...); break;
+    case 6: F<6>::run(j, args...); break;
+    case 5: F<5>::run(j, args...); break;
+    case 4: F<4>::run(j, args...); break;
+    case 3: F<3>::run(j, args...); break;
+    case 2: F<2>::run(j, args...); break;
+    case 1: F<1>::run(j, args...); break;
+    default: break;
+  }
+}
+template <int R>
+struct Forward {
+  static SN_INLINE void run(int o, const float* W, int inpad, const float* b, int in, const v8* a, v8* z) {
+    rows_forward<R>(W + o * inpad, inpad, b + o, in, a, z + o);
+  }
+};
+template <int R>
+struct Backward {
+  static SN_INLINE void run(int i, const float* W, int inpad, int out, const v8* d, v8* prev) {
+    cols_backward<R>(W + i, inpad, out, d, prev + i);
+  }
+};
+template <int R>
+struct Gradient {
+  static SN_INLINE void run(int o, float* G, int inpad, const float* d, const float* aT) {
+    rows_gradient<R>(G + o * inpad, inpad, d + o * kLanes, aT);
+  }
+};
+
+// Loads rows into layer 0's activations (input i of sample s at [i][s]); lanes >= n are 0.
+SN_INLINE void gather_inputs(const View& V, const float* x, const uint32_t* rows, std::size_t first, int n) {
+  const int inputs = V.S.in[0];
+  float* a0 = reinterpret_cast<float*>(V.act(0));
+  for (int s = 0; s < kLanes; ++s) {
+    if (s < n) {
+      const float* xr = x + std::size_t(rows ? rows[first + s] : first + s) * inputs;
+      for (int i = 0; i < inputs; ++i) a0[i * kLanes + s] = xr[i];
+    } else {
+      for (int i = 0; i < inputs; ++i) a0[i * kLanes + s] = 0.0f;
+    }
+  }
+}
+
+template <Activation H>
+SN_INLINE void forward_block(const View& V) {
+  const Layout& S = V.S;
+  const float* p = V.p();
+  for (int l = 0; l < S.L; ++l) {
+    v8* z = V.act(l + 1);
+    in_groups<Forward>(S.out[l], p + S.woff[l], S.inpad[l], p + S.boff[l], S.in[l], V.act(l), z);
+    if (l + 1 < S.L) {
+      for (int o = 0; o < S.out[l]; ++o) z[o] = act<H>(z[o], S.slope);
+    } else if (S.output != Activation::linear) {
+      for (int o = 0; o < S.out[l]; ++o) z[o] = act_any(S.output, z[o], S.slope);
+    }
+  }
+}
+
+// Target rows as lanes (0 beyond n) and the lane mask.
+SN_INLINE v8 gather_target(const float* y, int outputs, int o, const uint32_t* rows, std::size_t first, int n) {
+  v8 t = splat(0.0f);
+  for (int s = 0; s < n; ++s) t[s] = y[std::size_t(rows ? rows[first + s] : first + s) * outputs + o];
+  return t;
+}
+SN_INLINE v8i lane_mask(int n) {
+  const v8i lanes = {0, 1, 2, 3, 4, 5, 6, 7};
+  return lanes < n;
+}
+
+template <class Isa, Activation H>
+SN_INLINE bool step_impl(const View& V, const float* x, const float* y, const uint32_t* rows, int batch, const AdamStep& c,
+               double* loss_out) {
+  const Layout& S = V.S;
+  const float* p = V.p();
+  float* g = V.base + S.o_g;
+  std::memset(g, 0, S.P * sizeof(float));
+  const int outputs = S.out[S.L - 1];
+  const float scale = 2.0f / float(batch * outputs);
+  v8 sq = splat(0.0f);
+  for (int first = 0; first < batch; first += kLanes) {
+    const int n = batch - first < kLanes ? batch - first : kLanes;
+    gather_inputs(V, x, rows, std::size_t(first), n);
+    forward_block<H>(V);
+    // Output error: d = dMSE/dy' * act'(y').
+    const v8i mask = lane_mask(n);
+    v8* d = V.d(0);
+    const v8* yhat = V.act(S.L);
+    for (int o = 0; o < outputs; ++o) {
+      v8 diff = yhat[o] - gather_target(y, outputs, o, rows, std::size_t(first), n);
+      diff = mask ? diff : splat(0.0f);
+      sq += diff * diff;
+      d[o] = (scale * diff) * act_grad_any(S.output, yhat[o], S.slope);
+    }
+    int cur = 0;
+    for (int l = S.L - 1; l >= 0; --l) {
+      const int in = S.in[l], out = S.out[l], inpad = S.inpad[l];
+      v8* dl = V.d(cur);
+      // Transposed activations for the outer-product gradient (pad columns stay 0).
+      const float* a = reinterpret_cast<const float*>(V.act(l));
+      float* aT = V.at(l);
+      for (int i = 0; i < in; ++i)
+        for (int s = 0; s < kLanes; ++s) aT[s * inpad + i] = a[i * kLanes + s];
+      float* gb = g + S.boff[l];
+      for (int o = 0; o < out; ++o) gb[o] += hsum(dl[o]);
+      in_groups<Gradient>(out, g + S.woff[l], inpad, reinterpret_cast<const float*>(dl), aT);
+      if (l == 0) break;
+      v8* prev = V.d(cur ^ 1);
+      in_groups<Backward>(in, p + S.woff[l], inpad, out, dl, prev);
+      const v8* al = V.act(l);
+      for (int i = 0; i < in; ++i) prev[i] *= act_grad<H>(al[i], S.slope);
+      cur ^= 1;
+    }
+  }
+  const double loss = double(hsum(sq)) / (double(batch) * outputs);
+  *loss_out = loss;
+  if (!std::isfinite(loss)) return false;
+  // Adam into the other parameter copy; the current one survives a non-finite result.
+  const v8 b1 = splat(c.beta1), b2 = splat(c.beta2), ob1 = splat(1.0f - c.beta1), ob2 = splat(1.0f - c.beta2);
+  const v8 lr = splat(c.lr * c.inv_c1), ic2 = splat(c.inv_c2), eps = splat(c.eps);
+  v8* __restrict pn = reinterpret_cast<v8*>(V.pnext());
+  const v8* __restrict pc = reinterpret_cast<const v8*>(p);
+  v8* __restrict m = reinterpret_cast<v8*>(V.base + S.o_m);
+  v8* __restrict v = reinterpret_cast<v8*>(V.base + S.o_v);
+  const v8* __restrict gv = reinterpret_cast<const v8*>(g);
+  v8 bad = splat(0.0f);  // w - w is 0 for finite w, NaN otherwise
+  for (std::size_t j = 0; j < S.P / kLanes; ++j) {
+    const v8 gj = gv[j];
+    const v8 mj = b1 * m[j] + ob1 * gj;
+    const v8 vj = b2 * v[j] + ob2 * gj * gj;
+    m[j] = mj;
+    v[j] = vj;
+    const v8 w = pc[j] - lr * mj / (vsqrt<Isa>(vj * ic2) + eps);
+    bad += w - w;
+    pn[j] = w;
+  }
+  return hsum(bad) == 0.0f;
+}
+
+template <Activation H>
+SN_INLINE double mse_impl(const View& V, const float* x, const float* y, std::size_t count) {
+  const Layout& S = V.S;
+  const int outputs = S.out[S.L - 1];
+  double sum = 0;
+  for (std::size_t first = 0; first < count; first += kLanes) {
+    const int n = count - first < std::size_t(kLanes) ? int(count - first) : kLanes;
+    gather_inputs(V, x, nullptr, first, n);
+    forward_block<H>(V);
+    const v8i mask = lane_mask(n);
+    const v8* yhat = V.act(S.L);
+    v8 sq = splat(0.0f);
+    for (int o = 0; o < outputs; ++o) {
+      v8 diff = yhat[o] - gather_target(y, outputs, o, nullptr, first, n);
+      diff = mask ? diff : splat(0.0f);
+      sq += diff * diff;
+    }
+    sum += double(hsum(sq));
+  }
+  return count ? sum / (double(count) * outputs) : 0.0;
+}
+
+template <Activation H>
+SN_INLINE void forward_impl(const View& V, const float* x, std::size_t count, float* out) {
+  const Layout& S = V.S;
+  const int outputs = S.out[S.L - 1];
+  for (std::size_t first = 0; first < count; first += kLanes) {
+    const int n = count - first < std::size_t(kLanes) ? int(count - first) : kLanes;
+    gather_inputs(V, x, nullptr, first, n);
+    forward_block<H>(V);
+    const float* yhat = reinterpret_cast<const float*>(V.act(S.L));
+    for (int s = 0; s < n; ++s)
+      for (int o = 0; o < outputs; ++o) out[(first + s) * outputs + o] = yhat[o * kLanes + s];
+  }
+}
+
+template <Activation H>
+void counts_impl(const View& V, const float* x, std::size_t count, std::vector<std::vector<uint32_t>>& counts) {
+  const Layout& S = V.S;
+  counts.assign(std::size_t(S.L - 1), {});
+  for (int l = 1; l < S.L; ++l) counts[l - 1].assign(std::size_t(S.in[l]), 0);
+  for (std::size_t first = 0; first < count; first += kLanes) {
+    const int n = count - first < std::size_t(kLanes) ? int(count - first) : kLanes;
+    gather_inputs(V, x, nullptr, first, n);
+    forward_block<H>(V);
+    for (int l = 1; l < S.L; ++l) {
+      const float* a = reinterpret_cast<const float*>(V.act(l));
+      for (int i = 0; i < S.in[l]; ++i)
+        for (int s = 0; s < n; ++s) {
+          const float v = a[i * kLanes + s];
+          bool hit = false;
+          if constexpr (H == Activation::tanh) hit = std::fabs(v) > 0.99f;
+          else if constexpr (H == Activation::sigmoid) hit = v < 0.01f || v > 0.99f;
+          else hit = v > 0.0f;
+          counts[l - 1][i] += hit;
+        }
+    }
+  }
+}
+
+// The entry points per instruction set; everything above inlines into them.
+using StepFn = bool (*)(const View&, const float*, const float*, const uint32_t*, int, const AdamStep&, double*);
+using MseFn = double (*)(const View&, const float*, const float*, std::size_t);
+using ForwardFn = void (*)(const View&, const float*, std::size_t, float*);
+
+template <Activation H>
+__attribute__((target("avx2,fma"))) bool step_avx2(const View& V, const float* x, const float* y,
+                                                   const uint32_t* rows, int batch, const AdamStep& c, double* l) {
+  return step_impl<Avx2, H>(V, x, y, rows, batch, c, l);
+}
+template <Activation H>
+__attribute__((target("avx2,fma"))) double mse_avx2(const View& V, const float* x, const float* y, std::size_t n) {
+  return mse_impl<H>(V, x, y, n);
+}
+template <Activation H>
+__attribute__((target("avx2,fma"))) void forward_avx2(const View& V, const float* x, std::size_t n, float* out) {
+  forward_impl<H>(V, x, n, out);
+}
+template <Activation H>
+bool step_sse2(const View& V, const float* x, const float* y, const uint32_t* rows, int batch, const AdamStep& c,
+               double* l) {
+  return step_impl<Sse2, H>(V, x, y, rows, batch, c, l);
+}
+
+struct Kernels {
+  StepFn step;
+  MseFn mse;
+  ForwardFn forward;
+};
+
+template <Activation H>
+Kernels kernels_for(bool avx2) {
+  if (avx2) return {step_avx2<H>, mse_avx2<H>, forward_avx2<H>};
+  return {step_sse2<H>, mse_impl<H>, forward_impl<H>};
+}
+
+bool use_avx2() {
+  static const bool yes = [] {
+    const char* force = std::getenv("SHADENET_CPU_KERNEL");
+    if (force && std::string(force) == "sse2") return false;
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  }();
+  return yes;
+}
+
+Kernels kernels(Activation hidden) {
+  const bool avx2 = use_avx2();
+  switch (hidden) {
+    case Activation::sigmoid: return kernels_for<Activation::sigmoid>(avx2);
+    case Activation::relu: return kernels_for<Activation::relu>(avx2);
+    case Activation::leaky_relu: return kernels_for<Activation::leaky_relu>(avx2);
+    default: return kernels_for<Activation::tanh>(avx2);
+  }
+}
+
+}  // namespace
+
+AdamStep AdamStep::at(const TrainConfig& cfg, long long t) {
+  AdamStep s;
+  s.lr = float(cfg.lr);
+  s.beta1 = float(cfg.beta1);
+  s.beta2 = float(cfg.beta2);
+  s.eps = float(cfg.eps);
+  s.inv_c1 = float(1.0 / (1.0 - std::pow(cfg.beta1, double(t))));
+  s.inv_c2 = float(1.0 / (1.0 - std::pow(cfg.beta2, double(t))));
+  return s;
+}
+
+const char* cpu_kernel_name() { return use_avx2() ? "avx2" : "sse2"; }
+
+CpuNet::CpuNet(const MlpSpec& spec, const float* params) : spec_(spec), layout_(std::make_unique<Layout>(spec)) {
+  const std::size_t bytes = layout_->total * sizeof(float);
+  arena_ = static_cast<float*>(std::aligned_alloc(64, bytes));
+  if (!arena_) throw std::bad_alloc();
+  std::memset(arena_, 0, bytes);
+  set_params(params);
+}
+
+CpuNet::~CpuNet() { std::free(arena_); }
+
+void CpuNet::set_params(const float* flat) {
+  const Layout& S = *layout_;
+  float* p = arena_ + S.o_p[cur_];
+  std::memset(p, 0, S.P * sizeof(float));
+  for (int l = 0; l < S.L; ++l) {
+    const float* w = flat + spec_.weight_offset(l);
+    for (int o = 0; o < S.out[l]; ++o)
+      std::memcpy(p + S.woff[l] + std::size_t(o) * S.inpad[l], w + std::size_t(o) * S.in[l], S.in[l] * sizeof(float));
+    std::memcpy(p + S.boff[l], flat + spec_.bias_offset(l), S.out[l] * sizeof(float));
+  }
+  // The other copy's pad columns must be 0 too: Adam writes every float of it.
+  std::memcpy(arena_ + S.o_p[cur_ ^ 1], p, S.P * sizeof(float));
+  std::memset(arena_ + S.o_m, 0, 2 * S.P * sizeof(float));
+}
+
+void CpuNet::get_params(float* flat) const {
+  const Layout& S = *layout_;
+  const float* p = arena_ + S.o_p[cur_];
+  for (int l = 0; l < S.L; ++l) {
+    float* w = flat + spec_.weight_offset(l);
+    for (int o = 0; o < S.out[l]; ++o)
+      std::memcpy(w + std::size_t(o) * S.in[l], p + S.woff[l] + std::size_t(o) * S.inpad[l], S.in[l] * sizeof(float));
+    std::memcpy(flat + spec_.bias_offset(l), p + S.boff[l], S.out[l] * sizeof(float));
+  }
+}
+
+bool CpuNet::step(const float* x, const float* y, const uint32_t* rows, int batch, const AdamStep& adam,
+                  double* loss) {
+  const View V{*layout_, arena_, cur_};
+  if (!kernels(layout_->hidden).step(V, x, y, rows, batch, adam, loss)) return false;
+  cur_ ^= 1;
+  return true;
+}
+
+double CpuNet::mse(const float* x, const float* y, std::size_t count) {
+  return kernels(layout_->hidden).mse(View{*layout_, arena_, cur_}, x, y, count);
+}
+
+void CpuNet::forward(const float* x, std::size_t count, float* out) {
+  kernels(layout_->hidden).forward(View{*layout_, arena_, cur_}, x, count, out);
+}
+
+std::vector<std::vector<uint32_t>> CpuNet::unit_counts(const float* x, std::size_t count) {
+  std::vector<std::vector<uint32_t>> counts;
+  const View V{*layout_, arena_, cur_};
+  switch (layout_->hidden) {
+    case Activation::sigmoid: counts_impl<Activation::sigmoid>(V, x, count, counts); break;
+    case Activation::relu: counts_impl<Activation::relu>(V, x, count, counts); break;
+    case Activation::leaky_relu: counts_impl<Activation::leaky_relu>(V, x, count, counts); break;
+    default: counts_impl<Activation::tanh>(V, x, count, counts); break;
+  }
+  return counts;
+}
+
+}  // namespace sn::nn

@@ -1,0 +1,59 @@
+// One network in the cpu backend's working form. The minibatch is the SIMD axis: samples go
+// through the network in blocks of 8 (one AVX register per neuron), weight rows are padded to
+// a multiple of 8 floats so the gradient and Adam loops run on whole registers. The kernels are
+// compiled twice, for x86-64 baseline (SSE2) and for AVX2+FMA, and picked at run time.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "nn/mlp_spec.h"
+#include "nn/trainer.h"
+
+namespace sn::nn {
+
+// Per-step Adam constants (bias corrections folded in, computed in double for step t).
+struct AdamStep {
+  float lr, beta1, beta2, eps, inv_c1, inv_c2;  // inv_c = 1 / (1 - beta^t)
+  static AdamStep at(const TrainConfig& cfg, long long t);
+};
+
+// "avx2" or "sse2": the kernel this process runs (SHADENET_CPU_KERNEL=sse2 forces the baseline).
+const char* cpu_kernel_name();
+
+class CpuNet {
+ public:
+  CpuNet(const MlpSpec& spec, const float* params);  // params in the shared flat layout
+  ~CpuNet();
+  CpuNet(const CpuNet&) = delete;
+  CpuNet& operator=(const CpuNet&) = delete;
+
+  const MlpSpec& spec() const { return spec_; }
+  void get_params(float* flat) const;  // current parameters, shared flat layout
+  void set_params(const float* flat);  // also clears the Adam moments
+
+  // One Adam step on the minibatch of rows `rows[0..batch)` of x (inputs wide) and y (outputs
+  // wide). Returns false, leaving the parameters as they were, when the loss or the new
+  // parameters are not finite. `loss` = the minibatch MSE before the update.
+  bool step(const float* x, const float* y, const uint32_t* rows, int batch, const AdamStep& adam, double* loss);
+
+  // MSE over `count` contiguous rows.
+  double mse(const float* x, const float* y, std::size_t count);
+  // Outputs for `count` contiguous rows (count x outputs floats).
+  void forward(const float* x, std::size_t count, float* out);
+  // Per hidden layer and unit, over `count` rows: how many samples had the unit active (relu,
+  // leaky_relu: output > 0) or saturated (tanh: |a| > 0.99; sigmoid: a < 0.01 or a > 0.99).
+  std::vector<std::vector<uint32_t>> unit_counts(const float* x, std::size_t count);
+
+  struct Layout;  // padded offsets, private to cpu_net.cpp
+
+ private:
+  MlpSpec spec_;
+  std::unique_ptr<Layout> layout_;
+  float* arena_ = nullptr;  // 64-byte aligned: params x2, m, v, grad, activations, scratch
+  int cur_ = 0;             // which of the two parameter copies is current
+};
+
+}  // namespace sn::nn

@@ -1,0 +1,104 @@
+#include "nn/cpu_trainer.h"
+
+#include <cstdlib>
+#include <fstream>
+#include <string>
+
+#include "nn/cpu_net.h"
+#include "nn/parallel.h"
+#include "nn/shuffle.h"
+
+namespace sn::nn {
+
+int default_threads() {
+  if (const char* env = std::getenv("SHADENET_THREADS")) {
+    int n = std::atoi(env);
+    if (n > 0) return n;
+  }
+  unsigned hw = std::thread::hardware_concurrency();
+  return hw ? int(hw) : 1;
+}
+
+namespace {
+
+std::string cpu_model() {
+  std::ifstream f("/proc/cpuinfo");
+  for (std::string line; std::getline(f, line);)
+    if (line.rfind("model name", 0) == 0) {
+      auto colon = line.find(':');
+      if (colon != std::string::npos) return line.substr(line.find_first_not_of(' ', colon + 1));
+    }
+  return "unknown cpu";
+}
+
+class CpuBackend : public Backend {
+ public:
+  explicit CpuBackend(int threads) : threads_(threads > 0 ? threads : default_threads()) {}
+
+  std::string name() const override { return "cpu"; }
+  std::string device() const override {
+    return cpu_model() + ", " + std::to_string(threads_) + " threads, " + cpu_kernel_name() + " kernel";
+  }
+
+  std::vector<NetResult> train(const std::vector<const Mlp*>& nets, const Dataset& data, const TrainConfig& cfg,
+                               const Progress& progress) override {
+    const int count = int(nets.size());
+    std::vector<std::unique_ptr<CpuNet>> work(static_cast<std::size_t>(count));
+    std::vector<NetResult> results(static_cast<std::size_t>(count));
+    parallel_for(count, threads_, [&](int i) {
+      work[i] = std::make_unique<CpuNet>(nets[i]->spec, nets[i]->params.data());
+    });
+
+    const uint32_t n = uint32_t(data.train_count());
+    const long long steps = n / uint32_t(cfg.batch);
+    std::vector<uint32_t> rows(static_cast<std::size_t>(steps * cfg.batch));
+    std::vector<AdamStep> adam(static_cast<std::size_t>(steps));
+    long long t = 0;  // Adam's step counter, the same for every net of the run
+    for (int e = 0; e < cfg.epochs; ++e) {
+      EpochShuffle perm(cfg.seed, uint32_t(e), n);
+      for (std::size_t k = 0; k < rows.size(); ++k) rows[k] = perm(uint32_t(k));
+      for (long long s = 0; s < steps; ++s) adam[std::size_t(s)] = AdamStep::at(cfg, ++t);
+
+      std::vector<char> finished(static_cast<std::size_t>(count), 0);
+      parallel_for(count, threads_, [&](int i) {
+        NetResult& r = results[i];
+        if (r.diverged) return;
+        CpuNet& net = *work[i];
+        double sum = 0;
+        for (long long s = 0; s < steps; ++s) {
+          double loss;
+          if (!net.step(data.train_x.data(), data.train_y.data(), rows.data() + s * cfg.batch, cfg.batch,
+                        adam[std::size_t(s)], &loss)) {
+            r.diverged = Divergence{e + 1, s + 1};
+            return;
+          }
+          sum += loss;
+          ++r.steps;
+        }
+        const double val = net.mse(data.val_x.data(), data.val_y.data(), data.val_count());
+        std::vector<float> p(net.spec().param_count());
+        net.get_params(p.data());
+        r.end_epoch(sum / double(steps), val, p.data(), p.size());
+        finished[i] = 1;
+      });
+      if (progress)
+        for (int i = 0; i < count; ++i)
+          if (finished[i]) progress({i, e + 1, results[i].train_mse.back(), results[i].val_mse.back()});
+    }
+    for (int i = 0; i < count; ++i) {
+      results[i].final_params.resize(nets[i]->spec.param_count());
+      work[i]->get_params(results[i].final_params.data());
+    }
+    return results;
+  }
+
+ private:
+  int threads_;
+};
+
+}  // namespace
+
+std::unique_ptr<Backend> make_cpu_backend(int threads) { return std::make_unique<CpuBackend>(threads); }
+std::unique_ptr<Backend> make_cpu_backend() { return make_cpu_backend(0); }
+
+}  // namespace sn::nn

@@ -1,0 +1,30 @@
+// tanh as a [13/6] rational function (the minimax fit Eigen uses for float tanh), written once
+// for float and for GCC vector types so the cpu kernel and its test share it. Absolute error
+// against std::tanh <= 1e-6 over all floats (tests/unit/test_cpu_trainer.cpp measures it);
+// NaN stays NaN (the comparisons below are false for NaN, so the clamp lets it through).
+#pragma once
+
+namespace sn::nn {
+
+template <class T>
+inline __attribute__((always_inline)) T fast_tanh(T x) {
+  // Beyond +-7.9053 tanh rounds to +-1 in float; clamping keeps the polynomials in range.
+  const float clamp = 7.90531110763549805f;
+  const T c = T{} + clamp;  // a splat for vector T
+  x = x > c ? c : x;
+  x = x < -c ? -c : x;
+  const T x2 = x * x;
+  T p = x2 * -2.76076847742355e-16f + 2.00018790482477e-13f;
+  p = x2 * p + -8.60467152213735e-11f;
+  p = x2 * p + 5.12229709037114e-08f;
+  p = x2 * p + 1.48572235717979e-05f;
+  p = x2 * p + 6.37261928875436e-04f;
+  p = x2 * p + 4.89352455891786e-03f;
+  p = x * p;
+  T q = x2 * 1.19825839466702e-06f + 1.18534705686654e-04f;
+  q = x2 * q + 2.26843463243900e-03f;
+  q = x2 * q + 4.89352518554385e-03f;
+  return p / q;
+}
+
+}  // namespace sn::nn

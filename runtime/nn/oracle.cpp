@@ -1,0 +1,178 @@
+#include "nn/oracle.h"
+
+#include <cmath>
+
+#include "nn/shuffle.h"
+
+namespace sn::nn::oracle {
+
+double activate(Activation a, double slope, double z) {
+  switch (a) {
+    case Activation::linear: return z;
+    case Activation::tanh: return std::tanh(z);
+    case Activation::sigmoid: return 1.0 / (1.0 + std::exp(-z));
+    case Activation::relu: return z > 0 ? z : 0.0;
+    case Activation::leaky_relu: return z > 0 ? z : slope * z;
+  }
+  return z;
+}
+
+double activate_grad(Activation a, double slope, double z) {
+  switch (a) {
+    case Activation::linear: return 1.0;
+    case Activation::tanh: {
+      double t = std::tanh(z);
+      return 1.0 - t * t;
+    }
+    case Activation::sigmoid: {
+      double s = 1.0 / (1.0 + std::exp(-z));
+      return s * (1.0 - s);
+    }
+    case Activation::relu: return z > 0 ? 1.0 : 0.0;
+    case Activation::leaky_relu: return z > 0 ? 1.0 : slope;
+  }
+  return 1.0;
+}
+
+namespace {
+Activation layer_activation(const MlpSpec& s, int l) {
+  return l == s.layers() - 1 ? s.output_activation : s.activation;
+}
+}  // namespace
+
+std::vector<double> forward(const MlpSpec& spec, const std::vector<double>& p, const double* x, Trace* trace) {
+  std::vector<double> a(x, x + spec.inputs), z;
+  if (trace) {
+    trace->a.assign(1, a);
+    trace->z.assign(1, {});
+  }
+  for (int l = 0; l < spec.layers(); ++l) {
+    int in = spec.width(l), out = spec.width(l + 1);
+    const double* w = p.data() + spec.weight_offset(l);
+    const double* b = p.data() + spec.bias_offset(l);
+    z.assign(out, 0.0);
+    std::vector<double> next(out);
+    for (int o = 0; o < out; ++o) {
+      double s = b[o];
+      for (int i = 0; i < in; ++i) s += w[o * in + i] * a[i];
+      z[o] = s;
+      next[o] = activate(layer_activation(spec, l), spec.slope, s);
+    }
+    a = std::move(next);
+    if (trace) {
+      trace->z.push_back(z);
+      trace->a.push_back(a);
+    }
+  }
+  return a;
+}
+
+double loss_grad(const MlpSpec& spec, const std::vector<double>& p, const std::vector<const float*>& xs,
+                 const std::vector<const float*>& ys, std::vector<double>* grad) {
+  const std::size_t count = xs.size();
+  const int L = spec.layers(), outs = spec.outputs;
+  if (grad) grad->assign(spec.param_count(), 0.0);
+  double loss = 0;
+  const double scale = 2.0 / (double(count) * outs);  // d mean((y'-y)^2) / d y'
+  Trace t;
+  std::vector<double> x(spec.inputs);
+  for (std::size_t n = 0; n < count; ++n) {
+    for (int i = 0; i < spec.inputs; ++i) x[i] = xs[n][i];
+    auto y = forward(spec, p, x.data(), &t);
+    std::vector<double> delta(outs);
+    for (int o = 0; o < outs; ++o) {
+      double d = y[o] - ys[n][o];
+      loss += d * d;
+      delta[o] = scale * d * activate_grad(spec.output_activation, spec.slope, t.z[L][o]);
+    }
+    if (!grad) continue;
+    for (int l = L - 1; l >= 0; --l) {
+      int in = spec.width(l), out = spec.width(l + 1);
+      double* gw = grad->data() + spec.weight_offset(l);
+      double* gb = grad->data() + spec.bias_offset(l);
+      const double* w = p.data() + spec.weight_offset(l);
+      for (int o = 0; o < out; ++o) {
+        gb[o] += delta[o];
+        for (int i = 0; i < in; ++i) gw[o * in + i] += delta[o] * t.a[l][i];
+      }
+      if (l == 0) break;
+      std::vector<double> prev(in, 0.0);
+      for (int i = 0; i < in; ++i) {
+        double s = 0;
+        for (int o = 0; o < out; ++o) s += w[o * in + i] * delta[o];
+        prev[i] = s * activate_grad(spec.activation, spec.slope, t.z[l][i]);
+      }
+      delta = std::move(prev);
+    }
+  }
+  return loss / (double(count) * outs);
+}
+
+void Adam::step(std::vector<double>& p, const std::vector<double>& g, const TrainConfig& c) {
+  if (m.size() != p.size()) {
+    m.assign(p.size(), 0.0);
+    v.assign(p.size(), 0.0);
+    t = 0;
+  }
+  ++t;
+  const double c1 = 1.0 - std::pow(c.beta1, double(t)), c2 = 1.0 - std::pow(c.beta2, double(t));
+  for (std::size_t j = 0; j < p.size(); ++j) {
+    m[j] = c.beta1 * m[j] + (1 - c.beta1) * g[j];
+    v[j] = c.beta2 * v[j] + (1 - c.beta2) * g[j] * g[j];
+    p[j] -= c.lr * (m[j] / c1) / (std::sqrt(v[j] / c2) + c.eps);
+  }
+}
+
+double mse(const MlpSpec& spec, const std::vector<double>& p, const float* x, const float* y, std::size_t count) {
+  double sum = 0;
+  std::vector<double> xi(spec.inputs);
+  for (std::size_t n = 0; n < count; ++n) {
+    for (int i = 0; i < spec.inputs; ++i) xi[i] = x[n * spec.inputs + i];
+    auto out = forward(spec, p, xi.data());
+    for (int o = 0; o < spec.outputs; ++o) {
+      double d = out[o] - y[n * spec.outputs + o];
+      sum += d * d;
+    }
+  }
+  return count ? sum / (double(count) * spec.outputs) : 0.0;
+}
+
+NetResult train(const MlpSpec& spec, const std::vector<float>& params, const Dataset& data, const TrainConfig& cfg) {
+  NetResult r;
+  std::vector<double> p(params.begin(), params.end()), g;
+  Adam adam;
+  const uint32_t n = uint32_t(data.train_count());
+  const long long steps = n / cfg.batch;
+  std::vector<const float*> xs(cfg.batch), ys(cfg.batch);
+  for (int e = 0; e < cfg.epochs; ++e) {
+    EpochShuffle perm(cfg.seed, uint32_t(e), n);
+    double sum = 0;
+    for (long long s = 0; s < steps; ++s) {
+      for (int k = 0; k < cfg.batch; ++k) {
+        uint32_t row = perm(uint32_t(s * cfg.batch + k));
+        xs[k] = data.train_x.data() + std::size_t(row) * data.inputs;
+        ys[k] = data.train_y.data() + std::size_t(row) * data.outputs;
+      }
+      double loss = loss_grad(spec, p, xs, ys, &g);
+      auto before = p;
+      adam.step(p, g, cfg);
+      bool finite = std::isfinite(loss);
+      for (double v : p) finite = finite && std::isfinite(float(v));
+      if (!finite) {
+        p = before;
+        r.diverged = Divergence{e + 1, s + 1};
+        break;
+      }
+      sum += loss;
+      ++r.steps;
+    }
+    if (r.diverged) break;
+    std::vector<float> pf(p.begin(), p.end());
+    r.end_epoch(sum / double(steps), mse(spec, p, data.val_x.data(), data.val_y.data(), data.val_count()), pf.data(),
+                pf.size());
+  }
+  r.final_params.assign(p.begin(), p.end());
+  return r;
+}
+
+}  // namespace sn::nn::oracle

@@ -1,0 +1,44 @@
+// The double-precision reference every backend is checked against: forward, backward
+// (MSE loss, plain backpropagation) and Adam exactly as nn/trainer.h states them, written for
+// clarity, not speed. Parameters use the flat layout of nn/mlp_spec.h.
+#pragma once
+#include <cstddef>
+#include <vector>
+
+#include "nn/dataset.h"
+#include "nn/mlp_spec.h"
+#include "nn/trainer.h"
+
+namespace sn::nn::oracle {
+
+double activate(Activation a, double slope, double z);
+// d activation / dz, from the pre-activation z.
+double activate_grad(Activation a, double slope, double z);
+
+// Activations of every layer for one sample: a[0] = x, a[layers()] = output; z likewise
+// (z[0] unused).
+struct Trace {
+  std::vector<std::vector<double>> z, a;
+};
+std::vector<double> forward(const MlpSpec& spec, const std::vector<double>& params, const double* x,
+                            Trace* trace = nullptr);
+
+// MSE over `count` samples (rows of x and y) and its gradient with respect to every parameter
+// (grad resized to param_count()).
+double loss_grad(const MlpSpec& spec, const std::vector<double>& params, const std::vector<const float*>& xs,
+                 const std::vector<const float*>& ys, std::vector<double>* grad);
+
+struct Adam {
+  std::vector<double> m, v;
+  long long t = 0;
+  void step(std::vector<double>& params, const std::vector<double>& grad, const TrainConfig& cfg);
+};
+
+// MSE of the network over rows [0, count) of x/y.
+double mse(const MlpSpec& spec, const std::vector<double>& params, const float* x, const float* y, std::size_t count);
+
+// A whole run as nn/trainer.h defines it (shuffle, minibatches, Adam, curves), in double.
+// For tiny datasets in tests: it is slow.
+NetResult train(const MlpSpec& spec, const std::vector<float>& params, const Dataset& data, const TrainConfig& cfg);
+
+}  // namespace sn::nn::oracle

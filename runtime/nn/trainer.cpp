@@ -1,0 +1,63 @@
+#include "nn/trainer.h"
+
+#include <algorithm>
+#include <map>
+#include <mutex>
+#include <stdexcept>
+
+namespace sn::nn {
+
+void NetResult::end_epoch(double train, double val, const float* params, std::size_t count) {
+  train_mse.push_back(train);
+  val_mse.push_back(val);
+  if (best_epoch == 0 || val < best_val_mse) {
+    best_val_mse = val;
+    best_epoch = int(val_mse.size());
+    best_params.assign(params, params + count);
+  }
+}
+
+namespace {
+struct Registry {
+  std::mutex mutex;
+  std::map<std::string, BackendFactory> factories{{"cpu", &make_cpu_backend}};
+};
+Registry& registry() {
+  static Registry r;
+  return r;
+}
+}  // namespace
+
+void register_backend(const std::string& name, BackendFactory factory) {
+  std::lock_guard lock(registry().mutex);
+  registry().factories[name] = factory;
+}
+
+bool has_backend(const std::string& name) {
+  std::lock_guard lock(registry().mutex);
+  return registry().factories.count(name) > 0;
+}
+
+std::vector<std::string> backend_names() {
+  std::lock_guard lock(registry().mutex);
+  std::vector<std::string> names;
+  for (auto& [name, f] : registry().factories) names.push_back(name);
+  return names;
+}
+
+std::unique_ptr<Backend> make_backend(const std::string& name) {
+  BackendFactory f = nullptr;
+  {
+    std::lock_guard lock(registry().mutex);
+    auto it = registry().factories.find(name);
+    if (it != registry().factories.end()) f = it->second;
+  }
+  if (!f) {
+    std::string avail;
+    for (auto& n : backend_names()) avail += (avail.empty() ? "" : ", ") + n;
+    throw std::invalid_argument("unknown backend '" + name + "' (available: " + avail + ")");
+  }
+  return f();
+}
+
+}  // namespace sn::nn
