@@ -34,12 +34,12 @@ Image load_image(const std::string& path) {
 
 Image decode_image(const std::vector<unsigned char>& bytes, const std::string& what) {
   OIIO::Filesystem::IOMemReader mem(const_cast<unsigned char*>(bytes.data()), bytes.size());
-  OIIO::ImageSpec config;
-  config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &mem);
   // OpenImageIO picks the reader from a name; sniff PNG/JPEG magic numbers to name it.
+  // (The proxy goes in as open()'s argument only: an "oiio:ioproxy" PTR attribute must hold a
+  // pointer to the pointer, and given &mem it made OpenImageIO read the vtable and crash.)
   std::string name = "embedded.png";
   if (bytes.size() > 2 && bytes[0] == 0xFF && bytes[1] == 0xD8) name = "embedded.jpg";
-  return read_from(OIIO::ImageInput::open(name, &config, &mem), what);
+  return read_from(OIIO::ImageInput::open(name, nullptr, &mem), what);
 }
 
 void save_image(const Image& img, const std::string& path) {
