@@ -8,7 +8,8 @@ namespace sn::shading {
 using glm::dvec3;
 
 dvec3 safe_normalize(const dvec3& x) {
-  return x * (1.0 / std::sqrt(std::max(glm::dot(x, x), kMinLength2)));
+  double x2 = glm::dot(x, x);
+  return x2 >= kMinLength2 ? x / std::sqrt(x2) : dvec3(0.0);
 }
 
 double cos_lobe(const dvec3& a, const dvec3& b, double e) {

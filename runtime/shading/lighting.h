@@ -19,7 +19,7 @@ constexpr double kMinLength2 = 1e-30;  // below this squared length a vector cou
 constexpr double kMinAlpha = 1e-3;     // GGX width floor: alpha = max(roughness^2, 1e-3)
 constexpr double kMinDenominator = 1e-30;
 
-// x / |x|, or the zero vector when |x|^2 < kMinLength2 (no NaN from a zero-length input).
+// x / |x|, or the zero vector when |x|^2 < kMinLength2: unit or zero, never NaN, never between.
 glm::dvec3 safe_normalize(const glm::dvec3& x);
 // max(cos t, 0)^e for the angle t between a and b (any lengths; zero-length gives 0), with 0^0 = 1.
 // The shader computes the same value from sin^2 t to keep sharp lobes accurate in float.

@@ -41,16 +41,16 @@ LightingParams random_params(Model m, Rng& r) {
     case Model::blinn_phong:
     case Model::textured_phong:
       v = {{"color", r.color()}, {"ambient", {r.f()}}, {"specular", r.color()},
-           {"shininess", {r.log_uniform(1, m == Model::blinn_phong ? 128 : 64)}}};
+           {"shininess", {r.log_uniform(1, m == Model::blinn_phong ? 2000 : 1000)}}};
       break;
     case Model::ggx:
-      v = {{"roughness", {r.f(0.2, 1)}}, {"f0", r.color()}, {"diffuse", r.color()}, {"ambient", {r.f(0, 0.3)}}};
+      v = {{"roughness", {r.f(0.05, 1)}}, {"f0", r.color()}, {"diffuse", r.color()}, {"ambient", {r.f(0, 0.3)}}};
       break;
     case Model::toon3: {
       std::vector<double> t = {r.f(0, 1.5), r.f(0, 1.5), r.f(0, 1.5), r.f(0, 1.5)};
       std::sort(t.begin(), t.end());
       v = {{"ambient", r.color()}, {"diffuse", r.color()}, {"specular", r.color()}, {"a", {r.f()}},
-           {"thresholds", t}, {"shininess", {r.log_uniform(1, 64)}}, {"ambient_weight", {r.f()}},
+           {"thresholds", t}, {"shininess", {r.log_uniform(1, 1000)}}, {"ambient_weight", {r.f()}},
            {"specular_weight", {r.f()}}};
       break;
     }

@@ -5,8 +5,12 @@ const float LIGHTING_MIN_LENGTH2 = 1e-30;      // a shorter vector counts as zer
 const float LIGHTING_MIN_ALPHA = 1e-3;         // GGX width floor: a mirror is a delta no pixel shows
 const float LIGHTING_MIN_DENOMINATOR = 1e-30;
 
-// x / |x|, or the zero vector for a zero-length x (normalize(0) is NaN).
-vec3 safe_normalize(vec3 x) { return x * inversesqrt(max(dot(x, x), LIGHTING_MIN_LENGTH2)); }
+// x / |x|, or the zero vector when |x|^2 < 1e-30 (normalize(0) is NaN, and a shorter vector
+// would come out of a clamped inverse length neither zero nor unit).
+vec3 safe_normalize(vec3 x) {
+  float x2 = dot(x, x);
+  return x2 >= LIGHTING_MIN_LENGTH2 ? x * inversesqrt(x2) : vec3(0.0);
+}
 
 // max(cos t, 0)^e for the angle t between a and b (any lengths), 0^0 = 1 (GLSL leaves pow(0, 0)
 // undefined). A sharp lobe lives where cos t is within a few ulps of 1, where pow(dot, e) would

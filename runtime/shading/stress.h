@@ -1,0 +1,53 @@
+// The numerical stress test: every lighting model over an adversarial grid of inputs (n.l and
+// n.v at -1, 0, +-1e-7, grazing and 1; v = l, v = -l, v = the mirror direction; zero-length,
+// tiny, huge and unnormalised vectors), on the GPU and on the CPU twin, counting NaN, Inf and
+// out-of-range outputs. The required count is zero everywhere (scripts/stress_lighting.lua).
+#pragma once
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "shading/lighting_params.h"
+
+namespace sn::shading {
+
+struct StressSample {
+  glm::vec3 n, v, base;
+};
+// The grid, built around the light direction (deterministic; about 30k samples).
+std::vector<StressSample> adversarial_grid(const Light& light);
+
+struct StressCounts {
+  std::size_t nan = 0, inf = 0;
+  std::size_t negative = 0;  // raw radiance below 0
+  std::size_t over = 0;      // raw radiance above upper_bound()
+  std::size_t total() const { return nan + inf + negative + over; }
+};
+
+struct StressResult {
+  std::size_t samples = 0;
+  StressCounts gpu, twin;  // raw radiance (before the [0, 1] clamp)
+  // What a dataset records, in every colour space (rgb, hsv, cie_xyz, cie_lab), on the GPU:
+  // NaN/Inf, or outside the space's range ([0, 1]; XYZ within [0, D65 white]).
+  std::size_t encoded_nan = 0, encoded_out_of_range = 0;
+  double max_raw = 0;  // largest finite raw channel seen (GPU)
+  std::size_t failures() const { return gpu.total() + twin.total() + encoded_nan + encoded_out_of_range; }
+};
+
+StressResult stress_test(const LightingParams& p, const Light& light);
+// Summed over `lights`.
+StressResult stress_test(const LightingParams& p, const std::vector<Light>& lights);
+// An oblique light, and one along +Y, for which n.l = 0 and n.v = 0 are exact in float.
+std::vector<Light> stress_lights();
+
+// The models the stress table covers: each model at its defaults and at the edges of its
+// domain (roughness 0, 1e-4, 1; exponents 0 and 1e6; weights at their maxima; equal thresholds).
+struct StressCase {
+  std::string label;
+  LightingParams params;
+};
+std::vector<StressCase> stress_cases();
+
+}  // namespace sn::shading

@@ -1,0 +1,69 @@
+// The numerical stress test (shading/stress.h): every model at its defaults and at the edges of
+// its domain, over the adversarial grid, on the GPU and the twin: zero NaN, Inf, negative and
+// over-bound outputs, and what datasets record stays inside each colour space's range.
+#include <gtest/gtest.h>
+
+#include "gl/context.h"
+#include "shading/lighting.h"
+#include "shading/stress.h"
+
+namespace {
+
+using namespace sn::shading;
+
+TEST(LightingStress, GridCoversTheAdversarialCases) {
+  Light light = stress_lights().at(1);  // along +Y: exact zeros are representable
+  auto grid = adversarial_grid(light);
+  ASSERT_GT(grid.size(), 10000u);
+  int zero_n = 0, exact_grazing = 0, tiny_above = 0, v_is_minus_l = 0, huge = 0;
+  for (const auto& s : grid) {
+    glm::dvec3 n(s.n), v(s.v);
+    if (glm::length(n) == 0) ++zero_n;
+    if (glm::length(n) > 1e6) ++huge;
+    if (glm::length(n) == 0 || glm::length(v) == 0) continue;
+    double nl = glm::dot(glm::vec3(glm::normalize(n)), glm::vec3(light.dir));  // as the GPU sees it
+    if (nl == 0) ++exact_grazing;
+    if (nl > 5e-8 && nl < 2e-7) ++tiny_above;
+    if (glm::length(glm::normalize(v) + light.dir) < 1e-6) ++v_is_minus_l;
+  }
+  EXPECT_GT(zero_n, 0);
+  EXPECT_GT(huge, 0);
+  EXPECT_GT(exact_grazing, 0);
+  EXPECT_GT(tiny_above, 0);
+  EXPECT_GT(v_is_minus_l, 0);
+}
+
+TEST(LightingStress, EveryModelAtItsExtremesHasZeroNanInfOrOutOfRange) {
+  sn::gl::current();
+  auto cases = stress_cases();
+  ASSERT_GE(cases.size(), 17u);
+  for (const auto& c : cases) {
+    StressResult r = stress_test(c.params, stress_lights());
+    SCOPED_TRACE(c.label);
+    EXPECT_GT(r.samples, 20000u);
+    EXPECT_EQ(r.gpu.nan, 0u);
+    EXPECT_EQ(r.gpu.inf, 0u);
+    EXPECT_EQ(r.gpu.negative, 0u);
+    EXPECT_EQ(r.gpu.over, 0u);
+    EXPECT_EQ(r.twin.nan, 0u);
+    EXPECT_EQ(r.twin.inf, 0u);
+    EXPECT_EQ(r.twin.negative, 0u);
+    EXPECT_EQ(r.twin.over, 0u);
+    EXPECT_EQ(r.encoded_nan, 0u);
+    EXPECT_EQ(r.encoded_out_of_range, 0u);
+    EXPECT_GT(r.max_raw, 0.0);  // the models really produced light on this grid
+  }
+}
+
+// Without the guards the same grid does produce NaN: normalising a zero vector and a GGX lobe at
+// alpha = 0 are what the guards exist for.
+TEST(LightingStress, UnguardedFormulasWouldFailOnThisGrid) {
+  glm::dvec3 zero(0.0);
+  EXPECT_TRUE(std::isnan(glm::normalize(zero).x));
+  EXPECT_EQ(safe_normalize(zero), zero);
+  double a = 0.0, nh = 1.0, d = nh * nh * (a * a - 1) + 1;  // the textbook D at alpha = 0, n = h
+  EXPECT_TRUE(std::isnan(a * a / (kPi * d * d)));
+  EXPECT_TRUE(std::isfinite(ggx_distribution({0, 0, 1}, {0, 0, 1}, kMinAlpha)));
+}
+
+}  // namespace
