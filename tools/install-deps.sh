@@ -13,6 +13,7 @@ packages=(
   xvfb xauth                        # windowed tests without a display
   libgtest-dev                      # unit tests
   gnuplot-nox                       # plots
+  fonts-dejavu-core                 # figure labels (OpenImageIO render_text; its default DroidSans is not packaged)
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -24,6 +24,9 @@ int open_core(lua_State* L) {
   open_buffer(L);
   open_program(L);
   open_image(L);
+  open_figure(L);
+  open_terminal(L);
+  open_files(L);
   open_target(L);
   return 1;
 }

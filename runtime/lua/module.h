@@ -12,6 +12,9 @@ void install(lua_State* L);
 void open_buffer(lua_State* L);
 void open_program(lua_State* L);
 void open_image(lua_State* L);
+void open_figure(lua_State* L);  // after open_image: extends sn.image and Image
+void open_terminal(lua_State* L);
+void open_files(lua_State* L);
 void open_target(lua_State* L);
 void open_mesh(lua_State* L);
 void open_camera(lua_State* L);
