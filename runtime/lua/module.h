@@ -19,5 +19,8 @@ void open_target(lua_State* L);
 void open_mesh(lua_State* L);
 void open_camera(lua_State* L);
 void open_context(lua_State* L);
+void open_mlp(lua_State* L);
+void open_dataset(lua_State* L);
+void open_train(lua_State* L);
 
 }  // namespace sn::lua

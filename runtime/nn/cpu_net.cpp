@@ -5,7 +5,9 @@
 
 #include <immintrin.h>
 
+#include <atomic>
 #include <cmath>
+#include <stdexcept>
 #include <cstdlib>
 #include <cstring>
 #include <new>
@@ -424,15 +426,19 @@ Kernels kernels_for(bool avx2) {
   return {step_sse2<H>, mse_impl<H>, forward_impl<H>};
 }
 
-bool use_avx2() {
-  static const bool yes = [] {
-    const char* force = std::getenv("SHADENET_CPU_KERNEL");
-    if (force && std::string(force) == "sse2") return false;
-    __builtin_cpu_init();
-    return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-  }();
-  return yes;
+bool cpu_has_avx2() {
+  __builtin_cpu_init();
+  return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
 }
+
+std::atomic<bool>& avx2_flag() {
+  static std::atomic<bool> flag = [] {
+    const char* force = std::getenv("SHADENET_CPU_KERNEL");
+    return !(force && std::string(force) == "sse2") && cpu_has_avx2();
+  }();
+  return flag;
+}
+bool use_avx2() { return avx2_flag().load(std::memory_order_relaxed); }
 
 Kernels kernels(Activation hidden) {
   const bool avx2 = use_avx2();
@@ -459,6 +465,12 @@ AdamStep AdamStep::at(const TrainConfig& cfg, long long t) {
 
 const char* cpu_kernel_name() { return use_avx2() ? "avx2" : "sse2"; }
 
+void use_cpu_kernel(const std::string& name) {
+  if (name == "avx2" && !cpu_has_avx2()) throw std::runtime_error("this CPU has no AVX2+FMA");
+  if (name != "avx2" && name != "sse2") throw std::invalid_argument("unknown cpu kernel '" + name + "' (valid: avx2, sse2)");
+  avx2_flag() = name == "avx2";
+}
+
 CpuNet::CpuNet(const MlpSpec& spec, const float* params) : spec_(spec), layout_(std::make_unique<Layout>(spec)) {
   const std::size_t bytes = layout_->total * sizeof(float);
   arena_ = static_cast<float*>(std::aligned_alloc(64, bytes));
@@ -484,16 +496,20 @@ void CpuNet::set_params(const float* flat) {
   std::memset(arena_ + S.o_m, 0, 2 * S.P * sizeof(float));
 }
 
-void CpuNet::get_params(float* flat) const {
-  const Layout& S = *layout_;
-  const float* p = arena_ + S.o_p[cur_];
+namespace {
+void unpack(const MlpSpec& spec, const Layout& S, const float* p, float* flat) {
   for (int l = 0; l < S.L; ++l) {
-    float* w = flat + spec_.weight_offset(l);
+    float* w = flat + spec.weight_offset(l);
     for (int o = 0; o < S.out[l]; ++o)
       std::memcpy(w + std::size_t(o) * S.in[l], p + S.woff[l] + std::size_t(o) * S.inpad[l], S.in[l] * sizeof(float));
-    std::memcpy(flat + spec_.bias_offset(l), p + S.boff[l], S.out[l] * sizeof(float));
+    std::memcpy(flat + spec.bias_offset(l), p + S.boff[l], S.out[l] * sizeof(float));
   }
 }
+}  // namespace
+
+void CpuNet::get_params(float* flat) const { unpack(spec_, *layout_, arena_ + layout_->o_p[cur_], flat); }
+
+void CpuNet::get_gradient(float* flat) const { unpack(spec_, *layout_, arena_ + layout_->o_g, flat); }
 
 bool CpuNet::step(const float* x, const float* y, const uint32_t* rows, int batch, const AdamStep& adam,
                   double* loss) {

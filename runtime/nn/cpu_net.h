@@ -20,8 +20,11 @@ struct AdamStep {
   static AdamStep at(const TrainConfig& cfg, long long t);
 };
 
-// "avx2" or "sse2": the kernel this process runs (SHADENET_CPU_KERNEL=sse2 forces the baseline).
+// "avx2" or "sse2": the kernel in use (AVX2+FMA when the CPU has it; SHADENET_CPU_KERNEL=sse2
+// in the environment forces the baseline).
 const char* cpu_kernel_name();
+// Switches kernels (tests compare both with the oracle); throws when the CPU lacks it.
+void use_cpu_kernel(const std::string& name);
 
 class CpuNet {
  public:
@@ -33,6 +36,9 @@ class CpuNet {
   const MlpSpec& spec() const { return spec_; }
   void get_params(float* flat) const;  // current parameters, shared flat layout
   void set_params(const float* flat);  // also clears the Adam moments
+  // The loss gradient of the last step(), shared flat layout (Adam hides a wrong gradient scale,
+  // so the tests compare this directly with the oracle).
+  void get_gradient(float* flat) const;
 
   // One Adam step on the minibatch of rows `rows[0..batch)` of x (inputs wide) and y (outputs
   // wide). Returns false, leaving the parameters as they were, when the loss or the new

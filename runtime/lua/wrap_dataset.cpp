@@ -1,0 +1,185 @@
+// sn.dataset{...} and the "Dataset" type: training and validation rows for sn.train. Scenes
+// make datasets from rendered samples (scene:dataset); this one is for scripts and tests that
+// have their rows as Lua tables or buffers.
+#include <cmath>
+#include <memory>
+
+#include "gl/buffer.h"
+#include "lua/binding.h"
+#include "lua/module.h"
+#include "nn/dataset.h"
+#include "nn/shuffle.h"
+
+namespace sn::lua {
+
+namespace {
+
+constexpr const char* kType = "Dataset";
+using nn::Dataset;
+
+// Rows from a table of rows ({{...}, ...}) or a float buffer of width-wide rows.
+std::vector<float> read_rows(lua_State* L, int idx, int* width, const char* key) {
+  const std::string what = std::string("sn.dataset option '") + key + "'";
+  std::vector<float> out;
+  if (test_type(L, idx, "Buffer")) {
+    auto& b = check<gl::Buffer>(L, idx, "Buffer");
+    if (!gl::elem_info(b.type()).is_float) throw Error(what + ": buffer of floats expected, got " + gl::elem_info(b.type()).name);
+    if (*width < 1) throw Error(what + " is a buffer: give its row width as '" + (key[0] == 'x' ? "inputs" : "outputs") + "'");
+    out = b.download_floats();
+    if (out.size() % std::size_t(*width))
+      throw Error(what + ": " + std::to_string(out.size()) + " floats are not whole rows of " + std::to_string(*width));
+  } else if (lua_istable(L, idx)) {
+    int rows = int(lua_objlen(L, idx));
+    for (int r = 1; r <= rows; ++r) {
+      lua_rawgeti(L, idx, r);
+      auto v = check_numbers(L, -1, (what + " row " + std::to_string(r)).c_str());
+      lua_pop(L, 1);
+      if (*width < 1) *width = int(v.size());
+      if (int(v.size()) != *width)
+        throw Error(what + " row " + std::to_string(r) + " has " + std::to_string(v.size()) + " values, expected " +
+                    std::to_string(*width));
+      for (double d : v) out.push_back(float(d));
+    }
+  } else {
+    throw Error(what + ": table of rows or Buffer expected, got " + type_name_at(L, idx));
+  }
+  if (out.empty()) throw Error(what + " has no rows");
+  for (std::size_t j = 0; j < out.size(); ++j)
+    if (!std::isfinite(out[j]))
+      throw Error(what + " row " + std::to_string(j / *width + 1) + " column " + std::to_string(j % *width + 1) + " is " +
+                  (std::isnan(out[j]) ? "NaN" : "infinite"));
+  return out;
+}
+
+// sn.dataset{ x = rows | Buffer, y = rows | Buffer, inputs, outputs, split = 0.8, seed = 1,
+//             color = "rgb", input_names = {...} }
+int w_new(lua_State* L) {
+  Options o(L, 1, "sn.dataset", {"x", "y", "inputs", "outputs", "split", "seed", "color", "input_names"});
+  auto d = std::make_shared<Dataset>();
+  d->inputs = int(o.integer("inputs", 0));
+  d->outputs = int(o.integer("outputs", 0));
+  if (!o.has("x")) throw Error("sn.dataset option 'x' is required");
+  if (!o.has("y")) throw Error("sn.dataset option 'y' is required");
+  int xi = o.push("x");
+  std::vector<float> x = read_rows(L, xi, &d->inputs, "x");
+  int yi = o.push("y");
+  std::vector<float> y = read_rows(L, yi, &d->outputs, "y");
+  lua_pop(L, 2);
+  const std::size_t rows = x.size() / std::size_t(d->inputs);
+  if (y.size() / std::size_t(d->outputs) != rows)
+    throw Error("sn.dataset: x has " + std::to_string(rows) + " rows but y has " +
+                std::to_string(y.size() / std::size_t(d->outputs)));
+  if (rows >= (std::size_t(1) << 31)) throw Error("sn.dataset: more than 2^31 rows");
+  const double split = o.number("split", 0.8);
+  if (!(split > 0 && split <= 1)) throw Error("sn.dataset option 'split' must be in (0, 1], got " + std::to_string(split));
+  const long long seed = o.integer("seed", 1);
+  d->color = nn::parse_color_space(o.string("color", "rgb"));
+  int names = o.push("input_names");
+  if (!lua_isnil(L, names)) {
+    if (!lua_istable(L, names)) throw Error("sn.dataset option 'input_names': table of strings expected");
+    for (int i = 1; i <= int(lua_objlen(L, names)); ++i) {
+      lua_rawgeti(L, names, i);
+      d->input_names.push_back(check_string(L, -1, "sn.dataset option 'input_names'"));
+      lua_pop(L, 1);
+    }
+  }
+  lua_pop(L, 1);
+
+  // A seeded random split: rows in the order of a permutation, the first `split` of them train.
+  const std::size_t train = std::size_t(std::llround(split * double(rows)));
+  nn::EpochShuffle order(uint32_t(seed), 0xffffffffu, uint32_t(rows));
+  for (std::size_t k = 0; k < rows; ++k) {
+    const std::size_t r = order(uint32_t(k));
+    const bool t = k < train;
+    auto& X = t ? d->train_x : d->val_x;
+    auto& Y = t ? d->train_y : d->val_y;
+    X.insert(X.end(), x.begin() + r * d->inputs, x.begin() + (r + 1) * d->inputs);
+    Y.insert(Y.end(), y.begin() + r * d->outputs, y.begin() + (r + 1) * d->outputs);
+  }
+  push(L, std::move(d), kType);
+  return 1;
+}
+
+Dataset& self(lua_State* L) { return check<Dataset>(L, 1, kType); }
+
+// ds:counts() -> training rows, validation rows
+int w_counts(lua_State* L) {
+  const Dataset& d = self(L);
+  lua_pushinteger(L, lua_Integer(d.train_count()));
+  lua_pushinteger(L, lua_Integer(d.val_count()));
+  return 2;
+}
+
+int w_inputs(lua_State* L) {
+  lua_pushinteger(L, self(L).inputs);
+  return 1;
+}
+
+int w_outputs(lua_State* L) {
+  lua_pushinteger(L, self(L).outputs);
+  return 1;
+}
+
+int w_color(lua_State* L) {
+  lua_pushstring(L, nn::color_space_name(self(L).color));
+  return 1;
+}
+
+int w_input_names(lua_State* L) {
+  const Dataset& d = self(L);
+  lua_createtable(L, int(d.input_names.size()), 0);
+  for (std::size_t i = 0; i < d.input_names.size(); ++i) {
+    lua_pushstring(L, d.input_names[i].c_str());
+    lua_rawseti(L, -2, int(i + 1));
+  }
+  return 1;
+}
+
+// ds:row("train" | "val", i) -> x, y (tables), for inspection
+int w_row(lua_State* L) {
+  const Dataset& d = self(L);
+  const bool train = check_choice(check_string(L, 2, "dataset:row set"), {"train", "val"}, "dataset set") == 0;
+  const std::size_t n = train ? d.train_count() : d.val_count();
+  long long i = check_integer(L, 3, "dataset:row index");
+  if (i < 1 || std::size_t(i) > n)
+    throw Error("dataset:row: " + std::string(train ? "training" : "validation") + " row " + std::to_string(i) +
+                " out of 1.." + std::to_string(n));
+  const float* x = (train ? d.train_x : d.val_x).data() + std::size_t(i - 1) * d.inputs;
+  const float* y = (train ? d.train_y : d.val_y).data() + std::size_t(i - 1) * d.outputs;
+  for (auto [v, w] : {std::pair{x, d.inputs}, std::pair{y, d.outputs}}) {
+    lua_createtable(L, w, 0);
+    for (int k = 0; k < w; ++k) {
+      lua_pushnumber(L, v[k]);
+      lua_rawseti(L, -2, k + 1);
+    }
+  }
+  return 2;
+}
+
+int w_tostring(lua_State* L) {
+  auto* ud = static_cast<Box<Dataset>*>(test_type(L, 1, kType));
+  if (!ud || !ud->ptr) {
+    lua_pushstring(L, "Dataset (released)");
+    return 1;
+  }
+  const Dataset& d = *ud->ptr;
+  std::string s = "Dataset(" + std::to_string(d.inputs) + " -> " + std::to_string(d.outputs) + " " +
+                  nn::color_space_name(d.color) + ", " + std::to_string(d.train_count()) + " train / " +
+                  std::to_string(d.val_count()) + " val)";
+  lua_pushstring(L, s.c_str());
+  return 1;
+}
+
+}  // namespace
+
+void open_dataset(lua_State* L) {
+  static const luaL_Reg methods[] = {SN_FN("counts", w_counts),   SN_FN("inputs", w_inputs),
+                                     SN_FN("outputs", w_outputs), SN_FN("color", w_color),
+                                     SN_FN("input_names", w_input_names), SN_FN("row", w_row),
+                                     {nullptr, nullptr}};
+  define_box_type<Dataset>(L, kType, methods, wrap<w_tostring>);
+  lua_pushcfunction(L, wrap<w_new>);
+  lua_setfield(L, -2, "dataset");
+}
+
+}  // namespace sn::lua

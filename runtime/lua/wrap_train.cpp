@@ -1,0 +1,175 @@
+// sn.train{...}: one training job over many networks (nn/train.h). Everything is checked before
+// any work; the result is one table per network, in the order of `nets`.
+#include <cstdio>
+
+#include "lua/binding.h"
+#include "lua/module.h"
+#include "nn/dataset.h"
+#include "nn/train.h"
+
+namespace sn::lua {
+
+namespace {
+
+void push_numbers(lua_State* L, const std::vector<double>& v) {
+  lua_createtable(L, int(v.size()), 0);
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    lua_pushnumber(L, v[i]);
+    lua_rawseti(L, -2, int(i + 1));
+  }
+}
+
+void set_number(lua_State* L, const char* key, double v) {
+  lua_pushnumber(L, v);
+  lua_setfield(L, -2, key);
+}
+
+void set_string(lua_State* L, const char* key, const std::string& v) {
+  lua_pushstring(L, v.c_str());
+  lua_setfield(L, -2, key);
+}
+
+void push_result(lua_State* L, const nn::NetResult& r, const nn::JobResult& job) {
+  lua_createtable(L, 0, 12);
+  push_numbers(L, r.train_mse);
+  lua_setfield(L, -2, "train_mse");
+  push_numbers(L, r.val_mse);
+  lua_setfield(L, -2, "val_mse");
+  if (r.best_epoch > 0) {
+    set_number(L, "best_val_mse", r.best_val_mse);
+    set_number(L, "best_epoch", r.best_epoch);
+  }
+  set_number(L, "wall_time", r.wall_time);
+  set_number(L, "sample_steps_per_s", r.sample_steps_per_s);
+  set_number(L, "steps", double(r.steps));
+  if (r.diverged) {
+    lua_createtable(L, 0, 2);
+    set_number(L, "epoch", r.diverged->epoch);
+    set_number(L, "step", double(r.diverged->step));
+    lua_setfield(L, -2, "diverged");
+  }
+  push_numbers(L, r.dead_units);
+  lua_setfield(L, -2, "dead_units");
+  set_string(L, "backend", job.backend);
+  set_string(L, "device", job.device);
+}
+
+// sn.train{ nets = {net, ...} | net, data = dataset, epochs = 20, batch = 8,
+//           adam = { lr = 2.5e-4, beta1 = 0.8, beta2 = 0.9, eps = 1e-7 }, seed = 1,
+//           backend = "auto" | "cpu" | "gl", keep = "last" | "best", progress = function(e) }
+int w_train(lua_State* L) {
+  Options o(L, 1, "sn.train", {"nets", "data", "epochs", "batch", "adam", "seed", "backend", "keep", "progress"});
+  nn::TrainJob job;
+  // Keep every network (and the dataset) referenced from this stack frame while training runs.
+  std::vector<std::shared_ptr<nn::Mlp>> hold;
+  int nets = o.push("nets");
+  if (test_type(L, nets, "Mlp")) {
+    hold.push_back(check_shared<nn::Mlp>(L, nets, "Mlp"));
+  } else if (lua_istable(L, nets)) {
+    const int n = int(lua_objlen(L, nets));
+    for (int i = 1; i <= n; ++i) {
+      lua_rawgeti(L, nets, i);
+      if (!test_type(L, -1, "Mlp"))
+        throw Error("sn.train option 'nets': element " + std::to_string(i) + " is " + type_name_at(L, -1) + ", not an Mlp");
+      hold.push_back(check_shared<nn::Mlp>(L, -1, "Mlp"));
+      lua_pop(L, 1);
+    }
+  } else {
+    throw Error("sn.train option 'nets': an Mlp or a table of them expected, got " + type_name_at(L, nets));
+  }
+  lua_pop(L, 1);
+  for (auto& p : hold) job.nets.push_back(p.get());
+
+  int data = o.push("data");
+  if (lua_isnil(L, data)) throw Error("sn.train option 'data' is required (a Dataset)");
+  auto dataset = check_shared<nn::Dataset>(L, data, "Dataset");
+  lua_pop(L, 1);
+  job.data = dataset.get();
+
+  nn::TrainConfig& c = job.config;
+  c.epochs = int(o.integer("epochs", c.epochs));
+  c.batch = int(o.integer("batch", c.batch));
+  const long long seed = o.integer("seed", c.seed);
+  if (seed < 0 || seed > 0xffffffffll) throw Error("sn.train option 'seed' must be in 0..4294967295");
+  c.seed = uint32_t(seed);
+  int adam = o.push("adam");
+  if (!lua_isnil(L, adam)) {
+    Options a(L, adam, "sn.train option 'adam'", {"lr", "beta1", "beta2", "eps"});
+    c.lr = a.number("lr", c.lr);
+    c.beta1 = a.number("beta1", c.beta1);
+    c.beta2 = a.number("beta2", c.beta2);
+    c.eps = a.number("eps", c.eps);
+  }
+  lua_pop(L, 1);
+
+  const std::string backend = o.string("backend", "auto");
+  if (backend != "auto" && !nn::has_backend(backend)) {
+    std::string avail = "auto";
+    for (auto& n : nn::backend_names()) avail += ", " + n;
+    throw Error("sn.train: unknown backend '" + backend + "' (available: " + avail + ")");
+  }
+  job.backend = backend;
+  job.keep = o.choice("keep", {"last", "best"}, 0) == 0 ? nn::Keep::last : nn::Keep::best;
+
+  int progress = o.push("progress");
+  if (!lua_isnil(L, progress)) {
+    if (!lua_isfunction(L, progress)) throw Error("sn.train option 'progress': function expected, got " + type_name_at(L, progress));
+    // Runs on this thread between epochs; a Lua error inside stops the job (pcall, then a C++
+    // exception: a longjmp must not cross the trainer's frames).
+    job.progress = [L, progress](const nn::ProgressEvent& e) {
+      lua_pushvalue(L, progress);
+      lua_createtable(L, 0, 4);
+      set_number(L, "net", e.net + 1);
+      set_number(L, "epoch", e.epoch);
+      set_number(L, "train_mse", e.train_mse);
+      set_number(L, "val_mse", e.val_mse);
+      if (lua_pcall(L, 1, 0, 0) != 0) {
+        std::string msg = lua_isstring(L, -1) ? lua_tostring(L, -1) : "(error object is not a string)";
+        lua_pop(L, 1);
+        throw Error("sn.train: the progress function failed: " + msg);
+      }
+    };
+  }
+
+  try {
+    nn::validate(job);
+  } catch (const std::invalid_argument& e) {
+    throw Error(std::string("sn.train: ") + e.what());
+  }
+  nn::JobResult r = nn::train(job);
+  lua_pop(L, 1);  // progress
+
+  if (backend == "auto") {
+    static bool said = false;  // once per process: a sweep calls sn.train many times
+    if (!said) std::fprintf(stderr, "sn.train: backend auto -> %s (%s)\n", r.backend.c_str(), r.reason.c_str());
+    said = true;
+  }
+  lua_createtable(L, int(r.nets.size()), 0);
+  for (std::size_t i = 0; i < r.nets.size(); ++i) {
+    push_result(L, r.nets[i], r);
+    lua_rawseti(L, -2, int(i + 1));
+  }
+  return 1;
+}
+
+// sn.backends() -> names of the training backends in this build ("cpu", "gl", ...)
+int w_backends(lua_State* L) {
+  auto names = nn::backend_names();
+  lua_createtable(L, int(names.size()), 0);
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    lua_pushstring(L, names[i].c_str());
+    lua_rawseti(L, -2, int(i + 1));
+  }
+  return 1;
+}
+
+}  // namespace
+
+void open_train(lua_State* L) {
+  lua_pushcfunction(L, wrap<w_train>);
+  lua_setfield(L, -2, "train");
+  lua_pushcfunction(L, wrap<w_backends>);
+  lua_setfield(L, -2, "backends");
+}
+
+}  // namespace sn::lua

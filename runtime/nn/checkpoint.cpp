@@ -1,0 +1,180 @@
+#include "nn/checkpoint.h"
+
+#include <unistd.h>
+
+#include <bit>
+#include <cerrno>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <stdexcept>
+
+namespace sn::nn {
+
+namespace {
+
+constexpr char kMagic[8] = {'s', 'n', 'm', 'l', 'p', '\r', '\n', '\x1a'};
+constexpr std::size_t kHeader = 24;
+
+uint64_t fnv1a(const std::string& bytes) {
+  uint64_t h = 0xcbf29ce484222325ull;
+  for (unsigned char c : bytes) h = (h ^ c) * 0x100000001b3ull;
+  return h;
+}
+
+// Little-endian writer/reader (this machine is little-endian; memcpy keeps it explicit).
+static_assert(std::endian::native == std::endian::little, "checkpoint I/O assumes a little-endian host");
+
+struct Writer {
+  std::string out;
+  template <class T>
+  void put(T v) {
+    char b[sizeof(T)];
+    std::memcpy(b, &v, sizeof(T));
+    out.append(b, sizeof(T));
+  }
+  void str(const std::string& s) {
+    put(uint32_t(s.size()));
+    out += s;
+  }
+};
+
+struct Reader {
+  const std::string& in;
+  std::size_t pos;
+  const std::string& path;
+  template <class T>
+  T get(const char* what) {
+    need(sizeof(T), what);
+    T v;
+    std::memcpy(&v, in.data() + pos, sizeof(T));
+    pos += sizeof(T);
+    return v;
+  }
+  std::string str(const char* what) {
+    uint32_t n = get<uint32_t>(what);
+    need(n, what);
+    std::string s = in.substr(pos, n);
+    pos += n;
+    return s;
+  }
+  void need(std::size_t n, const char* what) {
+    if (in.size() - pos < n) throw std::runtime_error(path + ": checkpoint ends inside the " + what);
+  }
+};
+
+}  // namespace
+
+void save_checkpoint(const Mlp& net, const std::string& path) {
+  net.spec.validate();
+  if (net.params.size() != net.spec.param_count()) throw std::invalid_argument("save: parameter count does not match the spec");
+  Writer p;
+  p.put(uint32_t(net.spec.inputs));
+  p.put(uint32_t(net.spec.outputs));
+  p.put(uint32_t(net.spec.hidden.size()));
+  for (int w : net.spec.hidden) p.put(uint32_t(w));
+  p.str(activation_name(net.spec.activation));
+  p.put(double(net.spec.slope));
+  p.str(activation_name(net.spec.output_activation));
+  p.str(color_space_name(net.spec.color));
+  p.put(uint32_t(net.input_names.size()));
+  for (const auto& n : net.input_names) p.str(n);
+  p.put(uint64_t(net.trained_steps));
+  p.put(uint64_t(net.params.size()));
+  for (float v : net.params) p.put(v);
+  const bool best = net.best_epoch > 0 && net.best_params.size() == net.params.size();
+  p.put(uint32_t(best ? net.best_epoch : 0));
+  if (best) {
+    p.put(double(net.best_val_mse));
+    for (float v : net.best_params) p.put(v);
+  }
+
+  Writer file;
+  file.out.append(kMagic, sizeof kMagic);
+  file.put(uint32_t(kCheckpointVersion));
+  file.put(uint32_t(p.out.size()));
+  file.put(fnv1a(p.out));
+  file.out += p.out;
+
+  namespace fs = std::filesystem;
+  const fs::path target(path);
+  if (target.has_parent_path()) fs::create_directories(target.parent_path());
+  const std::string tmp = path + ".tmp" + std::to_string(::getpid());
+  {
+    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
+    if (!f) throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
+    f.write(file.out.data(), std::streamsize(file.out.size()));
+    f.flush();
+    if (!f) {
+      std::error_code ec;
+      fs::remove(tmp, ec);
+      throw std::runtime_error("cannot write " + path + " (disk full?)");
+    }
+  }
+  std::error_code ec;
+  fs::rename(tmp, target, ec);
+  if (ec) {
+    fs::remove(tmp, ec);
+    throw std::runtime_error("cannot write " + path + ": " + ec.message());
+  }
+}
+
+Mlp load_checkpoint(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  if (!f) throw std::runtime_error("cannot open checkpoint " + path + ": " + std::strerror(errno));
+  const std::string bytes((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  if (bytes.size() < kHeader || std::memcmp(bytes.data(), kMagic, sizeof kMagic) != 0)
+    throw std::runtime_error(path + ": not a shadenet network checkpoint (bad magic)");
+  Reader h{bytes, sizeof kMagic, path};
+  const uint32_t version = h.get<uint32_t>("header");
+  if (version != kCheckpointVersion)
+    throw std::runtime_error(path + ": checkpoint format version " + std::to_string(version) + ", this build reads " +
+                             std::to_string(kCheckpointVersion));
+  const uint32_t size = h.get<uint32_t>("header");
+  const uint64_t sum = h.get<uint64_t>("header");
+  if (bytes.size() - kHeader < size)
+    throw std::runtime_error(path + ": checkpoint is truncated (" + std::to_string(bytes.size()) + " of " +
+                             std::to_string(kHeader + size) + " bytes)");
+  if (bytes.size() - kHeader > size) throw std::runtime_error(path + ": checkpoint has trailing bytes");
+  const std::string payload = bytes.substr(kHeader);
+  if (fnv1a(payload) != sum) throw std::runtime_error(path + ": checkpoint is corrupt (checksum mismatch)");
+
+  Reader r{payload, 0, path};
+  Mlp net;
+  MlpSpec& s = net.spec;
+  s.inputs = int(r.get<uint32_t>("spec"));
+  s.outputs = int(r.get<uint32_t>("spec"));
+  const uint32_t hidden = r.get<uint32_t>("spec");
+  if (hidden > uint32_t(kMaxHidden)) throw std::runtime_error(path + ": checkpoint has " + std::to_string(hidden) + " hidden layers");
+  for (uint32_t i = 0; i < hidden; ++i) s.hidden.push_back(int(r.get<uint32_t>("spec")));
+  try {
+    s.activation = parse_activation(r.str("spec"));
+    s.slope = r.get<double>("spec");
+    s.output_activation = parse_activation(r.str("spec"));
+    s.color = parse_color_space(r.str("spec"));
+    s.validate();
+  } catch (const std::invalid_argument& e) {
+    throw std::runtime_error(path + ": bad network spec in checkpoint: " + e.what());
+  }
+  const uint32_t names = r.get<uint32_t>("input names");
+  for (uint32_t i = 0; i < names; ++i) net.input_names.push_back(r.str("input names"));
+  net.trained_steps = r.get<uint64_t>("counters");
+  const uint64_t count = r.get<uint64_t>("parameters");
+  if (count != s.param_count())
+    throw std::runtime_error(path + ": checkpoint has " + std::to_string(count) + " parameters, its spec " +
+                             s.describe() + " needs " + std::to_string(s.param_count()));
+  net.params.resize(count);
+  for (auto& v : net.params) v = r.get<float>("parameters");
+  net.best_epoch = int(r.get<uint32_t>("best snapshot"));
+  if (net.best_epoch > 0) {
+    net.best_val_mse = r.get<double>("best snapshot");
+    net.best_params.resize(count);
+    for (auto& v : net.best_params) v = r.get<float>("best snapshot");
+  }
+  if (r.pos != payload.size()) throw std::runtime_error(path + ": checkpoint has unread bytes after the network");
+  return net;
+}
+
+}  // namespace sn::nn

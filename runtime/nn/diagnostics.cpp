@@ -1,0 +1,20 @@
+#include "nn/diagnostics.h"
+
+#include "nn/cpu_net.h"
+
+namespace sn::nn {
+
+std::vector<double> dead_unit_fractions(const Mlp& net, const float* x, std::size_t count) {
+  CpuNet work(net.spec, net.params.data());
+  const auto counts = work.unit_counts(x, count);
+  const bool relu_like = net.spec.activation == Activation::relu || net.spec.activation == Activation::leaky_relu;
+  std::vector<double> fractions;
+  for (const auto& layer : counts) {
+    int dead = 0;
+    for (uint32_t c : layer) dead += relu_like ? c == 0 : double(c) > 0.99 * double(count);
+    fractions.push_back(layer.empty() ? 0.0 : double(dead) / double(layer.size()));
+  }
+  return fractions;
+}
+
+}  // namespace sn::nn

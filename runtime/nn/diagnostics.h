@@ -1,0 +1,16 @@
+// Dead-unit diagnostics, so "sigmoid and ReLU stall at the all-zeros error" (thesis 4.1.4) is
+// measured, not guessed. Per hidden layer, over the given rows:
+//   relu, leaky_relu: fraction of units never active (output > 0 on no sample);
+//   tanh:    fraction of units saturated (|a| > 0.99) on more than 99% of the samples;
+//   sigmoid: fraction of units saturated (a < 0.01 or a > 0.99) on more than 99% of the samples.
+#pragma once
+#include <cstddef>
+#include <vector>
+
+#include "nn/mlp.h"
+
+namespace sn::nn {
+
+std::vector<double> dead_unit_fractions(const Mlp& net, const float* x, std::size_t count);
+
+}  // namespace sn::nn

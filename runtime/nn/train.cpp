@@ -1,0 +1,153 @@
+#include "nn/train.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "gl/context.h"
+#include "nn/diagnostics.h"
+#include "nn/parallel.h"
+
+namespace sn::nn {
+
+namespace {
+
+std::string num(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%g", v);
+  return b;
+}
+
+std::string names(const std::vector<std::string>& v) {
+  std::string s;
+  for (const auto& n : v) s += (s.empty() ? "" : ", ") + n;
+  return s;
+}
+
+void check_rows(const std::vector<float>& v, std::size_t width, const char* what) {
+  for (std::size_t j = 0; j < v.size(); ++j)
+    if (!std::isfinite(v[j]))
+      throw std::invalid_argument(std::string("dataset: ") + what + " row " + std::to_string(j / width + 1) +
+                                  " column " + std::to_string(j % width + 1) + " is " +
+                                  (std::isnan(v[j]) ? "NaN" : "infinite"));
+}
+
+}  // namespace
+
+void check_dataset(const Dataset& d) {
+  if (d.inputs < 1 || d.outputs < 1)
+    throw std::invalid_argument("dataset: needs at least 1 input and 1 output column, has " +
+                                std::to_string(d.inputs) + " and " + std::to_string(d.outputs));
+  const std::size_t n = d.train_count(), m = d.val_count();
+  if (d.train_x.size() != n * d.inputs || d.train_y.size() != n * d.outputs || d.val_x.size() != m * d.inputs ||
+      d.val_y.size() != m * d.outputs)
+    throw std::invalid_argument("dataset: inputs and targets have different row counts");
+  check_rows(d.train_x, std::size_t(d.inputs), "training input");
+  check_rows(d.train_y, std::size_t(d.outputs), "training target");
+  check_rows(d.val_x, std::size_t(d.inputs), "validation input");
+  check_rows(d.val_y, std::size_t(d.outputs), "validation target");
+}
+
+void validate(const TrainJob& job) {
+  using std::to_string;
+  auto fail = [](const std::string& m) { throw std::invalid_argument(m); };
+  if (job.nets.empty()) fail("no networks to train (nets is empty)");
+  if (!job.data) fail("no dataset to train on");
+  const Dataset& d = *job.data;
+  const TrainConfig& c = job.config;
+  if (c.epochs < 1) fail("epochs must be at least 1, got " + to_string(c.epochs));
+  if (c.batch < 1) fail("batch must be at least 1, got " + to_string(c.batch));
+  if (!(c.lr > 0 && std::isfinite(c.lr))) fail("adam lr must be > 0, got " + num(c.lr));
+  if (!(c.beta1 >= 0 && c.beta1 < 1)) fail("adam beta1 must be in [0, 1), got " + num(c.beta1));
+  if (!(c.beta2 >= 0 && c.beta2 < 1)) fail("adam beta2 must be in [0, 1), got " + num(c.beta2));
+  if (!(c.eps > 0 && std::isfinite(c.eps))) fail("adam eps must be > 0, got " + num(c.eps));
+  if (d.train_count() < 1) fail("the dataset has no training rows");
+  if (d.val_count() < 1) fail("the dataset has no validation rows (split must leave some, e.g. split = 0.8)");
+  if (std::size_t(c.batch) > d.train_count())
+    fail("batch " + to_string(c.batch) + " is larger than the training set (" + to_string(d.train_count()) +
+         " rows)");
+  if (d.train_count() >= (std::size_t(1) << 31)) fail("the training set has more than 2^31 rows");
+  for (std::size_t i = 0; i < job.nets.size(); ++i) {
+    const Mlp& net = *job.nets[i];
+    const std::string who = "net " + to_string(i + 1) + " (" + net.spec.describe() + ")";
+    for (std::size_t j = 0; j < i; ++j)
+      if (job.nets[j] == job.nets[i]) fail("net " + to_string(i + 1) + " is the same network as net " + to_string(j + 1));
+    try {
+      net.spec.validate();
+    } catch (const std::exception& e) {
+      fail("net " + to_string(i + 1) + ": " + e.what());
+    }
+    if (net.params.size() != net.spec.param_count()) fail(who + ": parameter count does not match its spec");
+    for (std::size_t j = 0; j < net.params.size(); ++j)
+      if (!std::isfinite(net.params[j])) fail(who + ": parameter " + to_string(j + 1) + " is not finite");
+    if (net.spec.inputs != d.inputs)
+      fail(who + " reads " + to_string(net.spec.inputs) + " inputs but the dataset has " + to_string(d.inputs) +
+           (d.input_names.empty() ? "" : " (" + names(d.input_names) + ")"));
+    if (net.spec.outputs != d.outputs)
+      fail(who + " has " + to_string(net.spec.outputs) + " outputs but the dataset's targets have " +
+           to_string(d.outputs));
+    if (net.spec.color != d.color)
+      fail(who + " learns in colour space " + color_space_name(net.spec.color) + " but the dataset's targets are " +
+           color_space_name(d.color));
+    if (!net.input_names.empty() && !d.input_names.empty() && net.input_names != d.input_names)
+      fail(who + " reads {" + names(net.input_names) + "} but the dataset provides {" + names(d.input_names) + "}");
+  }
+  check_dataset(d);
+}
+
+std::string resolve_backend(const std::string& requested, std::string* reason) {
+  if (requested != "auto") {
+    if (reason) *reason = "requested";
+    return requested;
+  }
+  if (!has_backend("gl")) {
+    if (reason) *reason = "no gl backend in this build";
+    return "cpu";
+  }
+  const gl::ContextInfo& info = gl::current().info();
+  if (info.software) {
+    if (reason) *reason = "software renderer (" + info.renderer + "): the native cpu backend is faster";
+    return "cpu";
+  }
+  if (reason) *reason = "hardware GPU (" + info.renderer + ")";
+  return "gl";
+}
+
+JobResult train(const TrainJob& job) {
+  validate(job);
+  JobResult out;
+  out.backend = resolve_backend(job.backend, &out.reason);
+  auto backend = make_backend(out.backend);
+  out.device = backend->device();
+  std::vector<const Mlp*> nets(job.nets.begin(), job.nets.end());
+
+  const auto t0 = std::chrono::steady_clock::now();
+  out.nets = backend->train(nets, *job.data, job.config, job.progress);
+  out.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (out.nets.size() != nets.size()) throw std::logic_error("backend " + out.backend + " returned wrong result count");
+
+  for (std::size_t i = 0; i < nets.size(); ++i) {
+    Mlp& net = *job.nets[i];
+    NetResult& r = out.nets[i];
+    if (r.final_params.size() != net.params.size())
+      throw std::logic_error("backend " + out.backend + " returned a wrong parameter count");
+    r.wall_time = out.wall_time;
+    r.sample_steps_per_s = out.wall_time > 0 ? double(r.steps) * job.config.batch / out.wall_time : 0.0;
+    net.params = r.final_params;
+    net.best_params = r.best_params;
+    net.best_val_mse = r.best_val_mse;
+    net.best_epoch = r.best_epoch;
+    net.trained_steps += uint64_t(r.steps);
+    if (net.input_names.empty()) net.input_names = job.data->input_names;
+    if (job.keep == Keep::best && r.best_epoch > 0) net.params = r.best_params;
+    net.touch();
+  }
+  const Dataset& d = *job.data;
+  parallel_for(int(nets.size()), default_threads(), [&](int i) {
+    out.nets[i].dead_units = dead_unit_fractions(*job.nets[i], d.val_x.data(), d.val_count());
+  });
+  return out;
+}
+
+}  // namespace sn::nn

@@ -1,0 +1,42 @@
+// A training job: checks everything a person can get wrong before any work, picks the backend,
+// runs it, then commits the results to the networks (final or best weights, step counters,
+// version bump, input names) and adds the dead-unit diagnostics.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "nn/trainer.h"
+
+namespace sn::nn {
+
+// Which weights a network keeps after the job: the final ones (default, what the curves end
+// on) or those of the epoch with the lowest validation MSE. Both stay reachable: the other is
+// Mlp::best_params (restore_best()).
+enum class Keep { last, best };
+
+struct TrainJob {
+  std::vector<Mlp*> nets;
+  const Dataset* data = nullptr;
+  TrainConfig config;
+  std::string backend = "auto";  // "auto" | a registered backend ("cpu", "gl")
+  Keep keep = Keep::last;
+  Progress progress;
+};
+
+struct JobResult {
+  std::string backend, device;
+  std::string reason;  // why this backend (for "auto")
+  double wall_time = 0;
+  std::vector<NetResult> nets;
+};
+
+// Throws std::invalid_argument naming the net (1-based), field and valid range.
+void validate(const TrainJob& job);
+// Every input and target of the dataset is finite and the row counts add up; throws naming the
+// first bad row and column (1-based).
+void check_dataset(const Dataset& data);
+// "auto" -> "gl" on a hardware GPU when the gl backend is built in, else "cpu".
+std::string resolve_backend(const std::string& requested, std::string* reason);
+JobResult train(const TrainJob& job);
+
+}  // namespace sn::nn
