@@ -1,0 +1,112 @@
+-- The command line every experiment script shares:
+--   shadenet scripts/NAME.lua [--quick] [--shard i/n] [--out DIR] [--backend cpu|gl|auto] [--help]
+-- An unknown option is an error listing the valid ones. Without --shard, a Slurm job array
+-- (SLURM_ARRAY_TASK_ID / SLURM_ARRAY_TASK_COUNT) picks the shard, so `sbatch --array=0-7`
+-- (or 1-8) spreads a sweep over 8 machines with no extra flag.
+local cli = {}
+
+local common = {
+  { flag = "--quick", help = "fewer seeds and epochs, smaller images: a smoke run under a minute" },
+  { flag = "--shard", value = "i/n", help = "run only slice i of n of the sweep (1 <= i <= n)" },
+  { flag = "--out", value = "DIR", help = "write results to DIR instead of results/NAME" },
+  { flag = "--backend", value = "cpu|gl|auto", help = "training backend (default: the script's choice)" },
+  { flag = "--help", help = "print this help" },
+}
+
+local function valid_list(flags)
+  local names = {}
+  for _, f in ipairs(flags) do names[#names + 1] = f.value and (f.flag .. " " .. f.value) or f.flag end
+  return table.concat(names, ", ")
+end
+
+function cli.usage(name, flags)
+  local lines = { string.format("usage: shadenet scripts/%s.lua [options]", name), "options:" }
+  for _, f in ipairs(flags) do
+    lines[#lines + 1] = string.format("  %-24s %s", f.value and (f.flag .. " " .. f.value) or f.flag, f.help)
+  end
+  return table.concat(lines, "\n")
+end
+
+-- "2/8" -> {index = 2, count = 8}; errors name the problem.
+function cli.parse_shard(text, where)
+  local i, n = tostring(text):match("^(%d+)/(%d+)$")
+  i, n = tonumber(i), tonumber(n)
+  if not i then error(where .. ": --shard expects i/n (e.g. 2/8), got '" .. tostring(text) .. "'", 0) end
+  if n < 1 or i < 1 or i > n then
+    error(string.format("%s: --shard %d/%d: i must be 1..n and n >= 1", where, i, n), 0)
+  end
+  return { index = i, count = n }
+end
+
+-- The Slurm job array's slice, when this process is one task of one (ids may start at 0 or 1:
+-- SLURM_ARRAY_TASK_MIN tells which).
+function cli.slurm_shard(getenv)
+  getenv = getenv or os.getenv
+  local id, count = tonumber(getenv("SLURM_ARRAY_TASK_ID")), tonumber(getenv("SLURM_ARRAY_TASK_COUNT"))
+  if not id or not count then return nil end
+  local min = tonumber(getenv("SLURM_ARRAY_TASK_MIN")) or 0
+  local index = id - min + 1
+  if count < 1 or index < 1 or index > count then
+    error(string.format("SLURM_ARRAY_TASK_ID=%d (min %d) is outside an array of %d tasks", id, min, count), 0)
+  end
+  return { index = index, count = count, from = "slurm" }
+end
+
+-- cli.parse(args, name [, extra_flags]) -> options
+--   options = { quick, shard = {index, count} | nil, out, backend, name }
+-- `extra_flags` adds script-specific flags, same shape as `common` above (value flags give a
+-- string, others true).
+function cli.parse(args, name, extra, getenv)
+  local flags = {}
+  for _, f in ipairs(common) do flags[#flags + 1] = f end
+  for _, f in ipairs(extra or {}) do flags[#flags + 1] = f end
+  local by_flag = {}
+  for _, f in ipairs(flags) do by_flag[f.flag] = f end
+  local where = name .. ".lua"
+  local o = { name = name, quick = false, extra = {} }
+  local i = 1
+  while i <= #args do
+    local a = args[i]
+    local flag, inline = a:match("^(%-%-[%w-]+)=(.*)$")
+    flag = flag or a
+    local f = by_flag[flag]
+    if not f then
+      error(string.format("%s: unknown option '%s' (valid: %s)", where, a, valid_list(flags)), 0)
+    end
+    local v = true
+    if f.value then
+      v = inline
+      if not v then
+        i = i + 1
+        v = args[i]
+      end
+      if not v or v == "" then error(string.format("%s: %s needs a value (%s)", where, flag, f.value), 0) end
+    elseif inline then
+      error(string.format("%s: %s takes no value", where, flag), 0)
+    end
+    local key = flag:sub(3):gsub("-", "_")
+    o.extra[key] = v
+    i = i + 1
+  end
+  if o.extra.help then
+    print(cli.usage(name, flags))
+    os.exit(0)
+  end
+  o.quick = o.extra.quick == true
+  o.out = o.extra.out
+  if o.extra.backend then
+    local ok = { cpu = true, gl = true, auto = true }
+    if not ok[o.extra.backend] then
+      error(string.format("%s: unknown backend '%s' (valid: cpu, gl, auto)", where, o.extra.backend), 0)
+    end
+    o.backend = o.extra.backend
+  end
+  if o.extra.shard then
+    o.shard = cli.parse_shard(o.extra.shard, where)
+  else
+    o.shard = cli.slurm_shard(getenv)
+  end
+  return o
+end
+
+return cli

@@ -1,0 +1,89 @@
+-- Line and scatter plots through gnuplot (pngcairo). The plotted data is written first as a CSV
+-- beside the PNG (series,x,y[,label]) and gnuplot reads that very file, so the CSV is exactly
+-- what the picture shows.
+local results = require "lib.results"
+
+local plot = {}
+
+local function q(s) return '"' .. tostring(s):gsub('\\', '\\\\'):gsub('"', '\\"') .. '"' end
+
+local function run_gnuplot(script, png)
+  local gp = png:gsub("%.png$", "") .. ".gp"
+  results.write_file(gp, script)
+  local log = os.tmpname()
+  local status = os.execute("gnuplot " .. string.format("%q", gp) .. " > " .. log .. " 2>&1")
+  local out = results.read_file(log) or ""
+  os.remove(log)
+  -- LuaJIT returns the raw status (0 = success); Lua 5.2 semantics return true.
+  if not (status == 0 or status == true) then
+    error("gnuplot failed on " .. gp .. ":\n" .. out, 0)
+  end
+  return out
+end
+
+local styles = { lines = "lines lw 2", linespoints = "linespoints lw 2 pt 7 ps 0.8", points = "points pt 7 ps 1.0" }
+
+-- plot.lines{ path = "DIR/plots/NAME.png", title, xlabel, ylabel, logx, logy, width, height,
+--             key = "top right", series = { {name, x = {...}, y = {...}, style = "lines",
+--             labels = {...}}, ... } } -> path of the PNG
+-- Non-finite y values are dropped (gnuplot cannot draw them) and counted in the returned
+-- second value, so a diverged curve shows as a gap, never as a silent zero.
+function plot.lines(p)
+  assert(p.path and p.path:match("%.png$"), "plot.lines: path must end in .png")
+  assert(p.series and #p.series > 0, "plot.lines: no series")
+  local csv_path = p.path:gsub("%.png$", ".csv")
+  local lines = { "series,x,y,label" }
+  local dropped = 0
+  for _, s in ipairs(p.series) do
+    assert(s.name and not s.name:find('[,"\n]'), "plot.lines: series names must not contain , \" or newlines")
+    assert(#s.x == #s.y, "plot.lines: series '" .. s.name .. "' has " .. #s.x .. " x and " .. #s.y .. " y values")
+    for i = 1, #s.x do
+      local x, y = s.x[i], s.y[i]
+      local bad = y ~= y or y == math.huge or y == -math.huge or (p.logy and y <= 0)
+      if bad then
+        dropped = dropped + 1
+      else
+        local label = s.labels and s.labels[i] or ""
+        lines[#lines + 1] = string.format("%s,%.9g,%.9g,%s", s.name, x, y, label)
+      end
+    end
+  end
+  results.write_file(csv_path, table.concat(lines, "\n") .. "\n")
+
+  local g = {
+    string.format("set terminal pngcairo size %d,%d font 'DejaVu Sans,10' enhanced", p.width or 800, p.height or 520),
+    "set output " .. q(p.path .. ".tmp.png"),
+    "set datafile separator ','",
+    "set key " .. (p.key or "top right") .. " box opaque",
+    "set grid xtics ytics lc rgb '#dddddd'",
+    "set border lw 1",
+    "set title " .. q(p.title or ""),
+    "set xlabel " .. q(p.xlabel or "x"),
+    "set ylabel " .. q(p.ylabel or "y"),
+  }
+  if p.logx then g[#g + 1] = "set logscale x" end
+  if p.logy then g[#g + 1] = "set logscale y" g[#g + 1] = "set format y '%.0e'" end
+  if p.xtics then g[#g + 1] = "set xtics " .. p.xtics end
+  if p.yrange then g[#g + 1] = string.format("set yrange [%s:%s]", p.yrange[1] or "*", p.yrange[2] or "*") end
+  if p.xrange then g[#g + 1] = string.format("set xrange [%s:%s]", p.xrange[1] or "*", p.xrange[2] or "*") end
+  local parts = {}
+  for i, s in ipairs(p.series) do
+    local sel = string.format("(strcol(1) eq %s ? $3 : NaN)", q(s.name))
+    local style = styles[s.style or "lines"] or error("plot.lines: unknown style '" .. tostring(s.style) ..
+                                                      "' (valid: lines, linespoints, points)", 0)
+    local color = s.color and (" lc rgb " .. q(s.color)) or ""
+    parts[#parts + 1] = string.format("%s skip 1 using 2:%s with %s%s title %s", q(csv_path), sel, style, color, q(s.name))
+    if s.labels then
+      parts[#parts + 1] = string.format("%s skip 1 using 2:%s:4 with labels offset 0.6,0.6 left font ',8' notitle",
+                                        q(csv_path), sel)
+    end
+  end
+  g[#g + 1] = "plot " .. table.concat(parts, ", \\\n     ")
+  g[#g + 1] = "unset output"
+  run_gnuplot(table.concat(g, "\n") .. "\n", p.path)
+  local ok, err = os.rename(p.path .. ".tmp.png", p.path)
+  if not ok then error("cannot write " .. p.path .. ": " .. tostring(err), 0) end
+  return p.path, dropped
+end
+
+return plot

@@ -1,0 +1,73 @@
+-- A progress line for long sweeps: runs done / total, the current best, elapsed time and ETA.
+-- On a terminal it redraws one line with \r; otherwise (CI logs, Slurm output files, pipes) it
+-- prints a plain line at most every `every` seconds and at the end.
+local sn = require "shadenet"
+
+local Progress = {}
+Progress.__index = Progress
+
+local function clock() return sn.clock() end
+
+local function duration(s)
+  if not s or s ~= s or s == math.huge then return "?" end
+  s = math.floor(s + 0.5)
+  if s < 60 then return s .. "s" end
+  if s < 3600 then return string.format("%dm%02ds", math.floor(s / 60), s % 60) end
+  return string.format("%dh%02dm", math.floor(s / 3600), math.floor(s / 60) % 60)
+end
+Progress.duration = duration
+
+-- Progress.new{ total = N, label = "table_4_1_phong", tty = (default: stdout is a terminal),
+--               every = 10 (seconds between plain lines), out = io.stdout }
+function Progress.new(o)
+  local tty = o.tty
+  if tty == nil then tty = sn.isatty("stdout") end
+  local self = setmetatable({ total = o.total, label = o.label or "", tty = tty, every = o.every or 10,
+                              out = o.out or io.stdout, done = 0, start_done = o.already or 0,
+                              t0 = clock(), last_print = -math.huge, width = sn.terminal_width() or 100 }, Progress)
+  self.done = self.start_done
+  return self
+end
+
+-- The text of the line (exposed for tests).
+function Progress:text()
+  local elapsed = clock() - self.t0
+  local fresh = self.done - self.start_done
+  local remaining = self.total - self.done
+  local eta = fresh > 0 and elapsed / fresh * remaining or nil
+  local parts = { string.format("%s %d/%d runs", self.label, self.done, self.total) }
+  if self.best then parts[#parts + 1] = "best " .. self.best end
+  parts[#parts + 1] = "elapsed " .. duration(elapsed)
+  if remaining > 0 then parts[#parts + 1] = "ETA " .. (eta and duration(eta) or "?") end
+  return table.concat(parts, "  ")
+end
+
+local function bar(frac, n)
+  local full = math.floor(frac * n + 0.5)
+  return "[" .. string.rep("#", full) .. string.rep(".", n - full) .. "]"
+end
+
+-- p:update(done [, best_text]): `done` runs finished so far (including resumed ones).
+function Progress:update(done, best)
+  self.done = done
+  if best then self.best = best end
+  local now = clock()
+  if self.tty then
+    local line = bar(self.total > 0 and self.done / self.total or 1, 20) .. " " .. self:text()
+    if #line > self.width - 1 then line = line:sub(1, self.width - 1) end
+    self.out:write("\r", line, string.rep(" ", math.max(0, (self.last_len or 0) - #line)))
+    self.last_len = #line
+    self.out:flush()
+  elseif now - self.last_print >= self.every or self.done >= self.total then
+    self.out:write(self:text(), "\n")
+    self.out:flush()
+    self.last_print = now
+  end
+end
+
+-- Ends the line on a terminal.
+function Progress:finish()
+  if self.tty and self.last_len then self.out:write("\n") self.out:flush() end
+end
+
+return Progress

@@ -1,0 +1,232 @@
+-- Where an experiment's results go and how they are written: results/NAME/ (or --out DIR) with
+-- table.md + table.csv, figures/*.png, plots/*.png (+ their .csv), run.json and runs/*.json.
+-- Every file is written to a temporary name beside its target and renamed, so a crash or a
+-- Ctrl-C never leaves a half-written result.
+local sn = require "shadenet"
+local json = require "lib.json"
+
+local results = {}
+
+local function dirname(path) return path:match("^(.*)/[^/]*$") end
+
+-- A temporary name no other writer uses: this process's table address and the time.
+local function temp_name(path)
+  local dir, base = path:match("^(.*)/([^/]*)$")
+  local tag = tostring({}):match("0x(%x+)") or tostring(math.random(1, 2 ^ 30))
+  return string.format("%s/.%s.%s%d.tmp", dir or ".", base or path, tag, os.time() % 100000)
+end
+
+function results.mkdir(dir) return sn.fs.mkdir(dir) end
+
+-- Writes `content` to path atomically (temp file + rename); creates the folder.
+function results.write_file(path, content)
+  local dir = dirname(path)
+  if dir and dir ~= "" then sn.fs.mkdir(dir) end
+  local tmp = temp_name(path)
+  local f, err = io.open(tmp, "wb")
+  if not f then error("cannot write '" .. path .. "': " .. tostring(err), 0) end
+  local ok, werr = f:write(content)
+  f:close()
+  if not ok then os.remove(tmp) error("cannot write '" .. path .. "': " .. tostring(werr), 0) end
+  local renamed, rerr = os.rename(tmp, path)
+  if not renamed then os.remove(tmp) error("cannot rename onto '" .. path .. "': " .. tostring(rerr), 0) end
+  return path
+end
+
+function results.read_file(path)
+  local f = io.open(path, "rb")
+  if not f then return nil end
+  local s = f:read("*a")
+  f:close()
+  return s
+end
+
+function results.write_json(path, value) return results.write_file(path, json.encode(value, "  ") .. "\n") end
+
+function results.read_json(path)
+  local s = results.read_file(path)
+  if not s then return nil end
+  return json.decode(s, path)
+end
+
+-- Removes temporary files a killed writer left in dir (they never replace a result).
+function results.clean_temps(dir)
+  if sn.fs.exists(dir) ~= "folder" then return 0 end
+  local n = 0
+  for _, name in ipairs(sn.fs.list(dir)) do
+    if name:match("^%..*%.tmp$") then os.remove(dir .. "/" .. name) n = n + 1 end
+  end
+  return n
+end
+
+-- ---- tables -------------------------------------------------------------------------------
+
+local function is_finite(v) return type(v) == "number" and v == v and v ~= math.huge and v ~= -math.huge end
+
+local function fmt(v, f)
+  if v == nil then return nil end
+  if type(v) == "number" then
+    if v ~= v then return "nan" end
+    if v == math.huge then return "inf" end
+    if v == -math.huge then return "-inf" end
+    if f then return string.format(f, v) end
+    if v == math.floor(v) and math.abs(v) < 1e15 then return string.format("%d", v) end
+    return string.format("%.6g", v)
+  end
+  if type(v) == "boolean" then return tostring(v) end
+  return tostring(v)
+end
+results.format = fmt
+
+local function csv_cell(v)
+  if v == nil then return "" end
+  local s = type(v) == "number" and (is_finite(v) and string.format("%.9g", v) or fmt(v)) or tostring(v)
+  if s:find('[,"\n]') then s = '"' .. s:gsub('"', '""') .. '"' end
+  return s
+end
+
+local function md_cell(s) return (tostring(s):gsub("|", "\\|")) end
+
+-- The CSV text of rows under columns {key=...}: header = the keys, full precision numbers.
+function results.csv(columns, rows)
+  local lines = {}
+  local head = {}
+  for i, c in ipairs(columns) do head[i] = csv_cell(c.key) end
+  lines[1] = table.concat(head, ",")
+  for _, r in ipairs(rows) do
+    local cells = {}
+    for i, c in ipairs(columns) do cells[i] = csv_cell(r[c.key]) end
+    lines[#lines + 1] = table.concat(cells, ",")
+  end
+  return table.concat(lines, "\n") .. "\n"
+end
+
+-- A Markdown table of rows under columns {key, header, format}.
+function results.markdown(columns, rows)
+  local head, rule = {}, {}
+  for i, c in ipairs(columns) do
+    head[i] = md_cell(c.header or c.key)
+    rule[i] = c.align == "left" and "---" or "---:"
+  end
+  local lines = { "| " .. table.concat(head, " | ") .. " |", "|" .. table.concat(rule, "|") .. "|" }
+  for _, r in ipairs(rows) do
+    local cells = {}
+    for i, c in ipairs(columns) do cells[i] = md_cell(fmt(r[c.key], c.format) or "–") end
+    lines[#lines + 1] = "| " .. table.concat(cells, " | ") .. " |"
+  end
+  return table.concat(lines, "\n") .. "\n"
+end
+
+-- A 2-D view of rows: one table row per value of g.rows (e.g. layers), one column per value of
+-- g.cols (e.g. width); each cell "ours (thesis)" when g.thesis names a field.
+function results.markdown_grid(g, rows)
+  local rvals, cvals, seen_r, seen_c, cell = {}, {}, {}, {}, {}
+  for _, r in ipairs(rows) do
+    local a, b = r[g.rows], r[g.cols]
+    if not seen_r[a] then seen_r[a] = true rvals[#rvals + 1] = a end
+    if not seen_c[b] then seen_c[b] = true cvals[#cvals + 1] = b end
+    cell[tostring(a) .. "\0" .. tostring(b)] = r
+  end
+  local head = { md_cell((g.row_header or g.rows) .. " \\ " .. (g.col_header or g.cols)) }
+  local rule = { "---" }
+  for i, b in ipairs(cvals) do head[i + 1] = md_cell(fmt(b)) rule[i + 1] = "---:" end
+  local lines = {}
+  if g.title then lines[#lines + 1] = "**" .. g.title .. "**\n" end
+  lines[#lines + 1] = "| " .. table.concat(head, " | ") .. " |"
+  lines[#lines + 1] = "|" .. table.concat(rule, "|") .. "|"
+  for _, a in ipairs(rvals) do
+    local cells = { md_cell(fmt(a)) }
+    for i, b in ipairs(cvals) do
+      local r = cell[tostring(a) .. "\0" .. tostring(b)]
+      local s = "–"
+      if r and r[g.value] ~= nil then
+        s = fmt(r[g.value], g.format)
+        if g.thesis and r[g.thesis] ~= nil then s = s .. " (" .. fmt(r[g.thesis], g.format) .. ")" end
+      end
+      cells[i + 1] = md_cell(s)
+    end
+    lines[#lines + 1] = "| " .. table.concat(cells, " | ") .. " |"
+  end
+  return table.concat(lines, "\n") .. "\n"
+end
+
+-- ---- one experiment's folder ----------------------------------------------------------------
+
+local Results = {}
+Results.__index = Results
+
+-- results.open(options, name) with options from lib.cli: results/NAME, results/NAME/shard-i-of-n
+-- when sharded without --out, or --out DIR.
+function results.open(o, name)
+  local dir = o.out
+  if not dir then
+    dir = "results/" .. name
+    if o.shard then dir = string.format("%s/shard-%d-of-%d", dir, o.shard.index, o.shard.count) end
+  end
+  dir = dir:gsub("/+$", "")
+  sn.fs.mkdir(dir)
+  results.clean_temps(dir)
+  return setmetatable({ dir = dir, name = name, written = {} }, Results)
+end
+
+function Results:path(rel) return self.dir .. "/" .. rel end
+
+function Results:write(rel, content)
+  self.written[#self.written + 1] = rel
+  return results.write_file(self:path(rel), content)
+end
+
+function Results:json(rel, value)
+  self.written[#self.written + 1] = rel
+  return results.write_json(self:path(rel), value)
+end
+
+-- R:table{ file = "table", title = "...", columns = {{key, header, format}...}, rows = {...},
+--          grids = {{title, rows, cols, value, thesis, format}...}, notes = {"..."} }
+-- writes FILE.md (title, grids, the long table, notes) and FILE.csv (the long table).
+function Results:table(t)
+  local file = t.file or "table"
+  local md = {}
+  if t.title then md[#md + 1] = "## " .. t.title .. "\n" end
+  for _, g in ipairs(t.grids or {}) do md[#md + 1] = results.markdown_grid(g, t.rows) end
+  md[#md + 1] = results.markdown(t.columns, t.rows)
+  for _, n in ipairs(t.notes or {}) do md[#md + 1] = n .. "\n" end
+  self:write(file .. ".md", table.concat(md, "\n"))
+  self:write(file .. ".csv", results.csv(t.columns, t.rows))
+  return self:path(file .. ".md")
+end
+
+-- What every run.json carries besides the script's own configuration.
+function results.environment()
+  local info = sn.gl_info()
+  local gp = io.popen("gnuplot --version 2>/dev/null")
+  local gnuplot = gp and gp:read("*l") or nil
+  if gp then gp:close() end
+  local cpu
+  local f = io.open("/proc/cpuinfo")
+  if f then
+    for line in f:lines() do
+      cpu = line:match("^model name%s*:%s*(.-)%s*$")
+      if cpu then break end
+    end
+    f:close()
+  end
+  local cores = 0
+  f = io.open("/proc/cpuinfo")
+  if f then
+    for line in f:lines() do if line:match("^processor%s*:") then cores = cores + 1 end end
+    f:close()
+  end
+  return {
+    shadenet = sn.version,
+    luajit = jit and jit.version or _VERSION,
+    gl = { renderer = info.renderer, version = info.version, vendor = info.vendor, software = info.software },
+    gnuplot = gnuplot,
+    cpu = cpu,
+    cpu_threads = cores,
+    date = os.date("!%Y-%m-%dT%H:%M:%SZ"),
+    host = os.getenv("HOSTNAME"),
+  }
+end
+
+return results

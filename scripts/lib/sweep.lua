@@ -1,0 +1,156 @@
+-- A sweep: a list of runs with deterministic ids, trained in groups, each finished run written
+-- at once to DIR/runs/ID.json (atomically). Re-running skips every run whose file exists with
+-- the same configuration, so a killed or interrupted sweep resumes where it stopped; a shard
+-- i/n takes runs i, i+n, i+2n, ... of the list (round robin, so every shard gets a fair mix of
+-- small and large networks); results from several shards merge by copying run files together.
+local sn = require "shadenet"
+local json = require "lib.json"
+local results = require "lib.results"
+local Progress = require "lib.progress"
+
+local Sweep = {}
+Sweep.__index = Sweep
+
+-- sweep.new{ dir = results folder, runs = { {id = "L4-W6-s3", config = {...}}, ... },
+--            shard = {index, count} | nil, label = "table_4_1_phong" }
+function Sweep.new(o)
+  assert(o.dir and o.runs, "sweep.new: dir and runs are required")
+  local ids = {}
+  for k, r in ipairs(o.runs) do
+    if type(r.id) ~= "string" or not r.id:match("^[%w._-]+$") then
+      error(string.format("sweep: run %d has id '%s'; ids must be made of letters, digits, '.', '_' and '-'",
+                          k, tostring(r.id)), 0)
+    end
+    if ids[r.id] then error("sweep: two runs have the id '" .. r.id .. "'", 0) end
+    ids[r.id] = true
+    r.config_text = json.encode(r.config or {})
+  end
+  local self = setmetatable({ dir = o.dir, runs_dir = o.dir .. "/runs", runs = o.runs, shard = o.shard,
+                              label = o.label or "sweep" }, Sweep)
+  sn.fs.mkdir(self.runs_dir)
+  results.clean_temps(self.runs_dir)
+  return self
+end
+
+-- The runs this process is responsible for.
+function Sweep:slice()
+  if not self.shard then return self.runs end
+  local out = {}
+  for k, r in ipairs(self.runs) do
+    if (k - 1) % self.shard.count == self.shard.index - 1 then out[#out + 1] = r end
+  end
+  return out
+end
+
+function Sweep:file(run) return self.runs_dir .. "/" .. run.id .. ".json" end
+
+-- The finished record of `run`, or nil when it has not run with this configuration. A run file
+-- that cannot be read is reported and treated as not finished (it will be trained again).
+function Sweep:record(run)
+  local text = results.read_file(self:file(run))
+  if not text then return nil end
+  local ok, rec = pcall(json.decode, text, self:file(run))
+  if not ok or type(rec) ~= "table" then
+    io.stderr:write("sweep: ignoring unreadable ", self:file(run), ": ", tostring(rec), "\n")
+    return nil
+  end
+  if json.encode(rec.config or {}) ~= run.config_text then return nil end
+  return rec
+end
+
+function Sweep:pending()
+  local out = {}
+  for _, r in ipairs(self:slice()) do
+    if not self:record(r) then out[#out + 1] = r end
+  end
+  return out
+end
+
+-- All finished records of the whole sweep found in the folder (this shard's and any other's
+-- copied in), in the sweep's order; runs without a record are absent.
+function Sweep:records()
+  local out = {}
+  for _, r in ipairs(self.runs) do
+    local rec = self:record(r)
+    if rec then out[#out + 1] = rec end
+  end
+  return out
+end
+
+-- sweep:run{ train = function(group) -> results, one table per run of `group`, in order;
+--            group_key = function(run) -> key (runs with equal keys may train together; default
+--                        all), chunk = max runs per group (default all),
+--            score = function(result) -> number (lower is better; for the progress line),
+--            describe = function(run) -> short text (for the progress line) }
+-- Returns finished, interrupted: the number of finished runs of the slice, and true when
+-- Ctrl-C stopped the sweep early (every run finished before it is kept).
+function Sweep:run(o)
+  local slice = self:slice()
+  local pending = self:pending()
+  local done = #slice - #pending
+  local progress = Progress.new { total = #slice, label = self.label, already = done }
+  local best, best_text
+  local function consider(run, result)
+    local s = o.score and o.score(result)
+    if s and s == s and (not best or s < best) then
+      best = s
+      best_text = string.format("%.6g", s) .. (o.describe and (" (" .. o.describe(run) .. ")") or "")
+    end
+  end
+  for _, r in ipairs(slice) do
+    local rec = self:record(r)
+    if rec then consider(r, rec.result) end
+  end
+  if #pending == 0 then return done, false end
+  if done > 0 then
+    print(string.format("%s: resuming, %d of %d runs already finished in %s", self.label, done, #slice, self.runs_dir))
+  end
+
+  -- Groups: runs with the same key, in list order, cut into chunks.
+  local groups, by_key, order = {}, {}, {}
+  for _, r in ipairs(pending) do
+    local key = o.group_key and tostring(o.group_key(r)) or "all"
+    if not by_key[key] then by_key[key] = {} order[#order + 1] = key end
+    local list = by_key[key]
+    local last = list[#list]
+    if not last or (o.chunk and #last >= o.chunk) then
+      last = {}
+      list[#list + 1] = last
+    end
+    last[#last + 1] = r
+  end
+  for _, key in ipairs(order) do
+    for _, g in ipairs(by_key[key]) do groups[#groups + 1] = g end
+  end
+
+  sn.catch_interrupt()
+  progress:update(done, best_text)
+  local interrupted = false
+  for _, group in ipairs(groups) do
+    local t0 = sn.clock()
+    local out = o.train(group)
+    assert(type(out) == "table" and #out == #group,
+           string.format("sweep: train returned %s results for %d runs", type(out) == "table" and #out or type(out), #group))
+    local seconds = sn.clock() - t0
+    for k, r in ipairs(group) do
+      local rec = { id = r.id, config = r.config, result = out[k], group_size = #group,
+                    group_seconds = seconds, finished = os.date("!%Y-%m-%dT%H:%M:%SZ") }
+      results.write_json(self:file(r), rec)
+      done = done + 1
+      consider(r, out[k])
+    end
+    progress:update(done, best_text)
+    if sn.interrupted() then
+      interrupted = true
+      break
+    end
+  end
+  progress:finish()
+  if interrupted then
+    print(string.format("%s: stopped by Ctrl-C; %d of %d runs finished and kept in %s (run the same command to resume)",
+                        self.label, done, #slice, self.runs_dir))
+  end
+  return done, interrupted
+end
+
+return Sweep

@@ -1,0 +1,126 @@
+-- scripts/lib: command line, JSON, atomic results files, tables, sweeps (shards, resume), plots.
+package.path = "scripts/?.lua;" .. package.path
+local sn = require "shadenet"
+local cli = require "lib.cli"
+local json = require "lib.json"
+local results = require "lib.results"
+local Sweep = require "lib.sweep"
+local stats = require "lib.stats"
+local plot = require "lib.plot"
+local Progress = require "lib.progress"
+
+local tmp = os.tmpname()
+os.remove(tmp)
+sn.fs.mkdir(tmp)
+
+-- ---- cli ----
+local none = function() return nil end
+local o = cli.parse({ "--quick", "--shard", "2/4", "--out", "x/y" }, "t", nil, none)
+assert(o.quick == true and o.shard.index == 2 and o.shard.count == 4 and o.out == "x/y", "cli basic")
+o = cli.parse({ "--shard=3/3", "--backend=cpu" }, "t", nil, none)
+assert(o.shard.index == 3 and o.backend == "cpu" and not o.quick, "cli inline values")
+local ok, err = pcall(cli.parse, { "--qiuck" }, "t", nil, none)
+assert(not ok and err:find("unknown option '%-%-qiuck'") and err:find("%-%-quick") and err:find("%-%-shard i/n"),
+       "unknown flag lists the valid ones: " .. tostring(err))
+ok, err = pcall(cli.parse, { "--shard", "5/4" }, "t", nil, none)
+assert(not ok and err:find("1..n"), "shard out of range: " .. tostring(err))
+ok, err = pcall(cli.parse, { "--backend", "cuda" }, "t", nil, none)
+assert(not ok and err:find("valid: cpu, gl, auto"), "bad backend: " .. tostring(err))
+ok, err = pcall(cli.parse, { "--out" }, "t", nil, none)
+assert(not ok and err:find("needs a value"), "missing value: " .. tostring(err))
+local env = { SLURM_ARRAY_TASK_ID = "5", SLURM_ARRAY_TASK_COUNT = "8", SLURM_ARRAY_TASK_MIN = "0" }
+o = cli.parse({}, "t", nil, function(k) return env[k] end)
+assert(o.shard.index == 6 and o.shard.count == 8, "slurm 0-based array task 5 -> shard 6/8")
+env.SLURM_ARRAY_TASK_MIN = "1"
+o = cli.parse({}, "t", nil, function(k) return env[k] end)
+assert(o.shard.index == 5, "slurm 1-based array")
+o = cli.parse({ "--shard", "1/2" }, "t", nil, function(k) return env[k] end)
+assert(o.shard.index == 1 and o.shard.count == 2, "--shard wins over Slurm")
+o = cli.parse({ "--epochs", "7" }, "t", { { flag = "--epochs", value = "N", help = "epochs" } }, none)
+assert(o.extra.epochs == "7", "script-specific flag")
+
+-- ---- json ----
+local v = { a = 1, b = { 0.1, 2.5e-4, -3 }, c = "x\"y\n", d = { e = true, f = {} }, g = 0 / 0, h = math.huge }
+local back = json.decode(json.encode(v, "  "))
+assert(back.a == 1 and back.b[2] == 2.5e-4 and back.c == "x\"y\n" and back.d.e == true, "json round trip")
+assert(back.g ~= back.g and back.h == math.huge, "json keeps NaN and Inf as numbers")
+assert(json.encode({ b = 1, a = 2 }) == '{"a":2,"b":1}', "json sorts keys")
+assert(json.encode({ 0.1 }) == "[0.10000000000000001]", "json keeps full precision")
+ok, err = pcall(json.decode, '{"a": }', "f.json")
+assert(not ok and err:find("f.json"), "json errors name the file")
+
+-- ---- results ----
+local p = results.write_file(tmp .. "/sub/a.txt", "hello")
+assert(results.read_file(p) == "hello", "atomic write")
+for _, name in ipairs(sn.fs.list(tmp .. "/sub")) do assert(not name:find("tmp"), "no temp file left: " .. name) end
+local f = io.open(tmp .. "/sub/.a.txt.dead1.tmp", "w") f:write("half") f:close()
+assert(results.clean_temps(tmp .. "/sub") == 1, "a killed writer's temp file is cleaned")
+local cols = { { key = "layers" }, { key = "width" }, { key = "ours", format = "%.6f" }, { key = "thesis", format = "%.6f" } }
+local rows = { { layers = 2, width = 4, ours = 0.0012346, thesis = 0.000736 }, { layers = 2, width = 6, ours = 0.5 } }
+assert(results.csv(cols, rows) == "layers,width,ours,thesis\n2,4,0.0012346,0.000736\n2,6,0.5,\n", "csv")
+local md = results.markdown(cols, rows)
+assert(md:find("| 2 | 4 | 0.001235 | 0.000736 |", 1, true) and md:find("| 2 | 6 | 0.500000 | – |", 1, true), "markdown: " .. md)
+local grid = results.markdown_grid({ rows = "layers", cols = "width", value = "ours", thesis = "thesis", format = "%.6f" }, rows)
+assert(grid:find("| 2 | 0.001235 (0.000736) | 0.500000 |", 1, true), "grid: " .. grid)
+
+-- ---- stats ----
+assert(stats.median({ 3, 1, 2 }) == 2 and stats.median({ 4, 1, 3, 2 }) == 2.5, "median")
+local m, left = stats.median({ 1, 0 / 0, 3 })
+assert(m == 2 and left == 1, "median skips and counts non-finite values")
+assert(stats.median({}) == nil, "median of nothing")
+
+-- ---- sweep: shards, resume ----
+local runs = {}
+for i = 1, 7 do runs[i] = { id = "r" .. i, config = { i = i } } end
+local trained = {}
+local function train(group)
+  local out = {}
+  for k, r in ipairs(group) do
+    trained[#trained + 1] = r.id
+    out[k] = { value = r.config.i * 10 }
+  end
+  return out
+end
+local s1 = Sweep.new { dir = tmp .. "/sw", runs = runs, shard = { index = 1, count = 3 }, label = "t" }
+local slice = s1:slice()
+assert(#slice == 3 and slice[1].id == "r1" and slice[2].id == "r4" and slice[3].id == "r7", "round-robin shard 1/3")
+s1:run { train = train, chunk = 2, score = function(r) return r.value end }
+assert(#trained == 3, "shard 1 trains its 3 runs")
+trained = {}
+s1:run { train = train }
+assert(#trained == 0, "a re-run skips finished runs")
+local full = Sweep.new { dir = tmp .. "/sw", runs = runs, label = "t" }
+assert(#full:records() == 3 and #full:pending() == 4, "records found in the folder")
+full:run { train = train, group_key = function(r) return r.config.i % 2 end }
+assert(#trained == 4, "the unsharded run trains only the missing 4")
+assert(#full:records() == 7 and full:records()[5].result.value == 50, "all records, in sweep order")
+-- A changed configuration is not a finished run.
+runs[2].config = { i = 2, epochs = 3 }
+local changed = Sweep.new { dir = tmp .. "/sw", runs = runs, label = "t" }
+assert(#changed:pending() == 1 and changed:pending()[1].id == "r2", "a run with a new configuration runs again")
+ok, err = pcall(Sweep.new, { dir = tmp .. "/sw2", runs = { { id = "a b" } } })
+assert(not ok and err:find("ids must be"), "bad id: " .. tostring(err))
+
+-- ---- progress ----
+local sink = { text = "" }
+function sink:write(...) for _, s in ipairs({ ... }) do self.text = self.text .. s end end
+function sink:flush() end
+local pr = Progress.new { total = 10, label = "x", tty = false, every = 0, out = sink, already = 2 }
+pr:update(4, "0.001 (L4 W6)")
+assert(sink.text:find("x 4/10 runs  best 0.001 %(L4 W6%)") and sink.text:find("ETA"), "progress line: " .. sink.text)
+sink.text = ""
+local prt = Progress.new { total = 10, label = "x", tty = true, out = sink }
+prt:update(5)
+assert(sink.text:sub(1, 1) == "\r" and sink.text:find("%[##########%.%.%.%.%.%.%.%.%.%.%]"), "tty bar: " .. sink.text)
+
+-- ---- plot ----
+local png, dropped = plot.lines { path = tmp .. "/plots/c.png", title = "t", xlabel = "epoch", ylabel = "MSE", logy = true,
+                                  series = { { name = "a", x = { 1, 2, 3 }, y = { 0.1, 0 / 0, 0.01 } } } }
+assert(sn.fs.exists(png) == "file" and dropped == 1, "plot written, NaN dropped and counted")
+local img = sn.image.load(png)
+local w, h = img:size()
+assert(w == 800 and h == 520, "plot size")
+assert(results.read_file(tmp .. "/plots/c.csv") == "series,x,y,label\na,1,0.1,\na,3,0.01,\n", "plot data beside it")
+
+os.execute("rm -rf '" .. tmp .. "'")
+print("scripts lib: ok")
