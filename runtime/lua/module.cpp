@@ -31,6 +31,8 @@ int open_core(lua_State* L) {
   open_mlp(L);
   open_dataset(L);
   open_train(L);
+  open_lighting(L);
+  open_scene(L);
   return 1;
 }
 

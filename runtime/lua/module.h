@@ -22,5 +22,7 @@ void open_context(lua_State* L);
 void open_mlp(lua_State* L);
 void open_dataset(lua_State* L);
 void open_train(lua_State* L);
+void open_lighting(lua_State* L);  // sn.lighting.*, sn.color.*
+void open_scene(lua_State* L);     // sn.scene, sn.render_truth, sn.dataset_stats
 
 }  // namespace sn::lua

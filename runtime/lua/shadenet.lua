@@ -14,5 +14,6 @@ function Buffer.ffi(buf, ctype)
                     or (kind == "int32" or kind == "ivec4") and "int32_t*" or "float*")
   return ffi.cast(ctype, buf:pointer())
 end
+require "shadenet.scene"  -- scene:render
 
 return sn

@@ -3,6 +3,7 @@
 // each into its own RGBA32F attachment, in the order asked for: the value in .xyz (uv in .xy)
 // and coverage in .w (1 on the mesh, 0 on the background).
 #pragma once
+#include <cstddef>
 #include <memory>
 #include <string>
 #include <vector>
@@ -10,6 +11,9 @@
 #include "gl/render_target.h"
 
 namespace sn::scene {
+
+struct Mesh;
+class Camera;
 
 // Attribute names a G-buffer (and so a network input) can hold:
 //   "normal"         world-space unit normal (3)
@@ -30,5 +34,18 @@ struct GBuffer {
   // Attachment index of `name`; throws listing the attributes this G-buffer holds.
   int attachment(const std::string& name) const;
 };
+
+// Checks an attribute list: known names, no repeats, 1..6 of them; throws naming the problem.
+void check_attributes(const std::vector<std::string>& attributes);
+
+// Rasterises `meshes` (already in world space) seen by `camera` into a width x height G-buffer
+// holding `attributes`. Back faces get their normal flipped towards the eye (two-sided
+// surfaces such as cloth). Throws when a mesh lacks what an attribute needs: "uv" without
+// texture coordinates, "base_color" without a base-colour texture.
+GBuffer render_gbuffer(const std::vector<const Mesh*>& meshes, const Camera& camera, int width, int height,
+                       const std::vector<std::string>& attributes);
+
+// How many G-buffer passes ran in this process (the dataset cache test watches it).
+std::size_t gbuffer_renders();
 
 }  // namespace sn::scene

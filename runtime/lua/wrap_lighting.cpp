@@ -1,0 +1,360 @@
+// sn.lighting.*: the ground-truth lighting models as "Lighting" objects (parameters checked
+// against their domains), evaluated by the CPU twin (model:shade) or on the GPU
+// (model:evaluate); sn.lighting.stress runs the numerical stress test; sn.color.* converts
+// between colour spaces.
+#include <cmath>
+#include <map>
+
+#include "gl/buffer.h"
+#include "lua/binding.h"
+#include "lua/lighting_binding.h"
+#include "lua/module.h"
+#include "shading/color.h"
+#include "shading/lighting.h"
+#include "shading/lighting_gpu.h"
+#include "shading/render_truth.h"
+#include "shading/stress.h"
+
+namespace sn::lua {
+
+using shading::Light;
+using shading::LightingParams;
+
+void push_vec3(lua_State* L, const glm::dvec3& v) {
+  lua_createtable(L, 3, 0);
+  for (int i = 0; i < 3; ++i) {
+    lua_pushnumber(L, v[i]);
+    lua_rawseti(L, -2, i + 1);
+  }
+}
+
+Light check_light(lua_State* L, int idx, const char* what, const Light& def) {
+  if (lua_isnoneornil(L, idx)) return def;
+  Options o(L, idx, what, {"dir", "color"});
+  glm::dvec3 dir = def.dir, color = def.color;
+  if (o.has("dir")) {
+    auto v = o.numbers("dir", 3);
+    dir = {v[0], v[1], v[2]};
+  }
+  if (o.has("color")) {
+    auto v = o.numbers("color", -1);
+    if (v.size() == 1) v = {v[0], v[0], v[0]};
+    if (v.size() != 3) throw Error(o.where("color") + ": {r, g, b} or one number expected");
+    color = {v[0], v[1], v[2]};
+  }
+  try {
+    return shading::make_light(dir, color);
+  } catch (const std::exception& e) {
+    throw Error(std::string(what) + ": " + e.what());
+  }
+}
+
+void push_light(lua_State* L, const Light& l) {
+  lua_createtable(L, 0, 2);
+  push_vec3(L, l.dir);
+  lua_setfield(L, -2, "dir");
+  push_vec3(L, l.color);
+  lua_setfield(L, -2, "color");
+}
+
+namespace {
+
+LightingParams& self(lua_State* L) { return check<LightingParams>(L, 1, kLightingType); }
+
+// Reads { name = number | {numbers}, ... } into a parameter map for make_params.
+std::map<std::string, std::vector<double>> read_params(lua_State* L, int idx, const char* model) {
+  std::map<std::string, std::vector<double>> given;
+  if (lua_isnoneornil(L, idx)) return given;
+  if (!lua_istable(L, idx))
+    throw Error(std::string("sn.lighting.") + model + ": parameter table expected, got " + type_name_at(L, idx));
+  idx = absindex(L, idx);
+  lua_pushnil(L);
+  while (lua_next(L, idx)) {
+    if (lua_type(L, -2) != LUA_TSTRING) {
+      lua_pop(L, 2);
+      throw Error(std::string("sn.lighting.") + model + ": parameters must be named (name = value)");
+    }
+    std::string name = lua_tostring(L, -2);
+    given[name] = check_numbers(L, -1, (std::string("sn.lighting.") + model + " parameter '" + name + "'").c_str());
+    lua_pop(L, 1);
+  }
+  return given;
+}
+
+int make(lua_State* L, shading::Model m, int idx) {
+  push(L, std::make_shared<LightingParams>(shading::make_params(m, read_params(L, idx, shading::model_spec(m).name))),
+       kLightingType);
+  return 1;
+}
+
+template <shading::Model M>
+int w_make(lua_State* L) {
+  return make(L, M, 1);
+}
+
+// sn.lighting.new(name, {params}) -- the model chosen by a string (sweeps over models).
+int w_new(lua_State* L) {
+  return make(L, shading::model_spec(check_string(L, 1, "sn.lighting.new model name")).model, 2);
+}
+
+// sn.lighting.models() -> {"phong", "blinn_phong", ...}
+int w_models(lua_State* L) {
+  const auto& specs = shading::model_specs();
+  lua_createtable(L, int(specs.size()), 0);
+  for (std::size_t i = 0; i < specs.size(); ++i) {
+    lua_pushstring(L, specs[i].name);
+    lua_rawseti(L, -2, int(i + 1));
+  }
+  return 1;
+}
+
+// sn.lighting.unknown_name -> a clear error instead of "attempt to call a nil value".
+int w_unknown(lua_State* L) {
+  std::string name = lua_isstring(L, 2) ? lua_tostring(L, 2) : type_name_at(L, 2);
+  throw Error("unknown lighting model 'sn.lighting." + name + "' (valid: " + shading::model_names() +
+              ", or sn.lighting.new(name, params), sn.lighting.models(), sn.lighting.stress)");
+}
+
+void push_value(lua_State* L, const std::array<double, 4>& v, int n) {
+  if (n == 1) {
+    lua_pushnumber(L, v[0]);
+    return;
+  }
+  lua_createtable(L, n, 0);
+  for (int c = 0; c < n; ++c) {
+    lua_pushnumber(L, v[c]);
+    lua_rawseti(L, -2, c + 1);
+  }
+}
+
+// model:params() -> { name = number | {r,g,b} | {t1..t4}, ... }
+int w_params(lua_State* L) {
+  const LightingParams& p = self(L);
+  const auto& s = p.spec();
+  lua_createtable(L, 0, int(s.params.size()));
+  for (std::size_t i = 0; i < s.params.size(); ++i) {
+    push_value(L, p.values[i], s.params[i].components);
+    lua_setfield(L, -2, s.params[i].name);
+  }
+  return 1;
+}
+
+int w_name(lua_State* L) {
+  lua_pushstring(L, self(L).spec().name);
+  return 1;
+}
+
+// model:with{ roughness = 0.5 } -> a new model: this one's parameters with some changed.
+int w_with(lua_State* L) {
+  const LightingParams& p = self(L);
+  const auto& s = p.spec();
+  auto given = read_params(L, 2, s.name);
+  for (std::size_t i = 0; i < s.params.size(); ++i)
+    if (!given.count(s.params[i].name))
+      given[s.params[i].name] = std::vector<double>(p.values[i].begin(), p.values[i].begin() + s.params[i].components);
+  push(L, std::make_shared<LightingParams>(shading::make_params(p.model, given)), kLightingType);
+  return 1;
+}
+
+// model:attributes() -> the G-buffer attributes it reads
+int w_attributes(lua_State* L) {
+  auto a = shading::model_attributes(self(L));
+  lua_createtable(L, int(a.size()), 0);
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    lua_pushstring(L, a[i].c_str());
+    lua_rawseti(L, -2, int(i + 1));
+  }
+  return 1;
+}
+
+glm::dvec3 vec3_option(const Options& o, const char* key, glm::dvec3 def) {
+  if (!o.has(key)) return def;
+  auto v = o.numbers(key, 3);
+  return {v[0], v[1], v[2]};
+}
+
+// model:shade{ normal = {x,y,z}, view = {x,y,z}, light = {dir, color}, base = {r,g,b}, raw = false }
+//   -> {r, g, b} from the double-precision CPU twin
+int w_shade(lua_State* L) {
+  const LightingParams& p = self(L);
+  Options o(L, 2, "model:shade", {"normal", "view", "light", "base", "raw"});
+  int li = o.push("light");
+  Light light = check_light(L, li, "model:shade option 'light'");
+  lua_pop(L, 1);
+  glm::dvec3 n = vec3_option(o, "normal", {0, 0, 0}), v = vec3_option(o, "view", {0, 0, 0});
+  if (!o.has("normal") || !o.has("view")) throw Error("model:shade needs 'normal' and 'view'");
+  glm::dvec3 base = vec3_option(o, "base", glm::dvec3(1.0));
+  push_vec3(L, o.boolean("raw", false) ? shading::shade_raw(p, light, n, v, base) : shading::shade(p, light, n, v, base));
+  return 1;
+}
+
+// model:evaluate{ normals = Buffer, views = Buffer, base_colors = Buffer, targets = Buffer,
+//                 count = n, light = {...}, color = "rgb", raw = false }
+// Shades `count` vec4 samples on the GPU (eval_lighting.comp) into `targets`.
+int w_evaluate(lua_State* L) {
+  const LightingParams& p = self(L);
+  Options o(L, 2, "model:evaluate", {"normals", "views", "base_colors", "targets", "count", "light", "color", "raw"});
+  auto buffer = [&](const char* key, bool required) -> gl::Buffer* {
+    int i = o.push(key);
+    gl::Buffer* b = nullptr;
+    if (!lua_isnil(L, i)) b = &check<gl::Buffer>(L, i, "Buffer");
+    else if (required) throw Error(o.where(key) + " is required (a vec4 Buffer)");
+    lua_pop(L, 1);  // the option table keeps the buffer alive
+    return b;
+  };
+  gl::Buffer* n = buffer("normals", true);
+  gl::Buffer* v = buffer("views", true);
+  gl::Buffer* base = buffer("base_colors", false);
+  gl::Buffer* out = buffer("targets", true);
+  long long count = o.integer("count", (long long)n->count());
+  if (count < 0) throw Error("model:evaluate option 'count' must be >= 0");
+  int li = o.push("light");
+  Light light = check_light(L, li, "model:evaluate option 'light'");
+  lua_pop(L, 1);
+  auto color = nn::parse_color_space(o.string("color", "rgb"));
+  shading::evaluate(p, light, *n, *v, base, *out, std::size_t(count), color, o.boolean("raw", false));
+  return 0;
+}
+
+// model:bound([light]) -> {r,g,b}: no raw output exceeds it
+int w_bound(lua_State* L) {
+  push_vec3(L, shading::upper_bound(self(L), check_light(L, 2, "model:bound light")));
+  return 1;
+}
+
+int w_tostring(lua_State* L) {
+  auto* ud = static_cast<Box<LightingParams>*>(test_type(L, 1, kLightingType));
+  if (!ud || !ud->ptr) lua_pushstring(L, "Lighting (released)");
+  else lua_pushstring(L, ud->ptr->describe().c_str());
+  return 1;
+}
+
+int w_eq(lua_State* L) {
+  auto* a = static_cast<Box<LightingParams>*>(test_type(L, 1, kLightingType));
+  auto* b = static_cast<Box<LightingParams>*>(test_type(L, 2, kLightingType));
+  lua_pushboolean(L, a && b && a->ptr && b->ptr && a->ptr->key() == b->ptr->key());
+  return 1;
+}
+
+void push_counts(lua_State* L, const shading::StressCounts& c) {
+  lua_createtable(L, 0, 4);
+  lua_pushinteger(L, lua_Integer(c.nan)), lua_setfield(L, -2, "nan");
+  lua_pushinteger(L, lua_Integer(c.inf)), lua_setfield(L, -2, "inf");
+  lua_pushinteger(L, lua_Integer(c.negative)), lua_setfield(L, -2, "negative");
+  lua_pushinteger(L, lua_Integer(c.over)), lua_setfield(L, -2, "over");
+}
+
+// sn.lighting.stress(model [, {light, ...}]) -> { samples, gpu = {nan, inf, negative, over},
+//   twin = {...}, encoded_nan, encoded_out_of_range, max_raw, failures }
+int w_stress(lua_State* L) {
+  const LightingParams& p = check<LightingParams>(L, 1, kLightingType);
+  std::vector<Light> lights = shading::stress_lights();
+  if (!lua_isnoneornil(L, 2)) {
+    if (!lua_istable(L, 2)) throw Error("sn.lighting.stress: a list of lights expected as argument 2");
+    lights.clear();
+    for (int i = 1; i <= int(lua_objlen(L, 2)); ++i) {
+      lua_rawgeti(L, 2, i);
+      lights.push_back(check_light(L, -1, "sn.lighting.stress light"));
+      lua_pop(L, 1);
+    }
+  }
+  auto r = shading::stress_test(p, lights);
+  lua_createtable(L, 0, 8);
+  lua_pushinteger(L, lua_Integer(r.samples)), lua_setfield(L, -2, "samples");
+  push_counts(L, r.gpu), lua_setfield(L, -2, "gpu");
+  push_counts(L, r.twin), lua_setfield(L, -2, "twin");
+  lua_pushinteger(L, lua_Integer(r.encoded_nan)), lua_setfield(L, -2, "encoded_nan");
+  lua_pushinteger(L, lua_Integer(r.encoded_out_of_range)), lua_setfield(L, -2, "encoded_out_of_range");
+  lua_pushnumber(L, r.max_raw), lua_setfield(L, -2, "max_raw");
+  lua_pushinteger(L, lua_Integer(r.failures())), lua_setfield(L, -2, "failures");
+  return 1;
+}
+
+// sn.lighting.stress_cases() -> { {label = "ggx roughness=0", model = Lighting}, ... }
+int w_stress_cases(lua_State* L) {
+  auto cases = shading::stress_cases();
+  lua_createtable(L, int(cases.size()), 0);
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    lua_createtable(L, 0, 2);
+    lua_pushstring(L, cases[i].label.c_str());
+    lua_setfield(L, -2, "label");
+    push(L, std::make_shared<LightingParams>(cases[i].params), kLightingType);
+    lua_setfield(L, -2, "model");
+    lua_rawseti(L, -2, int(i + 1));
+  }
+  return 1;
+}
+
+// ---- sn.color ----
+
+nn::ColorSpace check_space(lua_State* L, int idx) {
+  return nn::parse_color_space(check_string(L, idx, "colour space"));
+}
+
+glm::dvec3 check_vec3(lua_State* L, int idx, const char* what) {
+  auto v = check_numbers(L, idx, what, 3);
+  return {v[0], v[1], v[2]};
+}
+
+// sn.color.encode(space, {r,g,b}) -> the colour in `space`; sn.color.decode(space, c) -> {r,g,b}
+int w_encode(lua_State* L) {
+  push_vec3(L, shading::encode_color(check_space(L, 1), check_vec3(L, 2, "sn.color.encode colour")));
+  return 1;
+}
+int w_decode(lua_State* L) {
+  push_vec3(L, shading::decode_color(check_space(L, 1), check_vec3(L, 2, "sn.color.decode colour")));
+  return 1;
+}
+
+// sn.color.convert{ input = Buffer, output = Buffer, space = "hsv", to_rgb = false, count = n } (GPU)
+int w_convert(lua_State* L) {
+  Options o(L, 1, "sn.color.convert", {"input", "output", "space", "to_rgb", "count"});
+  int i = o.push("input");
+  auto& in = check<gl::Buffer>(L, i, "Buffer");
+  int j = o.push("output");
+  auto& out = check<gl::Buffer>(L, j, "Buffer");
+  lua_pop(L, 2);
+  auto space = nn::parse_color_space(o.string("space"));
+  long long count = o.integer("count", (long long)in.count());
+  if (count < 0) throw Error("sn.color.convert option 'count' must be >= 0");
+  shading::convert_colors(in, out, std::size_t(count), space, o.boolean("to_rgb", false));
+  return 0;
+}
+
+}  // namespace
+
+void open_lighting(lua_State* L) {
+  static const luaL_Reg methods[] = {SN_FN("params", w_params),     SN_FN("name", w_name),
+                                     SN_FN("with", w_with),         SN_FN("attributes", w_attributes),
+                                     SN_FN("shade", w_shade),       SN_FN("evaluate", w_evaluate),
+                                     SN_FN("bound", w_bound),       {nullptr, nullptr}};
+  static const luaL_Reg meta[] = {{"__eq", w_eq}, {nullptr, nullptr}};
+  define_box_type<LightingParams>(L, kLightingType, methods, wrap<w_tostring>, meta);
+
+  static const luaL_Reg fns[] = {
+      SN_FN("phong", w_make<shading::Model::phong>),
+      SN_FN("blinn_phong", w_make<shading::Model::blinn_phong>),
+      SN_FN("ggx", w_make<shading::Model::ggx>),
+      SN_FN("toon3", w_make<shading::Model::toon3>),
+      SN_FN("textured_phong", w_make<shading::Model::textured_phong>),
+      SN_FN("new", w_new),
+      SN_FN("models", w_models),
+      SN_FN("stress", w_stress),
+      SN_FN("stress_cases", w_stress_cases),
+      {nullptr, nullptr}};
+  lua_newtable(L);
+  luaL_register(L, nullptr, fns);
+  lua_newtable(L);  // metatable: unknown model names are errors that list the valid ones
+  lua_pushcfunction(L, wrap<w_unknown>);
+  lua_setfield(L, -2, "__index");
+  lua_setmetatable(L, -2);
+  lua_setfield(L, -2, "lighting");
+
+  static const luaL_Reg color_fns[] = {SN_FN("encode", w_encode), SN_FN("decode", w_decode),
+                                       SN_FN("convert", w_convert), {nullptr, nullptr}};
+  lua_newtable(L);
+  luaL_register(L, nullptr, color_fns);
+  lua_setfield(L, -2, "color");
+}
+
+}  // namespace sn::lua

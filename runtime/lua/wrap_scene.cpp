@@ -1,0 +1,351 @@
+// sn.scene{...}: meshes, cameras, an image size and a light; scene:gbuffer{...} ("GBuffer"),
+// scene:dataset{...} (a cached "Dataset"), sn.render_truth(gbuffer, model, light) and the
+// dataset cache counters. scene:render lives in shadenet.scene.lua.
+#include <cstdio>
+
+#include "lua/binding.h"
+#include "lua/lighting_binding.h"
+#include "lua/module.h"
+#include "scene/dataset_cache.h"
+#include "scene/gather.h"
+#include "scene/gbuffer.h"
+#include "scene/scene.h"
+#include "shading/render_truth.h"
+
+namespace sn::lua {
+
+namespace {
+
+constexpr const char* kType = "Scene";
+constexpr const char* kGBufferType = "GBuffer";
+
+// A scene plus what building it noticed (computed normals), for scene:notes().
+struct LuaScene {
+  scene::Scene scene;
+  std::vector<std::string> notes;
+};
+
+LuaScene& self(lua_State* L) { return check<LuaScene>(L, 1, kType); }
+
+std::shared_ptr<scene::Mesh> mesh_at(lua_State* L, int idx, LuaScene& s) {
+  if (lua_type(L, idx) == LUA_TSTRING) {
+    std::string path = lua_tostring(L, idx);
+    auto m = std::make_shared<scene::Mesh>(scene::load_mesh(path));
+    if (m->normals_computed) {
+      std::string note = "mesh file '" + path + "' has no normals (or some are zero); computed area-weighted vertex normals";
+      fprintf(stderr, "note: %s\n", note.c_str());
+      s.notes.push_back(note);
+    }
+    return m;
+  }
+  if (test_type(L, idx, "Mesh")) {
+    auto m = check_shared<scene::Mesh>(L, idx, "Mesh");
+    if (m->normals_computed) s.notes.push_back("mesh '" + m->name + "' had no normals; they were computed");
+    return m;
+  }
+  throw Error("sn.scene option 'mesh': a file path, a Mesh or a list of them expected, got " + type_name_at(L, idx));
+}
+
+std::vector<std::string> string_list(lua_State* L, int idx, const std::string& what) {
+  if (!lua_istable(L, idx)) throw Error(what + ": list of names expected, got " + type_name_at(L, idx));
+  std::vector<std::string> v;
+  for (int i = 1; i <= int(lua_objlen(L, idx)); ++i) {
+    lua_rawgeti(L, idx, i);
+    v.push_back(check_string(L, -1, (what + " element " + std::to_string(i)).c_str()));
+    lua_pop(L, 1);
+  }
+  return v;
+}
+
+// views = { Camera, ... } or { count = 8, elevation = 20, distance = ..., fov = 45 } (framing the meshes)
+std::vector<scene::Camera> read_views(lua_State* L, int idx, const scene::Bounds& b) {
+  if (lua_isnil(L, idx)) return scene::framing_orbit(b);
+  if (!lua_istable(L, idx)) throw Error("sn.scene option 'views': list of cameras or orbit options expected");
+  if (lua_objlen(L, idx) > 0) {
+    std::vector<scene::Camera> cams;
+    for (int i = 1; i <= int(lua_objlen(L, idx)); ++i) {
+      lua_rawgeti(L, idx, i);
+      if (!test_type(L, -1, "Camera"))
+        throw Error("sn.scene option 'views' element " + std::to_string(i) + ": Camera expected, got " +
+                    type_name_at(L, -1));
+      cams.push_back(check<scene::Camera>(L, -1, "Camera"));
+      lua_pop(L, 1);
+    }
+    return cams;
+  }
+  Options o(L, idx, "sn.scene option 'views'", {"count", "elevation", "distance", "fov"});
+  std::optional<double> distance;
+  if (o.has("distance")) distance = o.number("distance");
+  return scene::framing_orbit(b, int(o.integer("count", 8)), o.number("elevation", 20), o.number("fov", 45), distance);
+}
+
+// sn.scene{ mesh = path | Mesh | {...}, size = {w, h}, views = ..., light = {dir, color} }
+int w_new(lua_State* L) {
+  Options o(L, 1, "sn.scene", {"mesh", "size", "views", "light"});
+  auto s = std::make_shared<LuaScene>();
+  int mi = o.push("mesh");
+  if (lua_isnil(L, mi)) throw Error("sn.scene option 'mesh' is required (a path, a Mesh, or a list of them)");
+  if (lua_istable(L, mi)) {
+    int n = int(lua_objlen(L, mi));
+    if (n == 0) throw Error("sn.scene option 'mesh': the list is empty");
+    for (int i = 1; i <= n; ++i) {
+      lua_rawgeti(L, mi, i);
+      s->scene.meshes.push_back(mesh_at(L, lua_gettop(L), *s));
+      lua_pop(L, 1);
+    }
+  } else {
+    s->scene.meshes.push_back(mesh_at(L, mi, *s));
+  }
+  lua_pop(L, 1);
+  if (o.has("size")) {
+    auto v = o.numbers("size", 2);
+    if (v[0] < 1 || v[1] < 1 || v[0] > 16384 || v[1] > 16384 || v[0] != std::floor(v[0]) || v[1] != std::floor(v[1]))
+      throw Error("sn.scene option 'size': two whole numbers in 1..16384 expected");
+    s->scene.width = int(v[0]), s->scene.height = int(v[1]);
+  }
+  int vi = o.push("views");
+  s->scene.views = read_views(L, vi, s->scene.bounds());
+  lua_pop(L, 1);
+  int li = o.push("light");
+  s->scene.light = check_light(L, li, "sn.scene option 'light'");
+  lua_pop(L, 1);
+  push(L, std::move(s), kType);
+  return 1;
+}
+
+int view_index(const Options& o, const LuaScene& s) {
+  long long v = o.integer("view", 1);
+  if (v < 1 || v > (long long)s.scene.views.size())
+    throw Error(o.where("view") + ": " + std::to_string(v) + " is outside the scene's views 1.." +
+                std::to_string(s.scene.views.size()));
+  return int(v - 1);
+}
+
+// scene:gbuffer{ view = 1, attributes = {"normal", "view"} } -> GBuffer
+int w_gbuffer(lua_State* L) {
+  LuaScene& s = self(L);
+  Options o(L, 2, "scene:gbuffer", {"view", "attributes"});
+  int view = view_index(o, s);
+  std::vector<std::string> attributes = {"normal", "view"};
+  if (o.has("attributes")) {
+    int a = o.push("attributes");
+    attributes = string_list(L, a, o.where("attributes"));
+    lua_pop(L, 1);
+  }
+  push(L, std::make_shared<scene::GBuffer>(s.scene.gbuffer(view, attributes)), kGBufferType);
+  return 1;
+}
+
+// scene:dataset{ inputs = {"normal", "view"}, target = model, color = "rgb", views = {1, 2, ...},
+//                split = 0.8, seed = 1, samples = 64149 | "all" } -> Dataset (cached by content)
+int w_dataset(lua_State* L) {
+  LuaScene& s = self(L);
+  Options o(L, 2, "scene:dataset", {"inputs", "target", "color", "views", "split", "seed", "samples"});
+  scene::DatasetRequest r;
+  int t = o.push("target");
+  if (lua_isnil(L, t)) throw Error("scene:dataset option 'target' is required (a lighting model, e.g. sn.lighting.phong{})");
+  r.target = check<shading::LightingParams>(L, t, kLightingType);
+  lua_pop(L, 1);
+  if (o.has("inputs")) {
+    int a = o.push("inputs");
+    r.inputs = string_list(L, a, o.where("inputs"));
+    lua_pop(L, 1);
+  }
+  r.color = nn::parse_color_space(o.string("color", "rgb"));
+  if (o.has("views")) {
+    int v = o.push("views");
+    auto views = check_numbers(L, v, o.where("views").c_str());
+    lua_pop(L, 1);
+    for (double x : views) {
+      if (x < 1 || x > double(s.scene.views.size()) || x != std::floor(x))
+        throw Error(o.where("views") + ": view " + std::to_string(x) + " is outside the scene's views 1.." +
+                    std::to_string(s.scene.views.size()));
+      r.views.push_back(int(x) - 1);
+    }
+  }
+  r.split = o.number("split", 0.8);
+  long long seed = o.integer("seed", 1);
+  if (seed < 0) throw Error(o.where("seed") + " must be >= 0");
+  r.seed = uint64_t(seed);
+  int si = o.push("samples");
+  if (lua_type(L, si) == LUA_TSTRING) {
+    if (std::string(lua_tostring(L, si)) != "all")
+      throw Error(o.where("samples") + ": a positive count or \"all\" expected, got '" + lua_tostring(L, si) + "'");
+    r.samples = 0;
+  } else if (!lua_isnil(L, si)) {
+    long long n = check_integer(L, si, o.where("samples").c_str());
+    if (n < 2) throw Error(o.where("samples") + " must be at least 2 (one training and one validation row), got " +
+                           std::to_string(n));
+    r.samples = std::size_t(n);
+  }
+  lua_pop(L, 1);
+  push(L, scene::cached_dataset(s.scene, r), "Dataset");
+  return 1;
+}
+
+int w_views(lua_State* L) {
+  LuaScene& s = self(L);
+  lua_createtable(L, int(s.scene.views.size()), 0);
+  for (std::size_t i = 0; i < s.scene.views.size(); ++i) {
+    push(L, std::make_shared<scene::Camera>(s.scene.views[i]), "Camera");
+    lua_rawseti(L, -2, int(i + 1));
+  }
+  return 1;
+}
+
+int w_light(lua_State* L) {
+  push_light(L, self(L).scene.light);
+  return 1;
+}
+
+// scene:set_light{ dir = {...}, color = {...} } (what is left out stays)
+int w_set_light(lua_State* L) {
+  LuaScene& s = self(L);
+  s.scene.light = check_light(L, 2, "scene:set_light", s.scene.light);
+  return 0;
+}
+
+int w_size(lua_State* L) {
+  LuaScene& s = self(L);
+  lua_pushinteger(L, s.scene.width), lua_pushinteger(L, s.scene.height);
+  return 2;
+}
+
+int w_bounds(lua_State* L) {
+  auto b = self(L).scene.bounds();
+  push_vec3(L, b.min);
+  push_vec3(L, b.max);
+  return 2;
+}
+
+int w_meshes(lua_State* L) {
+  LuaScene& s = self(L);
+  lua_createtable(L, int(s.scene.meshes.size()), 0);
+  for (std::size_t i = 0; i < s.scene.meshes.size(); ++i) {
+    push(L, s.scene.meshes[i], "Mesh");
+    lua_rawseti(L, -2, int(i + 1));
+  }
+  return 1;
+}
+
+int w_notes(lua_State* L) {
+  LuaScene& s = self(L);
+  lua_createtable(L, int(s.notes.size()), 0);
+  for (std::size_t i = 0; i < s.notes.size(); ++i) {
+    lua_pushstring(L, s.notes[i].c_str());
+    lua_rawseti(L, -2, int(i + 1));
+  }
+  return 1;
+}
+
+int w_tostring(lua_State* L) {
+  auto* ud = static_cast<Box<LuaScene>*>(test_type(L, 1, kType));
+  if (!ud || !ud->ptr) {
+    lua_pushstring(L, "Scene (released)");
+    return 1;
+  }
+  const auto& s = ud->ptr->scene;
+  std::string names;
+  for (const auto& m : s.meshes) names += (names.empty() ? "" : ", ") + m->name;
+  lua_pushfstring(L, "Scene(%s; %d views of %dx%d)", names.c_str(), int(s.views.size()), s.width, s.height);
+  return 1;
+}
+
+// ---- GBuffer ----
+
+scene::GBuffer& gbuffer(lua_State* L, int idx = 1) { return check<scene::GBuffer>(L, idx, kGBufferType); }
+
+// gbuffer:read(name) -> Image (RGBA float: value in .xyz / uv in .xy, coverage in alpha)
+int w_gb_read(lua_State* L) {
+  scene::GBuffer& g = gbuffer(L);
+  int a = g.attachment(check_string(L, 2, "gbuffer:read attribute"));
+  push(L, std::make_shared<io::Image>(g.target->read(a)), "Image");
+  return 1;
+}
+
+int w_gb_attributes(lua_State* L) {
+  scene::GBuffer& g = gbuffer(L);
+  lua_createtable(L, int(g.attributes.size()), 0);
+  for (std::size_t i = 0; i < g.attributes.size(); ++i) {
+    lua_pushstring(L, g.attributes[i].c_str());
+    lua_rawseti(L, -2, int(i + 1));
+  }
+  return 1;
+}
+
+int w_gb_size(lua_State* L) {
+  scene::GBuffer& g = gbuffer(L);
+  lua_pushinteger(L, g.width), lua_pushinteger(L, g.height);
+  return 2;
+}
+
+// gbuffer:target() -> the Target holding one attachment per attribute (for textures = {...})
+int w_gb_target(lua_State* L) {
+  push(L, gbuffer(L).target, "Target");
+  return 1;
+}
+
+// gbuffer:covered() -> number of covered pixels (gathered on the GPU)
+int w_gb_covered(lua_State* L) {
+  lua_pushinteger(L, lua_Integer(scene::gather(gbuffer(L)).count));
+  return 1;
+}
+
+int w_gb_tostring(lua_State* L) {
+  auto* ud = static_cast<Box<scene::GBuffer>*>(test_type(L, 1, kGBufferType));
+  if (!ud || !ud->ptr) {
+    lua_pushstring(L, "GBuffer (released)");
+    return 1;
+  }
+  std::string a;
+  for (const auto& s : ud->ptr->attributes) a += (a.empty() ? "" : ", ") + s;
+  lua_pushfstring(L, "GBuffer(%dx%d: %s)", ud->ptr->width, ud->ptr->height, a.c_str());
+  return 1;
+}
+
+// sn.render_truth(gbuffer, model [, light]) -> Image (RGBA, alpha = coverage)
+int w_render_truth(lua_State* L) {
+  scene::GBuffer& g = gbuffer(L, 1);
+  auto& model = check<shading::LightingParams>(L, 2, kLightingType);
+  shading::Light light = check_light(L, 3, "sn.render_truth light");
+  push(L, std::make_shared<io::Image>(shading::render_truth(g, model, light)), "Image");
+  return 1;
+}
+
+// sn.dataset_stats() -> { builds, hits, gbuffer_renders, cached }
+int w_dataset_stats(lua_State* L) {
+  auto s = scene::dataset_stats();
+  lua_createtable(L, 0, 4);
+  lua_pushinteger(L, lua_Integer(s.builds)), lua_setfield(L, -2, "builds");
+  lua_pushinteger(L, lua_Integer(s.hits)), lua_setfield(L, -2, "hits");
+  lua_pushinteger(L, lua_Integer(s.gbuffer_renders)), lua_setfield(L, -2, "gbuffer_renders");
+  lua_pushinteger(L, lua_Integer(s.cached)), lua_setfield(L, -2, "cached");
+  lua_pushinteger(L, lua_Integer(scene::last_covered_pixels())), lua_setfield(L, -2, "last_covered");
+  return 1;
+}
+
+int w_dataset_cache_clear(lua_State*) {
+  scene::clear_dataset_cache();
+  return 0;
+}
+
+}  // namespace
+
+void open_scene(lua_State* L) {
+  static const luaL_Reg methods[] = {SN_FN("gbuffer", w_gbuffer), SN_FN("dataset", w_dataset),
+                                     SN_FN("views", w_views),     SN_FN("light", w_light),
+                                     SN_FN("set_light", w_set_light), SN_FN("size", w_size),
+                                     SN_FN("bounds", w_bounds),   SN_FN("meshes", w_meshes),
+                                     SN_FN("notes", w_notes),     {nullptr, nullptr}};
+  define_box_type<LuaScene>(L, kType, methods, wrap<w_tostring>);
+  static const luaL_Reg gb_methods[] = {SN_FN("read", w_gb_read),       SN_FN("attributes", w_gb_attributes),
+                                        SN_FN("size", w_gb_size),       SN_FN("target", w_gb_target),
+                                        SN_FN("covered", w_gb_covered), {nullptr, nullptr}};
+  define_box_type<scene::GBuffer>(L, kGBufferType, gb_methods, wrap<w_gb_tostring>);
+  static const luaL_Reg fns[] = {SN_FN("scene", w_new), SN_FN("render_truth", w_render_truth),
+                                 SN_FN("dataset_stats", w_dataset_stats),
+                                 SN_FN("dataset_cache_clear", w_dataset_cache_clear), {nullptr, nullptr}};
+  luaL_register(L, nullptr, fns);
+}
+
+}  // namespace sn::lua

@@ -1,0 +1,131 @@
+#include "scene/dataset_cache.h"
+
+#include <cstdio>
+#include <cstring>
+#include <list>
+#include <utility>
+
+#include "gl/shader_source.h"
+#include "scene/gbuffer.h"
+
+namespace sn::scene {
+
+namespace {
+
+struct Fnv {
+  uint64_t h = 1469598103934665603ull;
+  void bytes(const void* p, std::size_t n) {
+    auto* c = static_cast<const unsigned char*>(p);
+    for (std::size_t i = 0; i < n; ++i) h = (h ^ c[i]) * 1099511628211ull;
+  }
+  template <class T>
+  void vec(const std::vector<T>& v) {
+    uint64_t n = v.size();
+    bytes(&n, sizeof n);
+    if (!v.empty()) bytes(v.data(), v.size() * sizeof(T));
+  }
+};
+
+std::string hex64(uint64_t v) {
+  char b[20];
+  snprintf(b, sizeof b, "%016llx", (unsigned long long)v);
+  return b;
+}
+
+std::string hexd(double v) {
+  char b[40];
+  snprintf(b, sizeof b, "%a", v);
+  return b;
+}
+
+std::string vec3_text(const glm::dvec3& v) { return hexd(v.x) + "," + hexd(v.y) + "," + hexd(v.z); }
+
+// The shaders every dataset number passes through; an edit to any of them is a new dataset.
+std::string shader_hash() {
+  Fnv f;
+  for (const char* file : {"mesh.vert", "gbuffer.frag", "gather.comp", "eval_lighting.comp"}) {
+    std::string text = gl::preprocess(file, {}).text;
+    f.bytes(text.data(), text.size());
+  }
+  return hex64(f.h);
+}
+
+struct Cache {
+  std::list<std::pair<std::string, std::shared_ptr<nn::Dataset>>> entries;  // most recent first
+  std::size_t builds = 0, hits = 0;
+};
+Cache& cache() {
+  static Cache c;
+  return c;
+}
+
+}  // namespace
+
+uint64_t mesh_content_hash(const Mesh& m) {
+  Fnv f;
+  f.vec(m.positions);
+  f.vec(m.normals);
+  f.vec(m.uvs);
+  f.vec(m.indices);
+  uint8_t flags[2] = {uint8_t(m.has_uvs), uint8_t(m.base_color.has_value())};
+  f.bytes(flags, 2);
+  if (m.base_color) {
+    int dims[3] = {m.base_color->width, m.base_color->height, m.base_color->channels};
+    f.bytes(dims, sizeof dims);
+    f.vec(m.base_color->pixels);
+  }
+  return f.h;
+}
+
+std::string dataset_key(const Scene& s, const DatasetRequest& r) {
+  std::string k = "meshes";
+  for (const auto& m : s.meshes) k += " " + hex64(mesh_content_hash(*m));
+  k += "\nsize " + std::to_string(s.width) + "x" + std::to_string(s.height);
+  std::vector<int> views = r.views;
+  if (views.empty())
+    for (int i = 0; i < int(s.views.size()); ++i) views.push_back(i);
+  k += "\nviews";
+  for (int v : views) {
+    if (v < 0 || v >= int(s.views.size())) continue;  // build_dataset reports it
+    const Camera& c = s.views[v];
+    k += "\n  " + vec3_text(c.eye()) + " " + vec3_text(c.target()) + " " + vec3_text(c.up()) + " " +
+         hexd(c.fov_y()) + " " + hexd(c.aspect_for(s.width, s.height)) + " " + hexd(c.near()) + " " + hexd(c.far());
+  }
+  k += "\nmodel " + r.target.key();
+  k += "\n" + shading::light_key(s.light);
+  k += "\ninputs";
+  for (const auto& a : r.inputs) k += " " + a;
+  k += "\ncolor " + std::string(nn::color_space_name(r.color));
+  k += "\nsplit " + hexd(r.split) + " seed " + std::to_string(r.seed) + " samples " + std::to_string(r.samples);
+  k += "\nshaders " + shader_hash();
+  return k;
+}
+
+std::shared_ptr<nn::Dataset> cached_dataset(const Scene& s, const DatasetRequest& r) {
+  std::string key = dataset_key(s, r);
+  Cache& c = cache();
+  for (auto it = c.entries.begin(); it != c.entries.end(); ++it) {
+    if (it->first == key) {
+      c.entries.splice(c.entries.begin(), c.entries, it);  // most recently used
+      ++c.hits;
+      return c.entries.front().second;
+    }
+  }
+  auto d = build_dataset(s, r);
+  Fnv f;
+  f.bytes(key.data(), key.size());
+  d->key = "dataset-" + hex64(f.h);
+  ++c.builds;
+  c.entries.emplace_front(key, d);
+  if (c.entries.size() > kDatasetCacheCapacity) c.entries.pop_back();
+  return d;
+}
+
+DatasetStats dataset_stats() {
+  const Cache& c = cache();
+  return {c.builds, c.hits, gbuffer_renders(), c.entries.size()};
+}
+
+void clear_dataset_cache() { cache().entries.clear(); }
+
+}  // namespace sn::scene

@@ -1,0 +1,105 @@
+#include "scene/gbuffer.h"
+
+#include <epoxy/gl.h>
+
+#include <algorithm>
+#include <cctype>
+#include <stdexcept>
+
+#include "scene/camera.h"
+#include "scene/gpu_mesh.h"
+#include "scene/mesh.h"
+
+namespace sn::scene {
+
+namespace {
+
+std::size_t g_renders = 0;
+
+// The #define that switches each attribute on in shaders/gbuffer.frag.
+std::string define_name(const std::string& attribute) {
+  std::string d = "ATTR_";
+  for (char c : attribute) d += char(std::toupper(static_cast<unsigned char>(c)));
+  return d;
+}
+
+std::string valid_names() {
+  std::string s;
+  for (const auto& n : gbuffer_attribute_names()) s += (s.empty() ? "" : ", ") + n;
+  return s;
+}
+
+}  // namespace
+
+const std::vector<std::string>& gbuffer_attribute_names() {
+  static const std::vector<std::string> names = {"normal", "view", "position", "world_position", "uv", "base_color"};
+  return names;
+}
+
+int attribute_width(const std::string& name) {
+  const auto& names = gbuffer_attribute_names();
+  if (std::find(names.begin(), names.end(), name) == names.end())
+    throw std::invalid_argument("unknown G-buffer attribute '" + name + "' (valid: " + valid_names() + ")");
+  return name == "uv" ? 2 : 3;
+}
+
+int GBuffer::attachment(const std::string& name) const {
+  for (std::size_t i = 0; i < attributes.size(); ++i)
+    if (attributes[i] == name) return int(i);
+  std::string held;
+  for (const auto& a : attributes) held += (held.empty() ? "" : ", ") + a;
+  throw std::invalid_argument("this G-buffer has no attribute '" + name + "' (it holds: " + held + ")");
+}
+
+void check_attributes(const std::vector<std::string>& attributes) {
+  if (attributes.empty()) throw std::invalid_argument("a G-buffer needs at least one attribute (valid: " + valid_names() + ")");
+  for (std::size_t i = 0; i < attributes.size(); ++i) {
+    attribute_width(attributes[i]);
+    for (std::size_t j = 0; j < i; ++j)
+      if (attributes[j] == attributes[i])
+        throw std::invalid_argument("G-buffer attribute '" + attributes[i] + "' is listed twice");
+  }
+}
+
+GBuffer render_gbuffer(const std::vector<const Mesh*>& meshes, const Camera& camera, int width, int height,
+                       const std::vector<std::string>& attributes) {
+  check_attributes(attributes);
+  if (meshes.empty()) throw std::invalid_argument("a G-buffer needs at least one mesh");
+  for (const Mesh* m : meshes) {
+    for (const auto& a : attributes) {
+      if (a == "uv" && !m->has_uvs)
+        throw std::invalid_argument("attribute 'uv': mesh '" + m->name +
+                                    "' has no texture coordinates (TEXCOORD_0); choose inputs it has, e.g. "
+                                    "\"normal\", \"view\", \"position\"");
+      if (a == "base_color" && !m->base_color)
+        throw std::invalid_argument("attribute 'base_color': mesh '" + m->name +
+                                    "' has no base-colour texture (a textured model needs one, e.g. Duck.gltf)");
+    }
+  }
+  gl::ProgramDesc desc;
+  desc.vertex = "mesh.vert";
+  desc.fragment = "gbuffer.frag";
+  for (std::size_t i = 0; i < attributes.size(); ++i) desc.defines[define_name(attributes[i])] = std::to_string(i);
+  auto prog = gl::get_program(desc);
+
+  GBuffer g;
+  g.target = std::make_shared<gl::RenderTarget>(width, height, int(attributes.size()));
+  g.attributes = attributes;
+  g.width = width;
+  g.height = height;
+  g.target->bind();
+  g.target->clear({0, 0, 0, 0});
+  const double aspect = camera.aspect_for(width, height);
+  for (const Mesh* m : meshes) {
+    GpuMesh& gpu = upload(*m);
+    set_standard_uniforms(*prog, camera, aspect, glm::dmat4(1.0), gpu);
+    draw(*prog, gpu, Cull::none);
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  ++g_renders;
+  return g;
+}
+
+std::size_t gbuffer_renders() { return g_renders; }
+
+}  // namespace sn::scene

@@ -1,0 +1,54 @@
+#include "shading/render_truth.h"
+
+#include <epoxy/gl.h>
+
+#include <stdexcept>
+
+#include "gl/program.h"
+#include "gl/render_target.h"
+#include "shading/lighting_gpu.h"
+
+namespace sn::shading {
+
+std::vector<std::string> model_attributes(const LightingParams& p) {
+  std::vector<std::string> a = {"normal", "view"};
+  if (p.spec().textured) a.push_back("base_color");
+  return a;
+}
+
+io::Image render_truth(const scene::GBuffer& g, const LightingParams& p, const Light& light) {
+  for (const auto& a : model_attributes(p)) {
+    bool held = false;
+    for (const auto& h : g.attributes) held = held || h == a;
+    if (!held)
+      throw std::invalid_argument(std::string("lighting model ") + p.spec().name + " reads the G-buffer attribute '" +
+                                  a + "', which this G-buffer does not hold");
+  }
+  gl::ProgramDesc desc;
+  desc.vertex = "fullscreen.vert";
+  desc.fragment = "shade_truth.frag";
+  desc.defines = lighting_defines(p);
+  auto prog = gl::get_program(desc);
+  set_lighting_uniforms(*prog, p, light);
+  const char* samplers[] = {"u_normal", "u_view", "u_base_color"};
+  auto names = model_attributes(p);
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    glBindTextureUnit(GLuint(i), g.target->color_texture(g.attachment(names[i])));
+    prog->set_uniform(samplers[i], {double(i)});
+  }
+  gl::RenderTarget out(g.width, g.height, 1);
+  out.bind();
+  out.clear({0, 0, 0, 0});
+  glDisable(GL_DEPTH_TEST);
+  static GLuint vao = 0;  // core profile draws need a VAO, even one without buffers
+  if (!vao || !glIsVertexArray(vao)) glCreateVertexArrays(1, &vao);
+  glUseProgram(prog->id());
+  glBindVertexArray(vao);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+  glEnable(GL_DEPTH_TEST);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  return out.read(0);
+}
+
+}  // namespace sn::shading

@@ -1,0 +1,54 @@
+// The G-buffer pass (runtime/scene/gbuffer.cpp): writes only the attributes asked for, each to
+// the attachment its ATTR_<NAME> define names, value in .xyz (uv in .xy) and coverage 1 in .w
+// (the target is cleared to 0, so background pixels read coverage 0).
+#include "lighting/common.glsl"
+
+in vec3 v_world_position;
+in vec3 v_world_normal;
+in vec2 v_uv;
+in vec3 v_object_position;
+
+uniform vec3 u_eye;
+uniform sampler2D u_base_color;
+
+#ifdef ATTR_NORMAL
+layout(location = ATTR_NORMAL) out vec4 o_normal;
+#endif
+#ifdef ATTR_VIEW
+layout(location = ATTR_VIEW) out vec4 o_view;
+#endif
+#ifdef ATTR_POSITION
+layout(location = ATTR_POSITION) out vec4 o_position;
+#endif
+#ifdef ATTR_WORLD_POSITION
+layout(location = ATTR_WORLD_POSITION) out vec4 o_world_position;
+#endif
+#ifdef ATTR_UV
+layout(location = ATTR_UV) out vec4 o_uv;
+#endif
+#ifdef ATTR_BASE_COLOR
+layout(location = ATTR_BASE_COLOR) out vec4 o_base_color;
+#endif
+
+void main() {
+#ifdef ATTR_NORMAL
+  // Two-sided: a back face (an open sheet seen from behind) shows the side facing the eye.
+  vec3 n = safe_normalize(v_world_normal);
+  o_normal = vec4(gl_FrontFacing ? n : -n, 1.0);
+#endif
+#ifdef ATTR_VIEW
+  o_view = vec4(safe_normalize(u_eye - v_world_position), 1.0);
+#endif
+#ifdef ATTR_POSITION
+  o_position = vec4(v_object_position, 1.0);
+#endif
+#ifdef ATTR_WORLD_POSITION
+  o_world_position = vec4(v_world_position, 1.0);
+#endif
+#ifdef ATTR_UV
+  o_uv = vec4(v_uv, 0.0, 1.0);
+#endif
+#ifdef ATTR_BASE_COLOR
+  o_base_color = vec4(texture(u_base_color, v_uv).rgb, 1.0);
+#endif
+}
