@@ -28,6 +28,9 @@ int open_core(lua_State* L) {
   open_terminal(L);
   open_files(L);
   open_target(L);
+  open_mesh(L);
+  open_camera(L);
+  open_draw(L);
   open_mlp(L);
   open_dataset(L);
   open_train(L);

@@ -18,6 +18,7 @@ void open_files(lua_State* L);
 void open_target(lua_State* L);
 void open_mesh(lua_State* L);
 void open_camera(lua_State* L);
+void open_draw(lua_State* L);
 void open_context(lua_State* L);
 void open_mlp(lua_State* L);
 void open_dataset(lua_State* L);

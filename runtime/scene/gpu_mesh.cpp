@@ -1,0 +1,151 @@
+#include "scene/gpu_mesh.h"
+
+#include <epoxy/gl.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+#include <glm/gtc/type_ptr.hpp>
+
+namespace sn::scene {
+
+namespace {
+
+std::atomic<std::size_t> g_uploads{0};
+
+struct Vertex {
+  glm::vec3 position, normal;
+  glm::vec2 uv;
+};
+
+// RGBA8 texels of an image with 1-4 channels (grey -> rgb, missing alpha -> 1). Rows stay top
+// first, so texture(v = 0) is the image's top row: glTF's UV convention, no flip needed.
+std::vector<unsigned char> rgba8(const io::Image& img) {
+  std::vector<unsigned char> out(size_t(img.width) * img.height * 4);
+  auto q = [](float v) { return (unsigned char)(std::isfinite(v) ? std::clamp(v, 0.f, 1.f) * 255.f + 0.5f : 0.f); };
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x) {
+      unsigned char* o = &out[(size_t(y) * img.width + x) * 4];
+      int c = img.channels;
+      float r = img.at(x, y, 0);
+      float g = c >= 3 ? img.at(x, y, 1) : r, b = c >= 3 ? img.at(x, y, 2) : r;
+      float a = c == 2 ? img.at(x, y, 1) : c == 4 ? img.at(x, y, 3) : 1.f;
+      o[0] = q(r), o[1] = q(g), o[2] = q(b), o[3] = q(a);
+    }
+  return out;
+}
+
+}  // namespace
+
+GpuMesh::GpuMesh(const Mesh& m) {
+  validate(m);
+  std::vector<Vertex> verts(m.positions.size());
+  for (size_t i = 0; i < verts.size(); ++i) verts[i] = {m.positions[i], m.normals[i], m.uvs[i]};
+  index_count_ = m.indices.size();
+
+  glCreateBuffers(1, &vertices_);
+  glNamedBufferStorage(vertices_, GLsizeiptr(std::max<size_t>(verts.size(), 1) * sizeof(Vertex)),
+                       verts.empty() ? nullptr : verts.data(), 0);
+  glCreateBuffers(1, &indices_);
+  glNamedBufferStorage(indices_, GLsizeiptr(std::max<size_t>(index_count_, 1) * 4),
+                       index_count_ ? m.indices.data() : nullptr, 0);
+  glCreateVertexArrays(1, &vao_);
+  glVertexArrayVertexBuffer(vao_, 0, vertices_, 0, sizeof(Vertex));
+  glVertexArrayElementBuffer(vao_, indices_);
+  const GLuint offsets[3] = {offsetof(Vertex, position), offsetof(Vertex, normal), offsetof(Vertex, uv)};
+  const GLint sizes[3] = {3, 3, 2};
+  for (GLuint a = 0; a < 3; ++a) {
+    glEnableVertexArrayAttrib(vao_, a);
+    glVertexArrayAttribFormat(vao_, a, sizes[a], GL_FLOAT, GL_FALSE, offsets[a]);
+    glVertexArrayAttribBinding(vao_, a, 0);
+  }
+
+  has_texture_ = m.base_color.has_value();
+  io::Image white(1, 1, 4, 1.f);
+  const io::Image& img = has_texture_ ? *m.base_color : white;
+  std::vector<unsigned char> texels = rgba8(img);
+  int levels = 1;
+  for (int s = std::max(img.width, img.height); s > 1; s /= 2) ++levels;
+  glCreateTextures(GL_TEXTURE_2D, 1, &texture_);
+  glTextureStorage2D(texture_, levels, GL_RGBA8, img.width, img.height);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTextureSubImage2D(texture_, 0, 0, 0, img.width, img.height, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
+  glGenerateTextureMipmap(texture_);
+  // glTF's default sampler: repeat, trilinear.
+  glTextureParameteri(texture_, GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glTextureParameteri(texture_, GL_TEXTURE_WRAP_T, GL_REPEAT);
+  glTextureParameteri(texture_, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTextureParameteri(texture_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  ++g_uploads;
+}
+
+GpuMesh::~GpuMesh() {
+  glDeleteVertexArrays(1, &vao_);
+  glDeleteBuffers(1, &vertices_);
+  glDeleteBuffers(1, &indices_);
+  glDeleteTextures(1, &texture_);
+}
+
+std::size_t GpuMesh::uploads() { return g_uploads; }
+
+GpuMesh& upload(const Mesh& m) {
+  if (!m.gpu) m.gpu = std::make_shared<GpuMesh>(m);
+  return *m.gpu;
+}
+
+namespace {
+
+std::vector<double> numbers(const glm::dmat4& m) {
+  const double* p = glm::value_ptr(m);
+  return std::vector<double>(p, p + 16);
+}
+std::vector<double> numbers(const glm::dmat3& m) {
+  const double* p = glm::value_ptr(m);
+  return std::vector<double>(p, p + 9);
+}
+
+}  // namespace
+
+void set_standard_uniforms(gl::Program& p, const Camera& camera, double aspect, const glm::dmat4& model,
+                           const GpuMesh& mesh) {
+  auto set = [&](const char* name, const std::vector<double>& v) {
+    if (p.uniform(name)) p.set_uniform(name, v);
+  };
+  set("u_model", numbers(model));
+  set("u_view", numbers(camera.view()));
+  set("u_proj", numbers(camera.projection(aspect)));
+  if (p.uniform("u_normal_matrix")) {
+    glm::dmat3 linear(model);
+    if (!(std::abs(glm::determinant(linear)) > 1e-300))
+      throw std::invalid_argument("draw: the model matrix is singular, so normals cannot be transformed");
+    set("u_normal_matrix", numbers(glm::transpose(glm::inverse(linear))));
+  }
+  const glm::dvec3& e = camera.eye();
+  set("u_eye", {e.x, e.y, e.z});
+  if (p.uniform("u_base_color")) {
+    glBindTextureUnit(kBaseColorUnit, mesh.base_color_texture());
+    set("u_base_color", {double(kBaseColorUnit)});
+  }
+  set("u_has_base_color", {mesh.has_base_color() ? 1.0 : 0.0});
+}
+
+void draw(gl::Program& p, const GpuMesh& mesh, Cull cull) {
+  if (p.is_compute()) throw std::invalid_argument("draw needs a vertex + fragment program, got compute " + p.name());
+  if (cull == Cull::none) {
+    glDisable(GL_CULL_FACE);
+  } else {
+    glEnable(GL_CULL_FACE);
+    glCullFace(cull == Cull::back ? GL_BACK : GL_FRONT);
+    glFrontFace(GL_CCW);
+  }
+  glUseProgram(p.id());
+  glBindVertexArray(mesh.vao());
+  glDrawElements(GL_TRIANGLES, GLsizei(mesh.index_count()), GL_UNSIGNED_INT, nullptr);
+  glBindVertexArray(0);
+  glDisable(GL_CULL_FACE);
+}
+
+}  // namespace sn::scene

@@ -1,0 +1,55 @@
+// A Mesh on the GPU: one interleaved vertex buffer (location 0 position, 1 normal, 2 uv), one
+// uint32 index buffer, one VAO and the base-colour texture (a 1x1 white one when the mesh has
+// none). Uploaded once per Mesh and cached on it, so drawing a mesh again costs no transfer.
+#pragma once
+#include <cstddef>
+#include <memory>
+
+#include <glm/glm.hpp>
+
+#include "gl/program.h"
+#include "scene/camera.h"
+#include "scene/mesh.h"
+
+namespace sn::scene {
+
+class GpuMesh {
+ public:
+  explicit GpuMesh(const Mesh& m);
+  ~GpuMesh();
+  GpuMesh(const GpuMesh&) = delete;
+  GpuMesh& operator=(const GpuMesh&) = delete;
+
+  std::size_t index_count() const { return index_count_; }
+  unsigned vao() const { return vao_; }
+  unsigned base_color_texture() const { return texture_; }
+  bool has_base_color() const { return has_texture_; }
+
+  // How many GpuMesh objects were ever created (tests check that a second draw reuses one).
+  static std::size_t uploads();
+
+ private:
+  unsigned vao_ = 0, vertices_ = 0, indices_ = 0, texture_ = 0;
+  std::size_t index_count_ = 0;
+  bool has_texture_ = false;
+};
+
+// The GPU copy of `m`, uploading it on first use (cached in m.gpu).
+GpuMesh& upload(const Mesh& m);
+
+enum class Cull { none, back, front };
+
+// The texture unit the mesh's base-colour texture is bound to for `u_base_color`.
+constexpr int kBaseColorUnit = 15;
+
+// Sets the standard uniforms `p` declares (any it does not declare are skipped):
+//   mat4 u_model, u_view, u_proj; mat3 u_normal_matrix (inverse transpose of u_model's 3x3);
+//   vec3 u_eye (world space); sampler2D u_base_color; bool u_has_base_color.
+void set_standard_uniforms(gl::Program& p, const Camera& camera, double aspect, const glm::dmat4& model,
+                           const GpuMesh& mesh);
+
+// Draws the mesh's triangles with `p` into whatever framebuffer is bound (depth test as set by
+// RenderTarget::bind). Throws for a compute program.
+void draw(gl::Program& p, const GpuMesh& mesh, Cull cull = Cull::none);
+
+}  // namespace sn::scene

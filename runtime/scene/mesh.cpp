@@ -1,0 +1,665 @@
+#include "scene/mesh.h"
+
+#include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imageio.h>
+// Debian's libtinygltf.so carries the implementation (built with its default options), so the
+// header is only declarations here: no TINYGLTF_IMPLEMENTATION, no option macros that would
+// change the classes' layout.
+#include <tiny_gltf.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+namespace sn::scene {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Every load error names the file first.
+struct FileError : std::runtime_error {
+  FileError(const std::string& path, const std::string& reason)
+      : std::runtime_error("mesh file '" + path + "': " + reason) {}
+};
+
+// tinygltf's reasons can quote kilobytes of the file (a cut base64 buffer); keep the start.
+std::string short_reason(std::string s) {
+  constexpr size_t kMax = 240;
+  if (s.size() > kMax) s = s.substr(0, kMax) + "...";
+  while (!s.empty() && (s.back() == '\n' || s.back() == '\r' || s.back() == ' ')) s.pop_back();
+  return s;
+}
+
+std::vector<unsigned char> read_whole_file(const std::string& path) {
+  std::error_code ec;
+  if (!fs::exists(path, ec)) throw FileError(path, "does not exist");
+  if (fs::is_directory(path, ec)) throw FileError(path, "is a directory, not a file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw FileError(path, "cannot be opened for reading");
+  std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) throw FileError(path, "read failed");
+  return bytes;
+}
+
+// tinygltf hands every image's encoded bytes (data: URI, external file or .glb buffer view) to
+// this callback; we keep them as they are and decode only the texture the mesh uses, with
+// OpenImageIO, instead of letting stb decode every image up front.
+bool keep_image_bytes(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
+                      const unsigned char* bytes, int size, void*) {
+  image->image.assign(bytes, bytes + std::max(size, 0));
+  image->as_is = true;
+  return true;
+}
+
+// Reads accessors with every check a malformed file could need: indices of views and
+// buffers, byte ranges inside their buffers, component types the attribute may use.
+class AccessorReader {
+ public:
+  // An accessor without a buffer view is all zeros (before sparse values); cap its size so a
+  // corrupt count cannot ask for gigabytes.
+  static constexpr size_t kMaxZeroFilled = size_t(1) << 26;
+
+  AccessorReader(const tinygltf::Model& m, const std::string& path) : m_(m), path_(path) {}
+
+  // `count` x `components` values as doubles; integer components of normalised accessors are
+  // mapped to [0,1] / [-1,1] as the glTF specification says.
+  std::vector<double> read(int index, int components, const std::string& what, bool integer_only = false) const {
+    const tinygltf::Accessor& a = accessor(index, what);
+    int n = tinygltf::GetNumComponentsInType(uint32_t(a.type));
+    if (n != components)
+      throw FileError(path_, what + " (accessor " + std::to_string(index) + ") has " + std::to_string(n) +
+                                 " components, expected " + std::to_string(components));
+    if (integer_only && !is_unsigned_integer(a.componentType))
+      throw FileError(path_, what + " (accessor " + std::to_string(index) +
+                                 ") must be unsigned byte, short or int, got component type " +
+                                 std::to_string(a.componentType));
+    int csize = tinygltf::GetComponentSizeInBytes(uint32_t(a.componentType));
+    if (csize <= 0)
+      throw FileError(path_, what + " (accessor " + std::to_string(index) + ") has unknown component type " +
+                                 std::to_string(a.componentType));
+    // Check every range before allocating: `count` comes from the file.
+    const unsigned char* base = nullptr;
+    size_t stride = 0;
+    if (a.bufferView >= 0) {
+      const tinygltf::BufferView& bv = view(a.bufferView, what);
+      size_t elem = size_t(csize) * size_t(components);
+      stride = bv.byteStride ? bv.byteStride : elem;
+      if (stride < elem)
+        throw FileError(path_, what + ": buffer view " + std::to_string(a.bufferView) + " has byteStride " +
+                                   std::to_string(stride) + ", smaller than one element (" + std::to_string(elem) +
+                                   " bytes)");
+      base = view_bytes(bv, a.bufferView, a.byteOffset, stride, elem, a.count, what);
+    } else if (a.count > kMaxZeroFilled) {
+      throw FileError(path_, what + " (accessor " + std::to_string(index) + ") has no buffer view and " +
+                                 std::to_string(a.count) + " elements (at most " + std::to_string(kMaxZeroFilled) +
+                                 " are zero-filled)");
+    }
+    std::vector<double> out(a.count * size_t(components), 0.0);
+    if (base) {
+      for (size_t i = 0; i < a.count; ++i)
+        for (int c = 0; c < components; ++c)
+          out[i * components + c] = component(base + i * stride + size_t(c) * csize, a.componentType, a.normalized);
+    }
+    if (a.sparse.isSparse) apply_sparse(a, components, csize, out, what);
+    return out;
+  }
+
+  const tinygltf::Accessor& accessor(int index, const std::string& what) const {
+    if (index < 0 || size_t(index) >= m_.accessors.size())
+      throw FileError(path_, what + " refers to accessor " + std::to_string(index) + ", but the file has " +
+                                 std::to_string(m_.accessors.size()));
+    return m_.accessors[size_t(index)];
+  }
+
+ private:
+  static bool is_unsigned_integer(int t) {
+    return t == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE || t == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ||
+           t == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+  }
+
+  const tinygltf::BufferView& view(int index, const std::string& what) const {
+    if (index < 0 || size_t(index) >= m_.bufferViews.size())
+      throw FileError(path_, what + " refers to buffer view " + std::to_string(index) + ", but the file has " +
+                                 std::to_string(m_.bufferViews.size()));
+    return m_.bufferViews[size_t(index)];
+  }
+
+  // Start of `count` elements of `elem` bytes every `stride` bytes at `offset` into view `bv`,
+  // after checking the whole range lies inside the view and the view inside its buffer.
+  const unsigned char* view_bytes(const tinygltf::BufferView& bv, int bv_index, size_t offset, size_t stride,
+                                  size_t elem, size_t count, const std::string& what) const {
+    if (bv.buffer < 0 || size_t(bv.buffer) >= m_.buffers.size())
+      throw FileError(path_, what + ": buffer view " + std::to_string(bv_index) + " refers to buffer " +
+                                 std::to_string(bv.buffer) + ", but the file has " + std::to_string(m_.buffers.size()));
+    const auto& data = m_.buffers[size_t(bv.buffer)].data;
+    if (bv.byteOffset > data.size() || bv.byteLength > data.size() - bv.byteOffset)
+      throw FileError(path_, what + ": buffer view " + std::to_string(bv_index) + " (bytes " +
+                                 std::to_string(bv.byteOffset) + ".." + std::to_string(bv.byteOffset + bv.byteLength) +
+                                 ") reaches past the end of buffer " + std::to_string(bv.buffer) + " (" +
+                                 std::to_string(data.size()) + " bytes)");
+    // count is untrusted: compare before multiplying so a huge count cannot wrap around.
+    if (count > 0 && (count - 1 > bv.byteLength / stride ||
+                      offset + (count - 1) * stride + elem > bv.byteLength))
+      throw FileError(path_, what + ": " + std::to_string(count) + " elements at byte offset " +
+                                 std::to_string(offset) + " reach past the end of buffer view " +
+                                 std::to_string(bv_index) + " (" + std::to_string(bv.byteLength) + " bytes)");
+    return data.data() + bv.byteOffset + offset;
+  }
+
+  static double component(const unsigned char* p, int type, bool normalized) {
+    switch (type) {
+      case TINYGLTF_COMPONENT_TYPE_FLOAT: { float v; std::memcpy(&v, p, 4); return v; }
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return normalized ? p[0] / 255.0 : p[0];
+      case TINYGLTF_COMPONENT_TYPE_BYTE: {
+        double v = double(int8_t(p[0]));
+        return normalized ? std::max(v / 127.0, -1.0) : v;
+      }
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+        uint16_t v; std::memcpy(&v, p, 2);
+        return normalized ? v / 65535.0 : v;
+      }
+      case TINYGLTF_COMPONENT_TYPE_SHORT: {
+        int16_t v; std::memcpy(&v, p, 2);
+        return normalized ? std::max(v / 32767.0, -1.0) : v;
+      }
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
+        uint32_t v; std::memcpy(&v, p, 4);
+        return normalized ? v / 4294967295.0 : v;
+      }
+      default: return std::nan("");
+    }
+  }
+
+  void apply_sparse(const tinygltf::Accessor& a, int components, int csize, std::vector<double>& out,
+                    const std::string& what) const {
+    const auto& s = a.sparse;
+    std::string w = what + " (sparse)";
+    if (s.count < 0 || size_t(s.count) > a.count)
+      throw FileError(path_, w + ": " + std::to_string(s.count) + " sparse values for " + std::to_string(a.count) +
+                                 " elements");
+    int isize = tinygltf::GetComponentSizeInBytes(uint32_t(s.indices.componentType));
+    if (!is_unsigned_integer(s.indices.componentType))
+      throw FileError(path_, w + ": sparse indices must be unsigned integers");
+    const auto& iv = view(s.indices.bufferView, w);
+    const auto& vv = view(s.values.bufferView, w);
+    size_t elem = size_t(csize) * components;
+    const unsigned char* ip = view_bytes(iv, s.indices.bufferView, size_t(std::max(s.indices.byteOffset, 0)),
+                                         size_t(isize), size_t(isize), size_t(s.count), w);
+    const unsigned char* vp = view_bytes(vv, s.values.bufferView, size_t(std::max(s.values.byteOffset, 0)), elem,
+                                         elem, size_t(s.count), w);
+    for (int k = 0; k < s.count; ++k) {
+      double target = component(ip + size_t(k) * isize, s.indices.componentType, false);
+      if (!(target >= 0 && target < double(a.count)))
+        throw FileError(path_, w + ": sparse index " + std::to_string((long long)target) + " outside 0.." +
+                                   std::to_string(a.count - 1));
+      for (int c = 0; c < components; ++c)
+        out[size_t(target) * components + c] = component(vp + size_t(k) * elem + size_t(c) * csize, a.componentType,
+                                                         a.normalized);
+    }
+  }
+
+  const tinygltf::Model& m_;
+  const std::string& path_;
+};
+
+glm::dmat4 node_transform(const tinygltf::Node& n) {
+  if (n.matrix.size() == 16) return glm::make_mat4(n.matrix.data());  // column-major, as in GLM
+  glm::dmat4 t(1.0), r(1.0), s(1.0);
+  if (n.translation.size() == 3) t[3] = glm::dvec4(n.translation[0], n.translation[1], n.translation[2], 1.0);
+  if (n.rotation.size() == 4) {
+    // glTF stores (x, y, z, w); glm::dquat's constructor takes w first.
+    glm::dquat q(n.rotation[3], n.rotation[0], n.rotation[1], n.rotation[2]);
+    if (glm::length(q) > 0) r = glm::mat4_cast(glm::normalize(q));
+  }
+  if (n.scale.size() == 3) s = glm::scale(glm::dmat4(1.0), glm::dvec3(n.scale[0], n.scale[1], n.scale[2]));
+  return t * r * s;
+}
+
+bool finite(const glm::dmat4& m) {
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      if (!std::isfinite(m[c][r])) return false;
+  return true;
+}
+
+// Turns one primitive's index list (or 0..count-1) into triangles per its mode.
+std::vector<uint32_t> triangles_of(int mode, const std::vector<uint32_t>& in) {
+  std::vector<uint32_t> out;
+  if (mode == TINYGLTF_MODE_TRIANGLES || mode == -1) {
+    out.assign(in.begin(), in.begin() + (in.size() / 3) * 3);
+  } else if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+    for (size_t i = 2; i < in.size(); ++i) {
+      // every other triangle of a strip is wound the other way round
+      if (i % 2 == 0) out.insert(out.end(), {in[i - 2], in[i - 1], in[i]});
+      else out.insert(out.end(), {in[i - 1], in[i - 2], in[i]});
+    }
+  } else if (mode == TINYGLTF_MODE_TRIANGLE_FAN) {
+    for (size_t i = 2; i < in.size(); ++i) out.insert(out.end(), {in[0], in[i - 1], in[i]});
+  }
+  return out;
+}
+
+class GltfLoader {
+ public:
+  GltfLoader(const tinygltf::Model& m, const std::string& path) : m_(m), path_(path), reader_(m, path) {}
+
+  Mesh load() {
+    mesh_.name = path_;
+    std::vector<int> roots;
+    int scene = m_.defaultScene >= 0 ? m_.defaultScene : (m_.scenes.empty() ? -1 : 0);
+    if (scene >= int(m_.scenes.size()))
+      throw FileError(path_, "default scene " + std::to_string(scene) + " does not exist (the file has " +
+                                 std::to_string(m_.scenes.size()) + ")");
+    if (scene >= 0) {
+      roots = m_.scenes[size_t(scene)].nodes;
+    } else {
+      // No scene: every node nobody lists as a child is a root.
+      std::set<int> children;
+      for (const auto& n : m_.nodes) children.insert(n.children.begin(), n.children.end());
+      for (int i = 0; i < int(m_.nodes.size()); ++i)
+        if (!children.count(i)) roots.push_back(i);
+      if (m_.nodes.empty())
+        for (int i = 0; i < int(m_.meshes.size()); ++i) add_mesh(i, glm::dmat4(1.0));
+    }
+    for (int r : roots) walk(r, glm::dmat4(1.0));
+
+    if (mesh_.indices.empty())
+      throw FileError(path_, "has no triangles (" + std::to_string(m_.meshes.size()) + " meshes, " +
+                                 std::to_string(primitives_seen_) + " primitives in the default scene; points and "
+                                 "lines are not drawn)");
+    mesh_.has_normals = true;
+    mesh_.has_uvs = primitives_with_uvs_ == primitives_used_;
+    if (!mesh_.has_uvs) std::fill(mesh_.uvs.begin(), mesh_.uvs.end(), glm::vec2(0));
+    mesh_.bounds = compute_bounds(mesh_.positions);
+    if (texture_image_ >= 0) mesh_.base_color = decode_texture(texture_image_);
+    return std::move(mesh_);
+  }
+
+ private:
+  void walk(int node, const glm::dmat4& parent) {
+    if (node < 0 || size_t(node) >= m_.nodes.size())
+      throw FileError(path_, "refers to node " + std::to_string(node) + ", but the file has " +
+                                 std::to_string(m_.nodes.size()));
+    if (!on_path_.insert(node).second)
+      throw FileError(path_, "node " + std::to_string(node) + " is its own ancestor (a cycle in the node tree)");
+    const tinygltf::Node& n = m_.nodes[size_t(node)];
+    glm::dmat4 world = parent * node_transform(n);
+    if (!finite(world)) throw FileError(path_, "node " + std::to_string(node) + " has a non-finite transform");
+    if (n.mesh >= 0) add_mesh(n.mesh, world);
+    for (int c : n.children) walk(c, world);
+    on_path_.erase(node);
+  }
+
+  void add_mesh(int index, const glm::dmat4& world) {
+    if (size_t(index) >= m_.meshes.size())
+      throw FileError(path_, "refers to mesh " + std::to_string(index) + ", but the file has " +
+                                 std::to_string(m_.meshes.size()));
+    glm::dmat3 linear(world);
+    double det = glm::determinant(linear);
+    // A node scaled to zero hides its mesh; nothing of it would cover a pixel.
+    if (!(std::abs(det) > 1e-300)) return;
+    glm::dmat3 normal_matrix = glm::transpose(glm::inverse(linear));
+    const auto& prims = m_.meshes[size_t(index)].primitives;
+    for (size_t p = 0; p < prims.size(); ++p)
+      add_primitive(prims[p], "mesh " + std::to_string(index) + " primitive " + std::to_string(p), world,
+                    normal_matrix, det < 0);
+  }
+
+  void add_primitive(const tinygltf::Primitive& prim, const std::string& what, const glm::dmat4& world,
+                     const glm::dmat3& normal_matrix, bool mirrored) {
+    ++primitives_seen_;
+    int mode = prim.mode;
+    if (mode != -1 && mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
+        mode != TINYGLTF_MODE_TRIANGLE_FAN)
+      return;  // points and lines cover no area
+    auto pos_it = prim.attributes.find("POSITION");
+    if (pos_it == prim.attributes.end()) throw FileError(path_, what + " has no POSITION attribute");
+    std::vector<double> pos = reader_.read(pos_it->second, 3, what + " POSITION");
+    size_t count = pos.size() / 3;
+    if (count == 0) return;
+
+    std::vector<double> nrm, uv;
+    if (auto it = prim.attributes.find("NORMAL"); it != prim.attributes.end()) {
+      nrm = reader_.read(it->second, 3, what + " NORMAL");
+      if (nrm.size() != pos.size())
+        throw FileError(path_, what + ": NORMAL has " + std::to_string(nrm.size() / 3) + " elements, POSITION " +
+                                   std::to_string(count));
+    }
+    if (auto it = prim.attributes.find("TEXCOORD_0"); it != prim.attributes.end()) {
+      uv = reader_.read(it->second, 2, what + " TEXCOORD_0");
+      if (uv.size() != count * 2)
+        throw FileError(path_, what + ": TEXCOORD_0 has " + std::to_string(uv.size() / 2) + " elements, POSITION " +
+                                   std::to_string(count));
+    }
+
+    std::vector<uint32_t> local;
+    if (prim.indices >= 0) {
+      std::vector<double> idx = reader_.read(prim.indices, 1, what + " indices", true);
+      local.resize(idx.size());
+      for (size_t i = 0; i < idx.size(); ++i) {
+        if (idx[i] >= double(count))
+          throw FileError(path_, what + ": index " + std::to_string((unsigned long long)idx[i]) + " at position " +
+                                     std::to_string(i) + " is outside the " + std::to_string(count) + " vertices");
+        local[i] = uint32_t(idx[i]);
+      }
+    } else {
+      local.resize(count);
+      for (size_t i = 0; i < count; ++i) local[i] = uint32_t(i);
+    }
+    std::vector<uint32_t> tris = triangles_of(mode, local);
+    if (tris.empty()) return;
+    ++primitives_used_;
+    if (mirrored)
+      for (size_t t = 0; t < tris.size(); t += 3) std::swap(tris[t + 1], tris[t + 2]);
+
+    size_t base = mesh_.positions.size();
+    if (base + count > size_t(UINT32_MAX)) throw FileError(path_, "has more than 2^32 vertices");
+    std::vector<glm::vec3> world_pos(count);
+    for (size_t i = 0; i < count; ++i) {
+      glm::dvec4 w = world * glm::dvec4(pos[3 * i], pos[3 * i + 1], pos[3 * i + 2], 1.0);
+      if (!std::isfinite(w.x) || !std::isfinite(w.y) || !std::isfinite(w.z))
+        throw FileError(path_, what + ": POSITION " + std::to_string(i) + " is not a finite number");
+      world_pos[i] = glm::vec3(w);
+    }
+    // Normals the file lacks, or gives as zero / non-finite, come from the geometry.
+    std::vector<glm::vec3> computed;
+    auto fallback = [&](size_t i) {
+      if (computed.empty()) computed = area_weighted_normals(world_pos, tris);
+      mesh_.normals_computed = true;
+      return computed[i];
+    };
+    for (size_t i = 0; i < count; ++i) {
+      glm::vec3 n;
+      if (!nrm.empty()) {
+        glm::dvec3 d = normal_matrix * glm::dvec3(nrm[3 * i], nrm[3 * i + 1], nrm[3 * i + 2]);
+        double len = glm::length(d);
+        n = (std::isfinite(len) && len > 1e-12) ? glm::vec3(d / len) : fallback(i);
+      } else {
+        n = fallback(i);
+      }
+      mesh_.positions.push_back(world_pos[i]);
+      mesh_.normals.push_back(n);
+      mesh_.uvs.push_back(uv.empty() ? glm::vec2(0) : glm::vec2(float(uv[2 * i]), float(uv[2 * i + 1])));
+    }
+    if (!uv.empty()) ++primitives_with_uvs_;
+    for (uint32_t i : tris) mesh_.indices.push_back(uint32_t(base) + i);
+
+    // The merged mesh carries one texture: the first base-colour texture met in the scene.
+    if (texture_image_ < 0 && prim.material >= 0 && size_t(prim.material) < m_.materials.size()) {
+      int tex = m_.materials[size_t(prim.material)].pbrMetallicRoughness.baseColorTexture.index;
+      if (tex >= 0 && size_t(tex) < m_.textures.size()) {
+        int src = m_.textures[size_t(tex)].source;
+        if (src >= 0 && size_t(src) < m_.images.size()) texture_image_ = src;
+      }
+    }
+  }
+
+  io::Image decode_texture(int index) {
+    const tinygltf::Image& img = m_.images[size_t(index)];
+    std::string what = "mesh file '" + path_ + "': base-colour texture (image " + std::to_string(index) +
+                       (img.uri.empty() || img.uri.rfind("data:", 0) == 0 ? std::string() : ", '" + img.uri + "'") + ")";
+    if (img.image.empty()) throw std::runtime_error(what + " has no data");
+    return io::decode_image(img.image, what);
+  }
+
+  const tinygltf::Model& m_;
+  const std::string& path_;
+  AccessorReader reader_;
+  Mesh mesh_;
+  std::set<int> on_path_;
+  int texture_image_ = -1;
+  int primitives_seen_ = 0, primitives_used_ = 0, primitives_with_uvs_ = 0;
+};
+
+// PNG bytes of `img` (8 bits per channel, values clamped to [0,1]) for embedding in a .glb.
+std::vector<unsigned char> encode_png(const io::Image& img, const std::string& what) {
+  std::vector<unsigned char> bytes(img.pixels.size());
+  for (size_t i = 0; i < bytes.size(); ++i) {
+    float v = img.pixels[i];
+    v = std::isfinite(v) ? std::clamp(v, 0.f, 1.f) : 0.f;
+    bytes[i] = (unsigned char)(v * 255.f + 0.5f);
+  }
+  std::vector<unsigned char> png;
+  OIIO::Filesystem::IOVecOutput out(png);
+  auto writer = OIIO::ImageOutput::create("texture.png", &out);
+  OIIO::ImageSpec spec(img.width, img.height, img.channels, OIIO::TypeDesc::UINT8);
+  if (!writer || !writer->open("texture.png", spec) || !writer->write_image(OIIO::TypeDesc::UINT8, bytes.data()) ||
+      !writer->close())
+    throw std::runtime_error(what + ": cannot encode the texture as PNG (" +
+                             (writer ? writer->geterror() : OIIO::geterror()) + ")");
+  return png;
+}
+
+// Appends `bytes` to the buffer (4-byte aligned, as accessors need) and adds a view onto them.
+int add_view(tinygltf::Model& m, const void* bytes, size_t size, int target) {
+  auto& data = m.buffers[0].data;
+  data.resize((data.size() + 3) & ~size_t(3), 0);
+  tinygltf::BufferView v;
+  v.buffer = 0;
+  v.byteOffset = data.size();
+  v.byteLength = size;
+  v.target = target;
+  const auto* p = static_cast<const unsigned char*>(bytes);
+  data.insert(data.end(), p, p + size);
+  m.bufferViews.push_back(v);
+  return int(m.bufferViews.size()) - 1;
+}
+
+int add_accessor(tinygltf::Model& m, int view, int component_type, int type, size_t count) {
+  tinygltf::Accessor a;
+  a.bufferView = view;
+  a.byteOffset = 0;
+  a.componentType = component_type;
+  a.type = type;
+  a.count = count;
+  m.accessors.push_back(a);
+  return int(m.accessors.size()) - 1;
+}
+
+}  // namespace
+
+Mesh load_mesh(const std::string& path) {
+  std::vector<unsigned char> bytes = read_whole_file(path);
+  if (bytes.empty()) throw FileError(path, "is empty");
+  tinygltf::TinyGLTF gltf;
+  gltf.SetImageLoader(keep_image_bytes, nullptr);
+  tinygltf::Model model;
+  std::string err, warn;
+  bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+  std::string base_dir = fs::path(path).parent_path().string();
+  bool ok;
+  if (binary) {
+    ok = gltf.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), unsigned(bytes.size()), base_dir);
+  } else {
+    // A .gltf is JSON; anything else (an image, random bytes) is not a mesh.
+    size_t i = 0;
+    while (i < bytes.size() && std::isspace(bytes[i])) ++i;
+    if (i == bytes.size() || bytes[i] != '{')
+      throw FileError(path, "is neither a glTF JSON file (.gltf, starts with '{') nor a binary glTF (.glb, starts "
+                            "with 'glTF')");
+    ok = gltf.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(bytes.data()),
+                                  unsigned(bytes.size()), base_dir);
+  }
+  if (!ok)
+    throw FileError(path, std::string("is not a valid ") + (binary ? "binary glTF" : "glTF") + " file (" +
+                              (err.empty() ? "tinygltf gave no reason" : "tinygltf: " + short_reason(err)) + ")");
+  Mesh mesh = GltfLoader(model, path).load();
+  validate(mesh);
+  return mesh;
+}
+
+void save_glb(const Mesh& m, const std::string& path) {
+  validate(m);
+  if (m.indices.empty()) throw std::runtime_error("cannot save mesh '" + m.name + "' to '" + path + "': it has no triangles");
+  tinygltf::Model model;
+  model.asset.version = "2.0";
+  model.asset.generator = "shadenet";
+  model.buffers.resize(1);
+
+  tinygltf::Primitive prim;
+  prim.mode = TINYGLTF_MODE_TRIANGLES;
+  size_t n = m.positions.size();
+  int pv = add_view(model, m.positions.data(), n * sizeof(glm::vec3), TINYGLTF_TARGET_ARRAY_BUFFER);
+  int pa = add_accessor(model, pv, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, n);
+  Bounds b = compute_bounds(m.positions);  // the stored bounds may be stale after an edit
+  model.accessors[size_t(pa)].minValues = {b.min.x, b.min.y, b.min.z};
+  model.accessors[size_t(pa)].maxValues = {b.max.x, b.max.y, b.max.z};
+  prim.attributes["POSITION"] = pa;
+  if (m.has_normals) {
+    int nv = add_view(model, m.normals.data(), n * sizeof(glm::vec3), TINYGLTF_TARGET_ARRAY_BUFFER);
+    prim.attributes["NORMAL"] = add_accessor(model, nv, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, n);
+  }
+  if (m.has_uvs) {
+    int uv = add_view(model, m.uvs.data(), n * sizeof(glm::vec2), TINYGLTF_TARGET_ARRAY_BUFFER);
+    prim.attributes["TEXCOORD_0"] = add_accessor(model, uv, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC2, n);
+  }
+  int iv = add_view(model, m.indices.data(), m.indices.size() * 4, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+  prim.indices =
+      add_accessor(model, iv, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR, m.indices.size());
+
+  if (m.base_color) {
+    std::vector<unsigned char> png = encode_png(*m.base_color, "cannot save mesh to '" + path + "'");
+    tinygltf::Image image;
+    image.mimeType = "image/png";
+    image.bufferView = add_view(model, png.data(), png.size(), 0);
+    model.images.push_back(image);
+    tinygltf::Texture tex;
+    tex.source = 0;
+    model.textures.push_back(tex);
+    tinygltf::Material mat;
+    mat.pbrMetallicRoughness.baseColorTexture.index = 0;
+    mat.pbrMetallicRoughness.metallicFactor = 0.0;
+    model.materials.push_back(mat);
+    prim.material = 0;
+  }
+  model.buffers[0].data.resize((model.buffers[0].data.size() + 3) & ~size_t(3), 0);
+
+  tinygltf::Mesh mesh;
+  mesh.primitives.push_back(prim);
+  model.meshes.push_back(mesh);
+  tinygltf::Node node;
+  node.mesh = 0;
+  model.nodes.push_back(node);
+  tinygltf::Scene scene;
+  scene.nodes = {0};
+  model.scenes.push_back(scene);
+  model.defaultScene = 0;
+
+  std::ostringstream glb;
+  tinygltf::TinyGLTF gltf;
+  if (!gltf.WriteGltfSceneToStream(&model, glb, false, true))
+    throw std::runtime_error("cannot save mesh to '" + path + "': tinygltf could not serialise it");
+  std::string bytes = glb.str();
+
+  fs::path target(path);
+  fs::path parent = target.parent_path();
+  std::error_code ec;
+  if (!parent.empty()) fs::create_directories(parent, ec);
+  std::string tmp = (parent / ("." + target.filename().string() + ".tmp" + std::to_string(getpid()))).string();
+  FILE* f = std::fopen(tmp.c_str(), "wb");
+  if (!f) throw std::runtime_error("cannot save mesh to '" + path + "': " + std::strerror(errno));
+  bool ok = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
+  ok = (std::fclose(f) == 0) && ok;
+  if (ok) {
+    fs::rename(tmp, target, ec);
+    ok = !ec;
+  }
+  if (!ok) {
+    std::remove(tmp.c_str());
+    throw std::runtime_error("cannot save mesh to '" + path + "': write failed" + (ec ? " (" + ec.message() + ")" : ""));
+  }
+}
+
+std::vector<glm::vec3> area_weighted_normals(const std::vector<glm::vec3>& positions,
+                                             const std::vector<uint32_t>& indices) {
+  std::vector<glm::dvec3> sum(positions.size(), glm::dvec3(0.0));
+  for (size_t t = 0; t + 2 < indices.size(); t += 3) {
+    uint32_t a = indices[t], b = indices[t + 1], c = indices[t + 2];
+    if (a >= positions.size() || b >= positions.size() || c >= positions.size()) continue;
+    glm::dvec3 pa(positions[a]), pb(positions[b]), pc(positions[c]);
+    glm::dvec3 face = glm::cross(pb - pa, pc - pa);  // |face| = twice the triangle's area
+    sum[a] += face, sum[b] += face, sum[c] += face;
+  }
+  std::vector<glm::vec3> out(positions.size());
+  for (size_t i = 0; i < out.size(); ++i) {
+    double len = glm::length(sum[i]);
+    out[i] = (std::isfinite(len) && len > 0) ? glm::vec3(sum[i] / len) : glm::vec3(0, 1, 0);
+  }
+  return out;
+}
+
+Bounds compute_bounds(const std::vector<glm::vec3>& positions) {
+  Bounds b;
+  if (positions.empty()) return b;
+  b.min = b.max = glm::dvec3(positions[0]);
+  for (const auto& p : positions) {
+    b.min = glm::min(b.min, glm::dvec3(p));
+    b.max = glm::max(b.max, glm::dvec3(p));
+  }
+  return b;
+}
+
+Mesh transformed(const Mesh& m, const glm::dmat4& transform) {
+  glm::dmat3 linear(transform);
+  double det = glm::determinant(linear);
+  if (!finite(transform) || !(std::abs(det) > 1e-300))
+    throw std::invalid_argument("cannot transform mesh '" + m.name + "': the matrix is singular or not finite");
+  glm::dmat3 normal_matrix = glm::transpose(glm::inverse(linear));
+  Mesh out;
+  out.name = m.name;
+  out.uvs = m.uvs;
+  out.indices = m.indices;
+  out.has_normals = m.has_normals;
+  out.has_uvs = m.has_uvs;
+  out.normals_computed = m.normals_computed;
+  out.base_color = m.base_color;
+  out.positions.resize(m.positions.size());
+  out.normals.resize(m.normals.size());
+  for (size_t i = 0; i < m.positions.size(); ++i)
+    out.positions[i] = glm::vec3(transform * glm::dvec4(glm::dvec3(m.positions[i]), 1.0));
+  for (size_t i = 0; i < m.normals.size(); ++i) {
+    glm::dvec3 n = normal_matrix * glm::dvec3(m.normals[i]);
+    double len = glm::length(n);
+    out.normals[i] = len > 0 ? glm::vec3(n / len) : glm::vec3(0, 1, 0);
+  }
+  // A mirror turns counter-clockwise triangles clockwise; swap two corners to keep them front-facing.
+  if (det < 0)
+    for (size_t t = 0; t + 2 < out.indices.size(); t += 3) std::swap(out.indices[t + 1], out.indices[t + 2]);
+  out.bounds = compute_bounds(out.positions);
+  return out;
+}
+
+void validate(const Mesh& m) {
+  auto fail = [&](const std::string& why) { throw std::runtime_error("mesh '" + m.name + "': " + why); };
+  size_t n = m.positions.size();
+  if (m.normals.size() != n) fail("has " + std::to_string(m.normals.size()) + " normals for " + std::to_string(n) + " positions");
+  if (m.uvs.size() != n) fail("has " + std::to_string(m.uvs.size()) + " uvs for " + std::to_string(n) + " positions");
+  if (m.indices.size() % 3) fail("index count " + std::to_string(m.indices.size()) + " is not a multiple of 3");
+  for (size_t i = 0; i < m.indices.size(); ++i)
+    if (m.indices[i] >= n)
+      fail("index " + std::to_string(m.indices[i]) + " at " + std::to_string(i) + " is outside the " +
+           std::to_string(n) + " vertices");
+  for (size_t i = 0; i < n; ++i) {
+    const auto &p = m.positions[i], &q = m.normals[i];
+    const auto& t = m.uvs[i];
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z) || !std::isfinite(q.x) ||
+        !std::isfinite(q.y) || !std::isfinite(q.z) || !std::isfinite(t.x) || !std::isfinite(t.y))
+      fail("vertex " + std::to_string(i) + " has a non-finite position, normal or uv");
+  }
+}
+
+}  // namespace sn::scene

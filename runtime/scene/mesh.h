@@ -1,0 +1,77 @@
+// A triangle mesh on the CPU: what a glTF file or a procedural shape becomes before it is
+// drawn. One vertex list (position, normal, uv) and one uint32 index list, all primitives of a
+// file merged and already placed in world space by the file's node transforms.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "io/image.h"
+
+namespace sn::scene {
+
+class GpuMesh;
+
+struct Bounds {
+  glm::dvec3 min{0.0}, max{0.0};
+  glm::dvec3 center() const { return (min + max) * 0.5; }
+  glm::dvec3 size() const { return max - min; }
+  // Radius of the sphere around center() that holds the box (for framing a camera).
+  double radius() const { return glm::length(size()) * 0.5; }
+};
+
+struct Mesh {
+  std::string name;  // file path, or "sphere", "torus", "plane"
+  std::vector<glm::vec3> positions;
+  std::vector<glm::vec3> normals;  // one per position, unit length
+  std::vector<glm::vec2> uvs;      // one per position; zeros when has_uvs is false
+  std::vector<std::uint32_t> indices;  // three per triangle, counter-clockwise seen from outside
+  bool has_normals = false;
+  bool has_uvs = false;
+  // The file had no normals, so they were computed (area-weighted vertex normals); callers
+  // tell the user, since flat-shaded files come out smooth.
+  bool normals_computed = false;
+  std::optional<io::Image> base_color;  // the material's base-colour texture, as stored (sRGB)
+  Bounds bounds;
+
+  std::size_t vertex_count() const { return positions.size(); }
+  std::size_t triangle_count() const { return indices.size() / 3; }
+
+  // The uploaded copy (gpu_mesh.h), made on first draw. Whoever edits the arrays above after a
+  // draw resets it so the next draw uploads again.
+  mutable std::shared_ptr<GpuMesh> gpu;
+};
+
+// Loads a .gltf or .glb file (told apart by content, not extension): walks the default scene's
+// node tree, applies each node's transform (matrix or TRS) to positions and, through its
+// inverse transpose, to normals, and merges every triangle primitive (triangles, strips, fans;
+// uint8/16/32 or no indices). Throws "mesh file 'PATH': reason" for a missing, truncated or
+// malformed file, an accessor reaching outside its buffer, an index out of range, or a file
+// with no triangles.
+Mesh load_mesh(const std::string& path);
+
+// Writes `m` as a binary glTF (.glb): positions (with min/max), normals, uvs when present,
+// uint32 indices and the base-colour texture as an embedded PNG. Written to a temporary file
+// and renamed, so a failure leaves nothing behind.
+void save_glb(const Mesh& m, const std::string& path);
+
+// Area-weighted vertex normals: each triangle adds its unnormalised face normal (length = twice
+// its area) to its three vertices. A vertex no triangle touches (or only degenerate ones) gets
+// +Y, so no NaN reaches a shader.
+std::vector<glm::vec3> area_weighted_normals(const std::vector<glm::vec3>& positions,
+                                             const std::vector<std::uint32_t>& indices);
+
+Bounds compute_bounds(const std::vector<glm::vec3>& positions);
+
+// A copy of `m` with `transform` applied (normals through its inverse transpose; winding
+// flipped when it mirrors). Throws for a singular matrix.
+Mesh transformed(const Mesh& m, const glm::dmat4& transform);
+
+// Throws naming `m.name` when sizes disagree, an index is out of range or a value is not finite.
+void validate(const Mesh& m);
+
+}  // namespace sn::scene

@@ -1,0 +1,578 @@
+// Meshes: the real glTF sample files, hand-built glTF fixtures with known transforms, broken
+// files, the procedural shapes against their formulas, .glb round trips and the GPU upload cache.
+#include <gtest/gtest.h>
+#include <tiny_gltf.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "gl/context.h"
+#include "scene/gpu_mesh.h"
+#include "scene/mesh.h"
+#include "scene/procedural.h"
+
+namespace fs = std::filesystem;
+using namespace sn::scene;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+std::string shared_meshes() {
+  const char* s = std::getenv("SHADENET_SHARED");
+  return std::string(s ? s : SHADENET_TEST_DIR "/../../shared") + "/meshes/";
+}
+
+fs::path temp_dir() {
+  fs::path d = fs::temp_directory_path() / ("shadenet_test_mesh_" + std::to_string(getpid()));
+  fs::create_directories(d);
+  return d;
+}
+
+std::vector<unsigned char> read_bytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void write_bytes(const fs::path& path, const void* data, size_t n) {
+  std::ofstream out(path, std::ios::binary);
+  out.write(static_cast<const char*>(data), std::streamsize(n));
+}
+
+// The message of the exception `f` throws ("" when it does not throw).
+template <class F>
+std::string error_of(F f) {
+  try {
+    f();
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "";
+}
+
+void expect_near(glm::dvec3 a, glm::dvec3 b, double tol, const std::string& what) {
+  EXPECT_NEAR(a.x, b.x, tol) << what;
+  EXPECT_NEAR(a.y, b.y, tol) << what;
+  EXPECT_NEAR(a.z, b.z, tol) << what;
+}
+
+// Every triangle must have area and face the way its vertices' normals point.
+void expect_consistent_winding(const Mesh& m) {
+  for (size_t t = 0; t < m.indices.size(); t += 3) {
+    glm::dvec3 a(m.positions[m.indices[t]]), b(m.positions[m.indices[t + 1]]), c(m.positions[m.indices[t + 2]]);
+    glm::dvec3 face = glm::cross(b - a, c - a);
+    ASSERT_GT(glm::length(face), 0) << m.name << " triangle " << t / 3 << " has no area";
+    glm::dvec3 n = glm::dvec3(m.normals[m.indices[t]]) + glm::dvec3(m.normals[m.indices[t + 1]]) +
+                   glm::dvec3(m.normals[m.indices[t + 2]]);
+    ASSERT_GT(glm::dot(face, n), 0) << m.name << " triangle " << t / 3 << " is wound against its normals";
+  }
+}
+
+// ---- glTF fixtures built with tinygltf's writer (an independent path from our reader) ----
+class Fixture {
+ public:
+  Fixture() {
+    model.asset.version = "2.0";
+    model.buffers.resize(1);
+  }
+  template <class T>
+  int view(const std::vector<T>& data, int stride = 0) {
+    auto& buf = model.buffers[0].data;
+    buf.resize((buf.size() + 3) & ~size_t(3));
+    tinygltf::BufferView v;
+    v.buffer = 0;
+    v.byteOffset = buf.size();
+    v.byteLength = data.size() * sizeof(T);
+    v.byteStride = size_t(stride);
+    const auto* p = reinterpret_cast<const unsigned char*>(data.data());
+    buf.insert(buf.end(), p, p + v.byteLength);
+    model.bufferViews.push_back(v);
+    return int(model.bufferViews.size()) - 1;
+  }
+  int accessor(int view, int component, int type, size_t count, size_t offset = 0) {
+    tinygltf::Accessor a;
+    a.bufferView = view;
+    a.componentType = component;
+    a.type = type;
+    a.count = count;
+    a.byteOffset = offset;
+    model.accessors.push_back(a);
+    return int(model.accessors.size()) - 1;
+  }
+  int vec3s(const std::vector<float>& v) {
+    return accessor(view(v), TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, v.size() / 3);
+  }
+  std::string write(const fs::path& path) {
+    std::ostringstream s;
+    tinygltf::TinyGLTF w;
+    EXPECT_TRUE(w.WriteGltfSceneToStream(&model, s, true, false));
+    std::ofstream(path) << s.str();
+    return path.string();
+  }
+  tinygltf::Model model;
+};
+
+tinygltf::Primitive primitive(int mode, int pos, int nrm = -1, int idx = -1) {
+  tinygltf::Primitive p;
+  p.mode = mode;
+  p.attributes["POSITION"] = pos;
+  if (nrm >= 0) p.attributes["NORMAL"] = nrm;
+  p.indices = idx;
+  return p;
+}
+
+// One mesh under node B (matrix: translate 0,0,1) under root node A (TRS: translate (1,2,3),
+// rotate 90 degrees about Y, scale (2,1,1)); its primitives use every index form and mode.
+std::string transform_fixture(const fs::path& path) {
+  Fixture f;
+  auto& m = f.model;
+  tinygltf::Mesh mesh;
+  // 0: triangles, interleaved position + normal (byteStride 24), uint8 indices
+  std::vector<float> inter = {0, 0, 0, 0, 0, 1, 1, 0, 0, 0, 0, 1, 0, 1, 0, 0, 0, 1};
+  int iv = f.view(inter, 24);
+  int p0 = f.accessor(iv, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, 3, 0);
+  int n0 = f.accessor(iv, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, 3, 12);
+  int i0 = f.accessor(f.view(std::vector<uint8_t>{0, 1, 2}), TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                      TINYGLTF_TYPE_SCALAR, 3);
+  mesh.primitives.push_back(primitive(TINYGLTF_MODE_TRIANGLES, p0, n0, i0));
+  // 1: a strip over a quad in the plane x + z = 0, facing (1,0,1)/sqrt2: a normal off the scale
+  //    axes shows the inverse transpose at work; uint16 indices
+  const float h = float(std::sqrt(0.5));
+  int p1 = f.vec3s({0, 0, 0, 1, 0, -1, 0, 1, 0, 1, 1, -1});
+  int n1 = f.vec3s({h, 0, h, h, 0, h, h, 0, h, h, 0, h});
+  int i1 = f.accessor(f.view(std::vector<uint16_t>{0, 1, 2, 3}), TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
+                      TINYGLTF_TYPE_SCALAR, 4);
+  mesh.primitives.push_back(primitive(TINYGLTF_MODE_TRIANGLE_STRIP, p1, n1, i1));
+  // 2: triangles without indices and without normals (they get computed)
+  int p2 = f.vec3s({0, 0, 9, 1, 0, 9, 0, 1, 9});
+  mesh.primitives.push_back(primitive(TINYGLTF_MODE_TRIANGLES, p2));
+  // 3: a fan with uint32 indices
+  int p3 = f.vec3s({0, 0, -4, 1, 0, -4, 1, 1, -4, 0, 1, -4});
+  int n3 = f.vec3s({0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1});
+  int i3 = f.accessor(f.view(std::vector<uint32_t>{0, 1, 2, 3}), TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT,
+                      TINYGLTF_TYPE_SCALAR, 4);
+  mesh.primitives.push_back(primitive(TINYGLTF_MODE_TRIANGLE_FAN, p3, n3, i3));
+  // 4: points cover nothing and are skipped
+  mesh.primitives.push_back(primitive(TINYGLTF_MODE_POINTS, p2));
+  m.meshes.push_back(mesh);
+
+  tinygltf::Node a, b;
+  a.translation = {1, 2, 3};
+  a.rotation = {0, std::sin(kPi / 4), 0, std::cos(kPi / 4)};
+  a.scale = {2, 1, 1};
+  a.children = {1};
+  b.matrix = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 1, 1};
+  b.mesh = 0;
+  m.nodes = {a, b};
+  tinygltf::Scene s;
+  s.nodes = {0};
+  m.scenes.push_back(s);
+  m.defaultScene = 0;
+  return f.write(path);
+}
+
+// Base64 for hand-written fixtures (tinygltf cannot write sparse accessors).
+std::string base64(const std::vector<unsigned char>& in) {
+  static const char* t = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  for (size_t i = 0; i < in.size(); i += 3) {
+    unsigned v = unsigned(in[i]) << 16 | (i + 1 < in.size() ? unsigned(in[i + 1]) << 8 : 0) |
+                 (i + 2 < in.size() ? in[i + 2] : 0);
+    out += t[v >> 18 & 63];
+    out += t[v >> 12 & 63];
+    out += i + 1 < in.size() ? t[v >> 6 & 63] : '=';
+    out += i + 2 < in.size() ? t[v & 63] : '=';
+  }
+  return out;
+}
+
+// A one-triangle file whose accessors are given as raw JSON, over one buffer `bytes`.
+std::string raw_fixture(const fs::path& path, const std::vector<unsigned char>& bytes, const std::string& views,
+                        const std::string& accessors, const std::string& primitive,
+                        const std::string& nodes = R"([{"mesh": 0}])") {
+  std::ofstream(path) << R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": )" << nodes
+                      << R"(, "meshes": [{"primitives": [)" << primitive << R"(]}], "buffers": [{"byteLength": )"
+                      << bytes.size() << R"(, "uri": "data:application/octet-stream;base64,)" << base64(bytes)
+                      << R"("}], "bufferViews": )" << views << R"(, "accessors": )" << accessors << "}";
+  return path.string();
+}
+
+std::vector<unsigned char> float_bytes(const std::vector<float>& v) {
+  std::vector<unsigned char> b(v.size() * 4);
+  std::memcpy(b.data(), v.data(), b.size());
+  return b;
+}
+
+}  // namespace
+
+// ---- the shared sample files ----
+
+TEST(Mesh, DuckLoadsWithItsCountsNormalsUvsAndTexture) {
+  Mesh m = load_mesh(shared_meshes() + "Duck.gltf");
+  EXPECT_EQ(m.vertex_count(), 2399u);
+  EXPECT_EQ(m.indices.size(), 12636u);
+  EXPECT_TRUE(m.has_normals);
+  EXPECT_FALSE(m.normals_computed);
+  EXPECT_TRUE(m.has_uvs);
+  ASSERT_TRUE(m.base_color.has_value());
+  EXPECT_EQ(m.base_color->width, 512);
+  EXPECT_EQ(m.base_color->height, 512);
+  // The root node scales by 0.01: the accessor's min/max (SOURCES.md) times 0.01.
+  expect_near(m.bounds.min, glm::dvec3(-69.29850006103516, 9.929369926452637, -61.32819747924805) * 0.01, 1e-6, "min");
+  expect_near(m.bounds.max, glm::dvec3(96.17990112304688, 163.97000122070312, 53.92519760131836) * 0.01, 1e-6, "max");
+  for (const auto& n : m.normals) ASSERT_NEAR(glm::length(n), 1.0, 1e-5);
+  // The texture is the duck's yellow: its mean colour is far more red + green than blue.
+  double r = 0, g = 0, b = 0;
+  const auto& t = *m.base_color;
+  for (int y = 0; y < t.height; ++y)
+    for (int x = 0; x < t.width; ++x) r += t.at(x, y, 0), g += t.at(x, y, 1), b += t.at(x, y, 2);
+  EXPECT_GT(r, 2 * b);
+  EXPECT_GT(g, 1.5 * b);
+}
+
+TEST(Mesh, BoxLoadsWithoutUvsAndKeepsItsBoundsAfterTheRootRotation) {
+  Mesh m = load_mesh(shared_meshes() + "Box.gltf");
+  EXPECT_EQ(m.vertex_count(), 24u);
+  EXPECT_EQ(m.indices.size(), 36u);
+  EXPECT_TRUE(m.has_normals);
+  EXPECT_FALSE(m.normals_computed);
+  EXPECT_FALSE(m.has_uvs);
+  EXPECT_FALSE(m.base_color.has_value());
+  expect_near(m.bounds.min, glm::dvec3(-0.5), 1e-7, "min");
+  expect_near(m.bounds.max, glm::dvec3(0.5), 1e-7, "max");
+  expect_consistent_winding(m);
+  // Flat faces: every normal is an axis, and each face's 4 vertices lie on the plane it names.
+  for (size_t i = 0; i < m.vertex_count(); ++i) {
+    glm::dvec3 n(m.normals[i]), p(m.positions[i]);
+    EXPECT_NEAR(glm::dot(n, p), 0.5, 1e-6) << "vertex " << i;
+  }
+}
+
+// ---- node transforms, index types, primitive modes ----
+
+TEST(Mesh, NodeTransformsIndexTypesAndModesFollowTheSpecification) {
+  std::string path = transform_fixture(temp_dir() / "transforms.gltf");
+  Mesh m = load_mesh(path);
+  ASSERT_EQ(m.vertex_count(), 3u + 4u + 3u + 4u);
+  ASSERT_EQ(m.indices.size(), 3u + 6u + 3u + 6u);
+  EXPECT_TRUE(m.normals_computed);  // primitive 2 had none
+  // Primitive 0, worked by hand: B moves z by 1, A scales x by 2, turns x -> -z and z -> x,
+  // then moves by (1,2,3).
+  expect_near(m.positions[0], {2, 2, 3}, 1e-6, "p0");
+  expect_near(m.positions[1], {2, 2, 1}, 1e-6, "p1");
+  expect_near(m.positions[2], {2, 3, 3}, 1e-6, "p2");
+  expect_near(m.normals[0], {1, 0, 0}, 1e-6, "n0");
+  // Primitive 1: normal (1,0,1)/sqrt2 through the inverse transpose R * S^-1 = (1, 0, -0.5) normalised.
+  expect_near(m.normals[3], glm::dvec3(2, 0, -1) / std::sqrt(5.0), 1e-6, "strip normal");
+  // The strip's triangles (0,1,2) and (2,1,3), offset by the 3 vertices before them.
+  EXPECT_EQ(std::vector<uint32_t>(m.indices.begin() + 3, m.indices.begin() + 9),
+            (std::vector<uint32_t>{3, 4, 5, 5, 4, 6}));
+  // Primitive 2 (non-indexed): indices 7, 8, 9; the computed normal is its face normal.
+  EXPECT_EQ(std::vector<uint32_t>(m.indices.begin() + 9, m.indices.begin() + 12), (std::vector<uint32_t>{7, 8, 9}));
+  // face normal (0,0,1) in the file -> R * S^-1 -> (1, 0, 0)
+  expect_near(m.normals[7], {1, 0, 0}, 1e-6, "computed normal");
+  // Primitive 3 (fan): (0,1,2), (0,2,3), offset by 10.
+  EXPECT_EQ(std::vector<uint32_t>(m.indices.begin() + 12, m.indices.end()),
+            (std::vector<uint32_t>{10, 11, 12, 10, 12, 13}));
+  expect_consistent_winding(m);
+}
+
+TEST(Mesh, AMirroringNodeFlipsTheWindingSoTrianglesStillFaceTheirNormals) {
+  Fixture f;
+  int p = f.vec3s({0, 0, 0, 1, 0, 0, 0, 1, 0});
+  int n = f.vec3s({0, 0, 1, 0, 0, 1, 0, 0, 1});
+  tinygltf::Mesh mesh;
+  mesh.primitives.push_back(primitive(TINYGLTF_MODE_TRIANGLES, p, n));
+  f.model.meshes.push_back(mesh);
+  tinygltf::Node node;
+  node.mesh = 0;
+  node.scale = {1, 1, -1};  // mirror z: the normal flips to -z and the triangle must be rewound
+  f.model.nodes.push_back(node);
+  tinygltf::Scene s;
+  s.nodes = {0};
+  f.model.scenes.push_back(s);
+  Mesh m = load_mesh(f.write(temp_dir() / "mirror.gltf"));
+  expect_near(m.normals[0], {0, 0, -1}, 1e-7, "mirrored normal");
+  EXPECT_EQ(m.indices, (std::vector<uint32_t>{0, 2, 1}));
+  expect_consistent_winding(m);
+}
+
+TEST(Mesh, SparseAccessorsOverrideTheirBaseValues) {
+  // positions 0..2 in the buffer, then one sparse index (ubyte 1, padded) and its value
+  std::vector<unsigned char> bytes = float_bytes({0, 0, 0, 1, 0, 0, 0, 1, 0});
+  bytes.insert(bytes.end(), {1, 0, 0, 0});
+  auto v = float_bytes({7, 0, 0});
+  bytes.insert(bytes.end(), v.begin(), v.end());
+  std::string path = raw_fixture(
+      temp_dir() / "sparse.gltf", bytes,
+      R"([{"buffer": 0, "byteOffset": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 1},
+          {"buffer": 0, "byteOffset": 40, "byteLength": 12}])",
+      R"([{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+           "sparse": {"count": 1, "indices": {"bufferView": 1, "componentType": 5121},
+                      "values": {"bufferView": 2}}}])",
+      R"({"attributes": {"POSITION": 0}})");
+  Mesh m = load_mesh(path);
+  expect_near(m.positions[1], {7, 0, 0}, 0, "sparse value");
+  expect_near(m.positions[2], {0, 1, 0}, 0, "base value");
+}
+
+// ---- broken files: a clear message naming the file, never a crash ----
+
+TEST(Mesh, MissingFileIsAClearError) {
+  std::string e = error_of([] { load_mesh("no/such/mesh.gltf"); });
+  EXPECT_NE(e.find("mesh file 'no/such/mesh.gltf'"), std::string::npos) << e;
+  EXPECT_NE(e.find("does not exist"), std::string::npos) << e;
+}
+
+TEST(Mesh, GarbageFilesAreClearErrors) {
+  fs::path d = temp_dir();
+  std::vector<unsigned char> noise(4096);
+  uint32_t s = 12345;
+  for (auto& b : noise) b = (unsigned char)((s = s * 1664525u + 1013904223u) >> 24);
+  noise[0] = 'x';
+  write_bytes(d / "garbage.gltf", noise.data(), noise.size());
+  std::string e = error_of([&] { load_mesh((d / "garbage.gltf").string()); });
+  EXPECT_NE(e.find("mesh file '" + (d / "garbage.gltf").string() + "'"), std::string::npos) << e;
+  EXPECT_NE(e.find("neither a glTF JSON file"), std::string::npos) << e;
+
+  std::ofstream(d / "notjson.gltf") << "{ this is not JSON ]";
+  e = error_of([&] { load_mesh((d / "notjson.gltf").string()); });
+  EXPECT_NE(e.find("notjson.gltf': is not a valid glTF file (tinygltf:"), std::string::npos) << e;
+
+  // A .glb magic followed by noise.
+  std::memcpy(noise.data(), "glTF", 4);
+  write_bytes(d / "garbage.glb", noise.data(), noise.size());
+  e = error_of([&] { load_mesh((d / "garbage.glb").string()); });
+  EXPECT_NE(e.find("garbage.glb': is not a valid binary glTF file"), std::string::npos) << e;
+
+  std::ofstream(d / "empty.gltf").close();
+  e = error_of([&] { load_mesh((d / "empty.gltf").string()); });
+  EXPECT_NE(e.find("empty.gltf': is empty"), std::string::npos) << e;
+}
+
+TEST(Mesh, TruncatedFilesAreClearErrorsAtEveryLength) {
+  fs::path d = temp_dir();
+  auto duck = read_bytes(shared_meshes() + "Duck.gltf");
+  ASSERT_EQ(duck.size(), 162796u);
+  write_bytes(d / "half.gltf", duck.data(), duck.size() / 2);
+  std::string e = error_of([&] { load_mesh((d / "half.gltf").string()); });
+  EXPECT_NE(e.find("mesh file '" + (d / "half.gltf").string() + "': is not a valid glTF file"), std::string::npos) << e;
+
+  // The same file as .glb, cut at 97 lengths from the header to one byte short.
+  save_glb(load_mesh(shared_meshes() + "Duck.gltf"), (d / "duck.glb").string());
+  auto glb = read_bytes((d / "duck.glb").string());
+  for (int k = 0; k <= 96; ++k) {
+    size_t n = k == 96 ? glb.size() - 1 : glb.size() * size_t(k) / 96 + 1;
+    write_bytes(d / "cut.glb", glb.data(), n);
+    e = error_of([&] { load_mesh((d / "cut.glb").string()); });
+    EXPECT_NE(e.find("mesh file '" + (d / "cut.glb").string() + "'"), std::string::npos) << n << " bytes: " << e;
+  }
+  for (int k = 1; k < 32; ++k) {
+    write_bytes(d / "cut.gltf", duck.data(), duck.size() * size_t(k) / 32);
+    EXPECT_NE(error_of([&] { load_mesh((d / "cut.gltf").string()); }).find("is not a valid glTF file"),
+              std::string::npos)
+        << k << "/32";
+  }
+}
+
+TEST(Mesh, MalformedAccessorsIndicesAndNodesAreClearErrors) {
+  fs::path d = temp_dir();
+  auto tri = float_bytes({0, 0, 0, 1, 0, 0, 0, 1, 0});
+  const std::string view = R"([{"buffer": 0, "byteOffset": 0, "byteLength": 36}])";
+  const std::string acc = R"([{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"}])";
+  const std::string prim = R"({"attributes": {"POSITION": 0}})";
+
+  // An accessor claiming more elements than its view holds.
+  std::string p = raw_fixture(d / "long.gltf", tri, view,
+                              R"([{"bufferView": 0, "componentType": 5126, "count": 4000000000, "type": "VEC3"}])", prim);
+  std::string e = error_of([&] { load_mesh(p); });
+  EXPECT_NE(e.find("POSITION: 4000000000 elements at byte offset 0 reach past the end of buffer view 0"),
+            std::string::npos)
+      << e;
+
+  // An index past the vertices.
+  auto bytes = tri;
+  bytes.insert(bytes.end(), {0, 1, 7, 0});
+  p = raw_fixture(d / "index.gltf", bytes,
+                  R"([{"buffer": 0, "byteOffset": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 3}])",
+                  R"([{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"},
+                      {"bufferView": 1, "componentType": 5121, "count": 3, "type": "SCALAR"}])",
+                  R"({"attributes": {"POSITION": 0}, "indices": 1})");
+  e = error_of([&] { load_mesh(p); });
+  EXPECT_NE(e.find("index 7 at position 2 is outside the 3 vertices"), std::string::npos) << e;
+
+  // A node that is its own grandparent.
+  p = raw_fixture(d / "cycle.gltf", tri, view, acc, prim, R"([{"mesh": 0, "children": [1]}, {"children": [0]}])");
+  e = error_of([&] { load_mesh(p); });
+  EXPECT_NE(e.find("cycle"), std::string::npos) << e;
+
+  // Only points: nothing to draw.
+  p = raw_fixture(d / "points.gltf", tri, view, acc, R"({"attributes": {"POSITION": 0}, "mode": 0})");
+  e = error_of([&] { load_mesh(p); });
+  EXPECT_NE(e.find("points.gltf': has no triangles"), std::string::npos) << e;
+
+  // A NaN position.
+  auto nan_tri = float_bytes({0, 0, 0, std::nanf(""), 0, 0, 0, 1, 0});
+  p = raw_fixture(d / "nan.gltf", nan_tri, view, acc, prim);
+  e = error_of([&] { load_mesh(p); });
+  EXPECT_NE(e.find("POSITION 1 is not a finite number"), std::string::npos) << e;
+}
+
+// ---- .glb round trip ----
+
+TEST(Mesh, SaveGlbRoundTripsEveryAttributeAndTheTexture) {
+  fs::path d = temp_dir();
+  Mesh duck = load_mesh(shared_meshes() + "Duck.gltf");
+  std::string path = (d / "sub" / "duck.glb").string();  // the folder is created
+  save_glb(duck, path);
+  Mesh back = load_mesh(path);
+  ASSERT_EQ(back.vertex_count(), duck.vertex_count());
+  EXPECT_EQ(back.indices, duck.indices);
+  EXPECT_EQ(back.positions, duck.positions);  // float32 both ways: bit exact
+  EXPECT_EQ(back.uvs, duck.uvs);
+  for (size_t i = 0; i < duck.vertex_count(); ++i) ASSERT_NEAR(glm::distance(back.normals[i], duck.normals[i]), 0, 1e-7);
+  EXPECT_TRUE(back.has_uvs);
+  EXPECT_FALSE(back.normals_computed);
+  ASSERT_TRUE(back.base_color.has_value());
+  EXPECT_EQ(back.base_color->width, 512);
+  ASSERT_EQ(back.base_color->pixels.size(), duck.base_color->pixels.size());
+  EXPECT_EQ(back.base_color->pixels, duck.base_color->pixels);  // 8-bit PNG in, 8-bit PNG out
+  // Nothing but the file itself was left in the folder.
+  int files = 0;
+  for (auto& e : fs::directory_iterator(d / "sub")) {
+    ++files;
+    EXPECT_EQ(e.path().filename(), "duck.glb");
+  }
+  EXPECT_EQ(files, 1);
+
+  Mesh box = load_mesh(shared_meshes() + "Box.gltf");
+  save_glb(box, (d / "box.glb").string());
+  Mesh box_back = load_mesh((d / "box.glb").string());
+  EXPECT_FALSE(box_back.has_uvs);
+  EXPECT_EQ(box_back.positions, box.positions);
+}
+
+TEST(Mesh, SaveGlbFailureLeavesNothingBehind) {
+  fs::path d = temp_dir() / "blocked";
+  fs::create_directories(d / "mesh.glb");  // a directory where the file should go
+  std::string e = error_of([&] { save_glb(sphere(1, 8, 4), (d / "mesh.glb").string()); });
+  EXPECT_NE(e.find("cannot save mesh to '" + (d / "mesh.glb").string() + "'"), std::string::npos) << e;
+  int entries = 0;
+  for (auto& x : fs::directory_iterator(d)) (void)x, ++entries;
+  EXPECT_EQ(entries, 1);  // just the directory that was in the way, no temporary file
+}
+
+// ---- procedural shapes against their formulas ----
+
+TEST(Procedural, SphereNormalsAreUnitAndEqualPositionOverRadius) {
+  const double r = 2.5;
+  Mesh m = sphere(r, 24, 12);
+  EXPECT_EQ(m.vertex_count(), size_t(25 * 13));
+  EXPECT_EQ(m.indices.size(), size_t(24 * (12 - 1) * 2 * 3));  // the pole rows have one triangle per quad
+  for (size_t i = 0; i < m.vertex_count(); ++i) {
+    ASSERT_NEAR(glm::length(m.normals[i]), 1.0, 1e-6);
+    ASSERT_NEAR(glm::distance(glm::dvec3(m.normals[i]), glm::dvec3(m.positions[i]) / r), 0.0, 1e-6) << i;
+    ASSERT_TRUE(m.uvs[i].x >= 0 && m.uvs[i].x <= 1 && m.uvs[i].y >= 0 && m.uvs[i].y <= 1) << i;
+  }
+  expect_near(m.normals[0], {0, 1, 0}, 0, "north pole");
+  expect_near(m.bounds.min, glm::dvec3(-r), 1e-6, "min");
+  expect_near(m.bounds.max, glm::dvec3(r), 1e-6, "max");
+  expect_consistent_winding(m);
+  // The tessellated surface area approaches 4 pi r^2 from below.
+  Mesh fine = sphere(1, 256, 128);
+  double area = 0;
+  for (size_t t = 0; t < fine.indices.size(); t += 3) {
+    glm::dvec3 a(fine.positions[fine.indices[t]]), b(fine.positions[fine.indices[t + 1]]),
+        c(fine.positions[fine.indices[t + 2]]);
+    area += glm::length(glm::cross(b - a, c - a)) / 2;
+  }
+  EXPECT_LT(area, 4 * kPi);
+  EXPECT_GT(area, 4 * kPi * 0.999);
+}
+
+TEST(Procedural, TorusNormalsPointFromTheTubeCentre) {
+  const double R = 1.5, r = 0.4;
+  Mesh m = torus(R, r, 32, 16);
+  EXPECT_EQ(m.vertex_count(), size_t(33 * 17));
+  EXPECT_EQ(m.indices.size(), size_t(32 * 16 * 6));
+  for (size_t i = 0; i < m.vertex_count(); ++i) {
+    glm::dvec3 p(m.positions[i]);
+    glm::dvec3 ring = R * glm::normalize(glm::dvec3(p.x, 0, p.z));  // nearest point of the tube's centre line
+    ASSERT_NEAR(glm::distance(p, ring), r, 1e-6);
+    ASSERT_NEAR(glm::distance(glm::dvec3(m.normals[i]), (p - ring) / r), 0.0, 1e-6) << i;
+  }
+  expect_near(m.bounds.max, {R + r, r, R + r}, 1e-6, "max");
+  expect_consistent_winding(m);
+}
+
+TEST(Procedural, PlaneFacesUpAndSpansItsSize) {
+  Mesh m = plane(3, 4);
+  EXPECT_EQ(m.vertex_count(), 25u);
+  EXPECT_EQ(m.indices.size(), size_t(4 * 4 * 6));
+  for (const auto& n : m.normals) ASSERT_EQ(n, glm::vec3(0, 1, 0));
+  expect_near(m.bounds.min, {-1.5, 0, -1.5}, 1e-7, "min");
+  expect_near(m.bounds.max, {1.5, 0, 1.5}, 1e-7, "max");
+  expect_near(glm::dvec3(m.uvs[24], 0), {1, 1, 0}, 0, "last uv");
+  expect_consistent_winding(m);
+}
+
+TEST(Procedural, BadSizesAreClearErrors) {
+  EXPECT_EQ(error_of([] { sphere(1, 2, 8); }), "sphere: segments must be 3..4096, got 2");
+  EXPECT_NE(error_of([] { sphere(-1); }).find("sphere: radius must be a positive number"), std::string::npos);
+  EXPECT_NE(error_of([] { torus(1, std::nan("")); }).find("torus: minor must be a positive number"), std::string::npos);
+  EXPECT_EQ(error_of([] { plane(1, 0); }), "plane: subdivisions must be 1..4096, got 0");
+}
+
+// ---- normals and transforms ----
+
+TEST(Mesh, AreaWeightedNormalsWeighByTriangleArea) {
+  // Two triangles share vertex 0: one of area 0.5 facing +Z, one of area 2 facing +Y.
+  std::vector<glm::vec3> p = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 2}, {2, 0, 0}};
+  std::vector<uint32_t> idx = {0, 1, 2, 0, 3, 4};
+  auto n = area_weighted_normals(p, idx);
+  expect_near(n[0], glm::normalize(glm::dvec3(0, 4, 1)), 1e-7, "shared vertex");  // 2*area each: (0,0,1) and (0,4,0)
+  expect_near(n[2], {0, 0, 1}, 1e-7, "first triangle only");
+  expect_near(n[4], {0, 1, 0}, 1e-7, "second triangle only");
+  // A vertex no triangle touches gets +Y rather than NaN.
+  p.push_back({5, 5, 5});
+  expect_near(area_weighted_normals(p, idx)[5], {0, 1, 0}, 0, "lonely vertex");
+}
+
+TEST(Mesh, TransformedUsesTheInverseTransposeForNormals) {
+  // A sphere stretched to an ellipsoid x^2/4 + y^2 + z^2 = 1: its normal is the gradient (x/4, y, z).
+  Mesh s = sphere(1, 32, 16);
+  Mesh e = transformed(s, glm::scale(glm::dmat4(1.0), glm::dvec3(2, 1, 1)));
+  for (size_t i = 0; i < e.vertex_count(); ++i) {
+    glm::dvec3 p(e.positions[i]);
+    ASSERT_NEAR(glm::distance(glm::dvec3(e.normals[i]), glm::normalize(glm::dvec3(p.x / 4, p.y, p.z))), 0, 1e-6);
+  }
+  expect_near(e.bounds.max, {2, 1, 1}, 1e-6, "stretched bounds");
+  Mesh mirrored = transformed(s, glm::scale(glm::dmat4(1.0), glm::dvec3(-1, 1, 1)));
+  expect_consistent_winding(mirrored);
+  EXPECT_NE(error_of([&] { transformed(s, glm::dmat4(0.0)); }).find("singular"), std::string::npos);
+}
+
+// ---- GPU upload ----
+
+TEST(GpuMesh, UploadsOnceAndDrawsFromTheCache) {
+  sn::gl::current();
+  Mesh m = sphere(1, 16, 8);
+  size_t before = GpuMesh::uploads();
+  GpuMesh& a = upload(m);
+  GpuMesh& b = upload(m);
+  EXPECT_EQ(&a, &b);
+  EXPECT_EQ(GpuMesh::uploads(), before + 1);
+  EXPECT_EQ(a.index_count(), m.indices.size());
+  EXPECT_FALSE(a.has_base_color());
+  EXPECT_NE(a.base_color_texture(), 0u);  // the 1x1 white stand-in
+  m.gpu.reset();  // after an edit: the next draw uploads again
+  upload(m);
+  EXPECT_EQ(GpuMesh::uploads(), before + 2);
+}
