@@ -26,6 +26,11 @@ local function encode_number(x)
   if x == math.huge then return '"inf"' end
   if x == -math.huge then return '"-inf"' end
   if x == math.floor(x) and math.abs(x) < 2^53 then return string.format("%d", x) end
+  -- The shortest text that reads back as the same double (0.7, not 0.69999999999999996).
+  for digits = 15, 16 do
+    local s = string.format("%." .. digits .. "g", x)
+    if tonumber(s) == x then return s end
+  end
   return string.format("%.17g", x)
 end
 

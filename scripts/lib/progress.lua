@@ -35,7 +35,7 @@ function Progress:text()
   local fresh = self.done - self.start_done
   local remaining = self.total - self.done
   local eta = fresh > 0 and elapsed / fresh * remaining or nil
-  local parts = { string.format("%s %d/%d runs", self.label, self.done, self.total) }
+  local parts = { string.format("%s %d/%d runs", self.label, math.floor(self.done + 1e-9), self.total) }
   if self.best then parts[#parts + 1] = "best " .. self.best end
   parts[#parts + 1] = "elapsed " .. duration(elapsed)
   if remaining > 0 then parts[#parts + 1] = "ETA " .. (eta and duration(eta) or "?") end
@@ -58,10 +58,14 @@ function Progress:update(done, best)
     self.out:write("\r", line, string.rep(" ", math.max(0, (self.last_len or 0) - #line)))
     self.last_len = #line
     self.out:flush()
-  elseif now - self.last_print >= self.every or self.done >= self.total then
-    self.out:write(self:text(), "\n")
-    self.out:flush()
-    self.last_print = now
+  else
+    local final = self.done >= self.total
+    if now - self.last_print >= self.every or (final and not self.final_printed) then
+      self.out:write(self:text(), "\n")
+      self.out:flush()
+      self.last_print = now
+      self.final_printed = final
+    end
   end
 end
 

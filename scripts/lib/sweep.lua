@@ -77,7 +77,8 @@ function Sweep:records()
   return out
 end
 
--- sweep:run{ train = function(group) -> results, one table per run of `group`, in order;
+-- sweep:run{ train = function(group, tick) -> results, one table per run of `group`, in order
+--                    (tick(fraction) may report how far the group is, for the progress line);
 --            group_key = function(run) -> key (runs with equal keys may train together; default
 --                        all), chunk = max runs per group (default all),
 --            score = function(result) -> number (lower is better; for the progress line),
@@ -128,7 +129,10 @@ function Sweep:run(o)
   local interrupted = false
   for _, group in ipairs(groups) do
     local t0 = sn.clock()
-    local out = o.train(group)
+    -- tick(f): the group is fraction f done (for the ETA while a long group trains).
+    local base = done
+    local function tick(f) progress:update(base + math.max(0, math.min(1, f)) * #group, best_text) end
+    local out = o.train(group, tick)
     assert(type(out) == "table" and #out == #group,
            string.format("sweep: train returned %s results for %d runs", type(out) == "table" and #out or type(out), #group))
     local seconds = sn.clock() - t0

@@ -1,0 +1,95 @@
+-- The sweep of tables 4.1 and 4.2: hidden layers x widths (2..12 each), seeds, the thesis'
+-- training settings; reported as the median over seeds of each run's minimum validation MSE,
+-- beside the thesis' value, with a plot of MSE against width per depth.
+local exp = require "lib.experiment"
+local thesis = require "lib.thesis"
+
+local M = {}
+
+-- M.run(E, { model = "phong", thesis = thesis.table_4_1, title = "...", sizes = {...} })
+function M.run(E, o)
+  local sizes = o.sizes or thesis.sizes
+  local seeds = E:pick(2, 10)
+  local epochs = E:pick(3, exp.epochs)
+  local desc = E:data_desc { model = o.model }
+  local runs, ids = {}, {}
+  for seed = 1, seeds do
+    for _, layers in ipairs(sizes) do
+      for _, width in ipairs(sizes) do
+        local id = string.format("L%02d-W%02d-s%02d", layers, width, seed)
+        runs[#runs + 1] = exp.run { id = id, hidden = exp.rep(width, layers), seed = seed, epochs = epochs, data = desc }
+        local k = layers .. "x" .. width
+        ids[k] = ids[k] or {}
+        table.insert(ids[k], id)
+      end
+    end
+  end
+  local records = E:sweep(runs)
+
+  local base = E:baseline(desc)
+  local rows = {}
+  for _, layers in ipairs(sizes) do
+    for _, width in ipairs(sizes) do
+      local list = ids[layers .. "x" .. width]
+      local m, found, bad = exp.median_of(records, list, "best_val_mse")
+      local t = o.thesis[layers] and o.thesis[layers][width]
+      rows[#rows + 1] = {
+        layers = layers, width = width, val_mse = m, thesis_val_mse = t,
+        ratio = (m and t) and m / t or nil, runs = found, diverged = bad,
+        best_epoch = exp.median_of(records, list, "best_epoch"),
+        vs_constant = m and m / base.constant or nil,
+      }
+    end
+  end
+  E.R:table {
+    title = o.title,
+    grids = { { title = "median minimum validation MSE, ours (thesis)", rows = "layers", cols = "width",
+                row_header = "hidden layers", col_header = "width", value = "val_mse", thesis = "thesis_val_mse",
+                format = "%.6f" } },
+    columns = {
+      { key = "layers", header = "hidden layers" }, { key = "width", header = "width" },
+      { key = "val_mse", header = "val MSE (ours)", format = "%.6f" },
+      { key = "thesis_val_mse", header = "val MSE (thesis)", format = "%.6f" },
+      { key = "ratio", header = "ours / thesis", format = "%.2f" },
+      { key = "vs_constant", header = "ours / constant predictor", format = "%.4f" },
+      { key = "best_epoch", header = "median best epoch", format = "%.1f" },
+      { key = "runs", header = "runs" }, { key = "diverged", header = "diverged" },
+    },
+    rows = rows,
+    notes = {
+      string.format("Median over %d seeds of each run's minimum validation MSE over %d epochs; batch %d, Adam(%g, %g, %g), tanh.",
+                    seeds, epochs, exp.batch, exp.adam.lr, exp.adam.beta1, exp.adam.beta2),
+      string.format("Constant predictor (training mean) on the same validation rows: MSE %.6f; all-zeros output: %.6f.",
+                    base.constant, base.zeros),
+    },
+  }
+
+  -- MSE against width, one line per depth; the thesis' as dashed points for comparison.
+  local series = {}
+  for _, layers in ipairs(sizes) do
+    local s = { name = string.format("%d layers", layers), x = {}, y = {}, style = "linespoints" }
+    for _, r in ipairs(rows) do
+      if r.layers == layers and r.val_mse then
+        s.x[#s.x + 1] = r.width
+        s.y[#s.y + 1] = r.val_mse
+      end
+    end
+    series[#series + 1] = s
+  end
+  local th = { name = "thesis (all depths)", x = {}, y = {}, style = "points", color = "#999999" }
+  for _, r in ipairs(rows) do
+    if r.thesis_val_mse then th.x[#th.x + 1] = r.width th.y[#th.y + 1] = r.thesis_val_mse end
+  end
+  series[#series + 1] = th
+  E:plot("plots/mse_vs_width.png", { title = o.title, xlabel = "neurons per hidden layer",
+                                     ylabel = "median min. validation MSE", logy = true, series = series, xtics = "2" })
+
+  return E:finish {
+    records = records,
+    config = { model = o.model, sizes = sizes, seeds = seeds, epochs = epochs, batch = exp.batch, adam = exp.adam,
+               data = desc },
+    summary = { rows = rows, constant_mse = base.constant, zeros_mse = base.zeros },
+  }
+end
+
+return M

@@ -1,0 +1,401 @@
+-- What every experiment script shares, so each script only says what it varies:
+--   local E = exp.start("table_4_1_phong", arg)      -- command line, results folder, clock
+--   local data = E:data { model = "phong" }           -- the thesis' dataset (built lazily)
+--   local records = E:sweep(runs)                     -- train, resume, shard; records by id
+--   E:finish { ... }                                  -- run.json
+-- A run's config says everything its result depends on (architecture, seed, epochs, Adam,
+-- dataset); runs sharing the training settings train together in one sn.train job.
+local sn = require "shadenet"
+local cli = require "lib.cli"
+local results = require "lib.results"
+local Sweep = require "lib.sweep"
+local stats = require "lib.stats"
+local json = require "lib.json"
+local plot = require "lib.plot"
+
+local exp = {}
+local E = {}
+E.__index = E
+
+-- The thesis' training settings (Adam(0.00025, 0.8, 0.9), batch 8, 20 epochs).
+exp.adam = { lr = 0.00025, beta1 = 0.8, beta2 = 0.9 }
+exp.batch = 8
+exp.epochs = 20
+
+-- ---- start ----------------------------------------------------------------------------------
+
+-- exp.start(name, arg [, { flags = {...extra cli flags}, backend = "auto" }]) -> E
+function exp.start(name, args, o)
+  o = o or {}
+  local list = {}
+  for i = 1, #(args or {}) do list[i] = args[i] end
+  local opts = cli.parse(list, name, o.flags)
+  local R = results.open(opts, name)
+  local self = setmetatable({
+    name = name, opts = opts, quick = opts.quick, R = R, dir = R.dir, args = list,
+    backend = opts.backend or o.backend or "auto",
+    t0 = sn.clock(), timings = {}, datasets = {}, scenes = {}, sweeps = {}, baselines = {},
+  }, E)
+  local shard = opts.shard and string.format(" shard %d/%d%s", opts.shard.index, opts.shard.count,
+                                             opts.shard.from and " (" .. opts.shard.from .. ")" or "") or ""
+  print(string.format("%s%s%s: results in %s/", name, opts.quick and " --quick" or "", shard, R.dir))
+  return self
+end
+
+-- Runs fn() and adds its wall time to timings[label].
+function E:time(label, fn, ...)
+  local t0 = sn.clock()
+  local a, b, c = fn(...)
+  self.timings[label] = (self.timings[label] or 0) + (sn.clock() - t0)
+  return a, b, c
+end
+
+-- q(quick_value, full_value)
+function E:pick(quick, full)
+  if self.quick then return quick end
+  return full
+end
+
+-- ---- data -----------------------------------------------------------------------------------
+
+-- The meshes: the cloth the thesis trains on, and a different mesh to test generalisation.
+exp.meshes = { train = "meshes/cloth.glb", test = "meshes/test.glb" }
+
+-- The scene the thesis' samples come from: the cloth mesh seen from an orbit of views. Full mode
+-- samples 64,149 covered pixels like the thesis; quick mode a few thousand from small images.
+function E:scene_options(o)
+  o = o or {}
+  return {
+    mesh = o.mesh or exp.meshes.train,
+    size = o.size or self:pick({ 160, 120 }, { 640, 480 }),
+    views = o.views or self:pick(4, 8),
+    elevation = o.elevation or 20,
+    light = o.light or { dir = { 0.5, 0.7, 0.6 } },
+  }
+end
+
+function exp.make_scene(so)
+  return sn.scene { mesh = so.mesh, size = so.size, views = { count = so.views, elevation = so.elevation },
+                    light = so.light }
+end
+
+-- The scene for options `o` (cached per process by its options).
+function E:scene(o)
+  local so = self:scene_options(o)
+  local key = json.encode(so)
+  if not self.scenes[key] then
+    self.scenes[key] = self:time("scene", exp.make_scene, so)
+  end
+  return self.scenes[key], so
+end
+
+-- The lighting model `spec` names: "phong", "ggx", "toon3", "textured_phong" or
+-- { name = "ggx", params = {...} }.
+function exp.model(spec)
+  if type(spec) == "string" then return sn.lighting.new(spec, exp.model_params[spec] or {}) end
+  return sn.lighting.new(spec.name, spec.params or exp.model_params[spec.name] or {})
+end
+
+-- The ground truths of chapter 4, as the ground-truth module defines them; the GGX metal is the
+-- gold of the thesis' figures.
+exp.model_params = {
+  phong = {},
+  ggx = {},
+  toon3 = {},
+  textured_phong = {},
+}
+
+-- E:data_desc{ model = "phong", inputs = {"normal", "view"}, color = "rgb", samples = N, seed = 1,
+--              mesh, size, views } -> the dataset's description (what a run's config records)
+function E:data_desc(o)
+  o = o or {}
+  if o.scene then return o end  -- already a description
+  return {
+    model = o.model or "phong",
+    inputs = o.inputs or { "normal", "view" },
+    color = o.color or "rgb",
+    samples = o.samples or self:pick(6000, 64149),
+    split = 0.8,
+    seed = o.seed or 1,
+    scene = self:scene_options(o),
+  }
+end
+
+-- E:data(options or description) -> Dataset, description. Built on first use only: a sweep
+-- whose runs are all finished renders nothing.
+function E:data(o)
+  local d = self:data_desc(o)
+  local key = json.encode(d)
+  local cached = self.datasets[key]
+  if cached then return cached.data, cached.desc end
+  local scene = self:scene(d.scene)
+  local data = self:time("dataset", function()
+    return scene:dataset { inputs = d.inputs, target = exp.model(d.model), color = d.color,
+                           samples = d.samples, split = d.split, seed = d.seed }
+  end)
+  local train, val = data:counts()
+  self.datasets[key] = { data = data, desc = d }
+  self.data_log = self.data_log or {}
+  self.data_log[#self.data_log + 1] = { desc = d, train_rows = train, val_rows = val }
+  print(string.format("%s: dataset %s -> %s: %d train / %d validation rows", self.name,
+                      table.concat(d.inputs, "+"), type(d.model) == "table" and d.model.name or d.model, train, val))
+  return data, d
+end
+
+-- MSE of two reference predictors on the validation rows: the training targets' mean (the best
+-- constant) and all zeros (where the thesis' sigmoid and ReLU networks stalled).
+function exp.baselines(data)
+  local ntrain, nval = data:counts()
+  local outs = data:outputs()
+  local mean = {}
+  for c = 1, outs do mean[c] = 0 end
+  for i = 1, ntrain do
+    local _, y = data:row("train", i)
+    for c = 1, outs do mean[c] = mean[c] + y[c] end
+  end
+  for c = 1, outs do mean[c] = mean[c] / ntrain end
+  local const, zeros = 0, 0
+  for i = 1, nval do
+    local _, y = data:row("val", i)
+    for c = 1, outs do
+      const = const + (y[c] - mean[c]) ^ 2
+      zeros = zeros + y[c] ^ 2
+    end
+  end
+  return { constant = const / (nval * outs), zeros = zeros / (nval * outs), mean = mean }
+end
+
+-- Baselines of the dataset `o` names, remembered for run.json.
+function E:baseline(o)
+  local data, d = self:data(o)
+  local key = json.encode(d)
+  if not self.baselines[key] then
+    self.baselines[key] = exp.baselines(data)
+    self.baseline_log = self.baseline_log or {}
+    self.baseline_log[#self.baseline_log + 1] = { data = d, constant = self.baselines[key].constant,
+                                                  zeros = self.baselines[key].zeros }
+  end
+  return self.baselines[key]
+end
+
+-- ---- networks and runs ----------------------------------------------------------------------
+
+-- "8x12", "4x6", or "13x4+6x4" for mixed widths.
+function exp.arch_name(hidden)
+  local parts, i = {}, 1
+  while i <= #hidden do
+    local j = i
+    while j < #hidden and hidden[j + 1] == hidden[i] do j = j + 1 end
+    parts[#parts + 1] = { w = hidden[i], n = j - i + 1 }
+    i = j + 1
+  end
+  if #parts == 1 then return string.format("%dx%d", parts[1].n, parts[1].w) end
+  local s = {}
+  for k, p in ipairs(parts) do s[k] = string.format("%dx%d", p.n, p.w) end
+  return table.concat(s, "+")
+end
+
+function exp.rep(width, count)
+  local t = {}
+  for i = 1, count do t[i] = width end
+  return t
+end
+
+-- A run: { id, config }. The config holds the network, the training settings and the dataset's
+-- description, so a finished run is reused only for exactly the same experiment.
+-- o = { id, hidden, seed, activation, slope, color, epochs, batch, adam, data (desc), keep_params }
+function exp.run(o)
+  local adam = o.adam or exp.adam
+  return {
+    id = o.id,
+    config = {
+      hidden = o.hidden,
+      outputs = o.outputs or 3,
+      activation = o.activation or "tanh",
+      slope = o.slope,
+      color = o.data.color,
+      seed = o.seed,
+      epochs = o.epochs or exp.epochs,
+      batch = o.batch or exp.batch,
+      adam = { lr = adam.lr, beta1 = adam.beta1, beta2 = adam.beta2 },
+      data = o.data,
+      keep_params = o.keep_params or nil,
+      tag = o.tag,
+    },
+  }
+end
+
+-- The number of inputs of the attributes a dataset reads.
+exp.attribute_width = { normal = 3, view = 3, position = 3, uv = 2, base_color = 3 }
+function exp.input_count(inputs)
+  local n = 0
+  for _, a in ipairs(inputs) do
+    n = n + (exp.attribute_width[a] or error("unknown input attribute '" .. tostring(a) .. "'", 0))
+  end
+  return n
+end
+
+-- A fresh network for a run's config (its seed picks the initial weights).
+function exp.make_net(c)
+  return sn.mlp { inputs = exp.input_count(c.data.inputs), hidden = c.hidden, outputs = c.outputs,
+                  activation = c.activation, slope = c.slope, color = c.color, seed = c.seed,
+                  input_names = c.data.inputs }
+end
+
+-- The trained network of a finished record (needs keep_params in its config).
+function exp.net_from_record(rec)
+  assert(rec.result.params, "run " .. rec.id .. " kept no parameters (keep_params)")
+  local net = exp.make_net(rec.config)
+  net:set_params(rec.result.params)
+  return net
+end
+
+-- Runs that may train in one job: same data, epochs, batch, Adam settings and seed. The seed
+-- is also the job's shuffle seed, so a run's result never depends on which runs it shared a
+-- job with: shards and resumed sweeps give exactly the unsharded numbers.
+function exp.group_key(run)
+  local c = run.config
+  return json.encode { c.data, c.epochs, c.batch, c.adam, c.seed }
+end
+
+-- Trains one group; returns one result table per run. tick(fraction) hears how far it is.
+function E:train_group(group, tick)
+  local c = group[1].config
+  local data = self:data(c.data)
+  local nets = {}
+  for i, r in ipairs(group) do nets[i] = exp.make_net(r.config) end
+  local epochs_done, total = 0, #group * c.epochs
+  local out = self:time("training", sn.train, {
+    nets = nets, data = data, epochs = c.epochs, batch = c.batch, adam = c.adam, seed = c.seed,
+    backend = self.backend, keep = "best",
+    progress = tick and function()
+      epochs_done = epochs_done + 1
+      tick(epochs_done / total)
+    end or nil,
+  })
+  local res = {}
+  for i, r in ipairs(group) do
+    local o = out[i]
+    local p = nil
+    if r.config.keep_params then p = nets[i]:params() end
+    res[i] = {
+      best_val_mse = o.best_val_mse, best_epoch = o.best_epoch,
+      val_mse = o.val_mse, train_mse = o.train_mse,
+      wall_time = o.wall_time, job_nets = #group, steps = o.steps, sample_steps_per_s = o.sample_steps_per_s,
+      diverged = o.diverged, dead_units = o.dead_units, backend = o.backend, device = o.device,
+      params = p,
+    }
+    if not stats.finite(o.best_val_mse) then
+      io.stderr:write(string.format("%s: run %s has no finite validation MSE (diverged at epoch %s)\n", self.name,
+                                    r.id, o.diverged and tostring(o.diverged.epoch) or "?"))
+    end
+  end
+  return res
+end
+
+-- E:sweep(runs [, { chunk = N, label }]) -> records by id (every finished run found, this shard's
+-- and any merged in), interrupted
+function E:sweep(runs, o)
+  o = o or {}
+  local sweep = Sweep.new { dir = self.dir, runs = runs, shard = self.opts.shard, label = o.label or self.name }
+  if exp.report_only then
+    -- scripts/merge.lua: report what the shards ran, train nothing.
+    local missing = #sweep:pending()
+    if missing > 0 then
+      io.stderr:write(string.format("%s: %d of %d runs are in none of the merged folders; the table shows – for them\n",
+                                    self.name, missing, #runs))
+    end
+    local by_id = {}
+    for _, rec in ipairs(sweep:records()) do by_id[rec.id] = rec end
+    self.sweeps[#self.sweeps + 1] = { runs = #runs, finished = #runs - missing, merged = true }
+    return by_id, false
+  end
+  local finished, interrupted = sweep:run {
+    train = function(group, tick) return self:train_group(group, tick) end,
+    group_key = exp.group_key,
+    chunk = o.chunk,
+    score = function(r) return r.best_val_mse end,
+    describe = function(run) return exp.arch_name(run.config.hidden) .. " seed " .. run.config.seed end,
+  }
+  self.sweeps[#self.sweeps + 1] = { runs = #runs, slice = #sweep:slice(), finished = finished, interrupted = interrupted }
+  self.interrupted = self.interrupted or interrupted
+  local by_id = {}
+  for _, rec in ipairs(sweep:records()) do by_id[rec.id] = rec end
+  return by_id, interrupted
+end
+
+-- Median of `field` over the records of `ids`; also the number of runs found and of those
+-- without a finite value (diverged).
+function exp.median_of(records, ids, field)
+  local vals, found = {}, 0
+  for _, id in ipairs(ids) do
+    local rec = records[id]
+    if rec then
+      found = found + 1
+      vals[#vals + 1] = rec.result[field]
+    end
+  end
+  local m, bad = stats.median(vals)
+  return m, found, bad or 0
+end
+
+-- ---- outputs --------------------------------------------------------------------------------
+
+-- E:plot("plots/NAME.png", spec for lib.plot.lines) -> path; the CSV lands beside it.
+function E:plot(rel, p)
+  p.path = self.R:path(rel)
+  local path, dropped = plot.lines(p)
+  local w = self.R.written
+  w[#w + 1] = rel
+  w[#w + 1] = (rel:gsub("%.png$", ".csv"))
+  if dropped > 0 then
+    io.stderr:write(string.format("%s: %s: %d non-finite points left out of the plot\n", self.name, rel, dropped))
+  end
+  return path
+end
+
+-- E:figure("figures/NAME.png", image) -> path (written atomically).
+function E:figure(rel, img)
+  img:save(self.R:path(rel))
+  self.R.written[#self.R.written + 1] = rel
+  return self.R:path(rel)
+end
+
+-- ---- finish ---------------------------------------------------------------------------------
+
+-- E:finish{ config = {...}, summary = {...} }: writes run.json and prints where everything is.
+-- When Ctrl-C stopped a sweep, the partial results are written and the process exits with 130.
+function E:finish(o)
+  o = o or {}
+  local total = sn.clock() - self.t0
+  self.timings.total = total
+  local backend_used, device
+  for _, rec in pairs(o.records or {}) do
+    backend_used, device = rec.result.backend, rec.result.device
+    break
+  end
+  local env = results.environment()
+  local info = {
+    experiment = self.name,
+    command = "shadenet scripts/" .. self.name .. ".lua " .. table.concat(self.args, " "),
+    quick = self.quick,
+    shard = self.opts.shard,
+    backend = { requested = self.backend, used = backend_used, device = device },
+    environment = env,
+    datasets = self.data_log,
+    baselines = self.baseline_log,
+    config = o.config,
+    summary = o.summary,
+    sweeps = self.sweeps,
+    timings = self.timings,
+    interrupted = self.interrupted or nil,
+    files = self.R.written,
+  }
+  self.R:json("run.json", info)
+  print(string.format("%s: done in %.1f s; wrote %s/{%s}", self.name, total, self.dir,
+                      table.concat(self.R.written, ",")))
+  if self.interrupted then os.exit(130) end
+  return info
+end
+
+return exp

@@ -1,0 +1,104 @@
+-- Merges the results of a sweep run in shards (--shard i/n, a Slurm job array, GNU parallel)
+-- into the table a single run gives:
+--   shadenet scripts/merge.lua [--out DIR] SHARD_DIR...
+-- Every shard folder holds run.json (which experiment, quick or full) and runs/*.json (one file
+-- per finished run). The run files are copied into DIR/runs (default: the shards' parent folder,
+-- e.g. results/table_4_1_phong for results/table_4_1_phong/shard-*), then the experiment script
+-- runs on DIR: every run is finished, so it trains nothing and writes the table, plots and
+-- run.json from the merged runs.
+package.path = (arg and arg[0] and arg[0]:match("^(.*)/[^/]*$") or ".") .. "/?.lua;" .. package.path
+local sn = require "shadenet"
+local results = require "lib.results"
+local json = require "lib.json"
+
+local usage = "usage: shadenet scripts/merge.lua [--out DIR] SHARD_DIR..."
+local dirs, out = {}, nil
+local i = 1
+while i <= #arg do
+  local a = arg[i]
+  if a == "--out" then
+    out = arg[i + 1]
+    if not out then error("merge.lua: --out needs a folder\n" .. usage, 0) end
+    i = i + 1
+  elseif a == "--help" then
+    print(usage)
+    os.exit(0)
+  elseif a:sub(1, 2) == "--" then
+    error("merge.lua: unknown option '" .. a .. "' (valid: --out DIR, --help)\n" .. usage, 0)
+  else
+    dirs[#dirs + 1] = (a:gsub("/+$", ""))
+  end
+  i = i + 1
+end
+if #dirs == 0 then error("merge.lua: no shard folders given\n" .. usage, 0) end
+
+-- Which experiment, in which mode: every shard must agree.
+local name, quick, backend
+for _, d in ipairs(dirs) do
+  if sn.fs.exists(d) ~= "folder" then error("merge.lua: '" .. d .. "' is not a folder", 0) end
+  local info = results.read_json(d .. "/run.json")
+  if not info then
+    error("merge.lua: " .. d .. "/run.json is missing: not a results folder, or its run was stopped before the end", 0)
+  end
+  if name and info.experiment ~= name then
+    error(string.format("merge.lua: %s is from %s, %s from %s; merge one experiment at a time", dirs[1], name, d,
+                        tostring(info.experiment)), 0)
+  end
+  if quick ~= nil and info.quick ~= quick then
+    error("merge.lua: " .. d .. " was run " .. (info.quick and "with" or "without") .. " --quick, " .. dirs[1] ..
+          " was not: their runs are different experiments", 0)
+  end
+  name, quick = info.experiment, info.quick
+  backend = backend or (info.backend and info.backend.requested)
+end
+local script = "scripts/" .. name .. ".lua"
+if arg[0] then script = (arg[0]:match("^(.*)/[^/]*$") or ".") .. "/" .. name .. ".lua" end
+if sn.fs.exists(script) ~= "file" then error("merge.lua: the experiment script " .. script .. " is missing", 0) end
+
+if not out then
+  local parent = dirs[1]:match("^(.*)/[^/]+$") or "."
+  for _, d in ipairs(dirs) do
+    if (d:match("^(.*)/[^/]+$") or ".") ~= parent then
+      error("merge.lua: the shard folders have different parents; say where the merged results go with --out DIR", 0)
+    end
+  end
+  out = parent
+end
+
+-- Copy the run files. The same run in two folders must hold the same result (a sweep is
+-- deterministic); a different one means two different experiments were mixed up.
+sn.fs.mkdir(out .. "/runs")
+local copied, same = 0, 0
+for _, d in ipairs(dirs) do
+  local rd = d .. "/runs"
+  if sn.fs.exists(rd) == "folder" then
+    for _, f in ipairs(sn.fs.list(rd)) do
+      if f:match("%.json$") and not f:match("^%.") then
+        local text = results.read_file(rd .. "/" .. f)
+        local target = out .. "/runs/" .. f
+        local have = results.read_json(target)
+        if have then
+          local new = results.read_json(rd .. "/" .. f)
+          if json.encode(have.config) ~= json.encode(new.config) then
+            error("merge.lua: " .. rd .. "/" .. f .. " and " .. target .. " hold the same run with different configurations", 0)
+          end
+          same = same + 1
+        else
+          results.write_file(target, text)
+          copied = copied + 1
+        end
+      end
+    end
+  end
+end
+print(string.format("merge.lua: %d run files from %d folders into %s/runs (%d already there)", copied, #dirs, out, same))
+
+-- The experiment itself writes the merged table: nothing is left to train.
+arg = { [0] = script, [-1] = arg[-1], "--out", out }
+if quick then arg[#arg + 1] = "--quick" end
+if backend then
+  arg[#arg + 1] = "--backend"
+  arg[#arg + 1] = backend
+end
+require("lib.experiment").report_only = true
+dofile(script)
