@@ -100,7 +100,11 @@ void save_checkpoint(const Mlp& net, const std::string& path) {
 
   namespace fs = std::filesystem;
   const fs::path target(path);
-  if (target.has_parent_path()) fs::create_directories(target.parent_path());
+  if (target.has_parent_path()) {
+    std::error_code ec;
+    fs::create_directories(target.parent_path(), ec);
+    if (ec) throw std::runtime_error("cannot write " + path + ": cannot create folder " + target.parent_path().string() + ": " + ec.message());
+  }
   const std::string tmp = path + ".tmp" + std::to_string(::getpid());
   {
     std::ofstream f(tmp, std::ios::binary | std::ios::trunc);

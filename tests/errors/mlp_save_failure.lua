@@ -1,0 +1,7 @@
+-- expect: cannot write .*/net\.snmlp: cannot create folder .*: Not a directory
+local sn = require "shadenet"
+local blocker = os.tmpname()  -- a file, so nothing can be saved below it
+local net = sn.mlp { inputs = 6, hidden = {8} }
+local ok, err = pcall(net.save, net, blocker .. "/net.snmlp")
+os.remove(blocker)
+error(err, 0)

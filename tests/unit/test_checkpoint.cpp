@@ -1,0 +1,159 @@
+// Checkpoints: a round trip keeps everything bit for bit; damaged files are clear errors; a
+// failed save leaves nothing behind.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <cstring>
+#include <iterator>
+
+#include <unistd.h>
+
+#include "nn/checkpoint.h"
+
+namespace sn::nn {
+namespace {
+
+namespace fs = std::filesystem;
+
+// One scratch folder per test process, removed when the process ends.
+struct Scratch {
+  fs::path dir = fs::temp_directory_path() / ("shadenet_ckpt_" + std::to_string(::getpid()));
+  ~Scratch() {
+    std::error_code ec;
+    fs::remove_all(dir, ec);
+  }
+};
+fs::path scratch(const std::string& name) {
+  static Scratch s;
+  fs::create_directories(s.dir);
+  return s.dir / name;
+}
+
+Mlp sample_net() {
+  MlpSpec s;
+  s.inputs = 6;
+  s.hidden = {13, 13, 6};
+  s.outputs = 3;
+  s.activation = Activation::leaky_relu;
+  s.slope = 0.2;
+  s.output_activation = Activation::sigmoid;
+  s.color = ColorSpace::hsv;
+  Mlp net(s, Init::he, 7);
+  net.input_names = {"normal", "view"};
+  net.trained_steps = 123456789012ull;
+  net.best_params = net.params;
+  net.best_params[3] = -1.5f;
+  net.best_val_mse = 0.000134;
+  net.best_epoch = 17;
+  return net;
+}
+
+std::string read_all(const fs::path& p) {
+  std::ifstream f(p, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+}
+void write_all(const fs::path& p, const std::string& s) {
+  std::ofstream f(p, std::ios::binary | std::ios::trunc);
+  f.write(s.data(), std::streamsize(s.size()));
+}
+
+std::string load_error(const fs::path& p) {
+  try {
+    load_checkpoint(p.string());
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "(loaded)";
+}
+
+TEST(Checkpoint, RoundTripKeepsEverything) {
+  Mlp net = sample_net();
+  auto path = scratch("nested/dir/net.snmlp");  // parent folders are created
+  save_checkpoint(net, path.string());
+  Mlp back = load_checkpoint(path.string());
+  EXPECT_EQ(back.spec.describe(), net.spec.describe());
+  EXPECT_TRUE(back.spec.same_shape(net.spec));
+  EXPECT_EQ(back.spec.color, ColorSpace::hsv);
+  EXPECT_EQ(back.params, net.params);
+  EXPECT_EQ(back.best_params, net.best_params);
+  EXPECT_EQ(back.best_val_mse, net.best_val_mse);
+  EXPECT_EQ(back.best_epoch, 17);
+  EXPECT_EQ(back.input_names, net.input_names);
+  EXPECT_EQ(back.trained_steps, net.trained_steps);
+  // Header: magic, version 1, payload size = file size - 24.
+  std::string bytes = read_all(path);
+  EXPECT_EQ(bytes.substr(0, 5), "snmlp");
+  EXPECT_EQ(uint8_t(bytes[8]), kCheckpointVersion);
+  uint32_t size;
+  std::memcpy(&size, bytes.data() + 12, 4);
+  EXPECT_EQ(size + 24u, bytes.size());
+  // No temporary file is left beside it.
+  int files = 0;
+  for (auto& e : fs::directory_iterator(path.parent_path())) files += e.is_regular_file();
+  EXPECT_EQ(files, 1);
+}
+
+TEST(Checkpoint, DamagedFilesAreClearErrors) {
+  auto path = scratch("damaged.snmlp");
+  save_checkpoint(sample_net(), path.string());
+  const std::string good = read_all(path);
+  auto bad = scratch("bad.snmlp");
+
+  write_all(bad, good.substr(0, good.size() - 10));
+  EXPECT_NE(load_error(bad).find("truncated"), std::string::npos) << load_error(bad);
+  write_all(bad, good.substr(0, 10));
+  EXPECT_NE(load_error(bad).find("bad magic"), std::string::npos) << load_error(bad);
+
+  std::string flipped = good;
+  flipped[good.size() / 2] ^= 0x10;
+  write_all(bad, flipped);
+  EXPECT_NE(load_error(bad).find("corrupt (checksum mismatch)"), std::string::npos) << load_error(bad);
+
+  std::string newer = good;
+  newer[8] = 2;
+  write_all(bad, newer);
+  EXPECT_NE(load_error(bad).find("format version 2, this build reads 1"), std::string::npos) << load_error(bad);
+
+  write_all(bad, "hello, not a network");
+  EXPECT_NE(load_error(bad).find("not a shadenet network checkpoint"), std::string::npos);
+  EXPECT_NE(load_error(scratch("missing.snmlp")).find("cannot open checkpoint"), std::string::npos);
+  EXPECT_EQ(load_error(path), "(loaded)");
+}
+
+TEST(Checkpoint, FailedSaveLeavesTheOldFile) {
+  auto dir = scratch("readonly");
+  fs::create_directories(dir);
+  auto path = dir / "net.snmlp";
+  Mlp net = sample_net();
+  save_checkpoint(net, path.string());
+  const std::string before = read_all(path);
+  // Saving onto a path whose parent is a file fails; nothing is created.
+  auto blocked = path / "inner.snmlp";
+  try {
+    save_checkpoint(net, blocked.string());
+    ADD_FAILURE() << "saved below a file";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("cannot write " + blocked.string() + ": cannot create folder"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_FALSE(fs::exists(blocked));
+  EXPECT_EQ(read_all(path), before);
+  // Renaming onto a folder fails after the data was written: the temporary file goes away.
+  auto folder = dir / "folder.snmlp";
+  fs::create_directories(folder / "inside");
+  EXPECT_THROW(save_checkpoint(net, folder.string()), std::exception);
+  int entries = 0;
+  for (auto& e : fs::directory_iterator(dir)) {
+    ++entries;
+    EXPECT_EQ(e.path().string().find(".tmp"), std::string::npos) << e.path();
+  }
+  EXPECT_EQ(entries, 2);  // net.snmlp and folder.snmlp
+  // A later save replaces the file whole.
+  net.params[0] = 42.0f;
+  save_checkpoint(net, path.string());
+  EXPECT_EQ(load_checkpoint(path.string()).params[0], 42.0f);
+}
+
+}  // namespace
+}  // namespace sn::nn
