@@ -1,6 +1,7 @@
 // sn.scene{...}: meshes, cameras, an image size and a light; scene:gbuffer{...} ("GBuffer"),
 // scene:dataset{...} (a cached "Dataset"), sn.render_truth(gbuffer, model, light) and the
 // dataset cache counters. scene:render lives in shadenet.scene.lua.
+#include <cmath>
 #include <cstdio>
 
 #include "lua/binding.h"
@@ -312,6 +313,70 @@ int w_render_truth(lua_State* L) {
   return 1;
 }
 
+// A flat Lua array of numbers as float vectors of `width` components.
+template <class V>
+std::vector<V> flat_vectors(lua_State* L, const Options& o, const char* key, int width) {
+  auto v = o.numbers(key, -1);
+  if (v.size() % std::size_t(width))
+    throw Error(o.where(key) + ": " + std::to_string(v.size()) + " numbers are not whole groups of " +
+                std::to_string(width));
+  std::vector<V> out(v.size() / width);
+  for (std::size_t i = 0; i < out.size(); ++i)
+    for (int c = 0; c < width; ++c) out[i][c] = float(v[i * width + c]);
+  (void)L;
+  return out;
+}
+
+// sn.procedural_mesh{ positions = {x1,y1,z1, x2,...}, normals = {...} (computed when left out),
+//                     uvs = {u1,v1, ...}, indices = {i1,i2,i3, ...} (1-based, counter-clockwise
+//                     seen from outside), texture = Image (base colour), name = "cloth" } -> Mesh
+// For generators written in Lua (meshes/make_meshes.lua); mesh:save(path) writes the .glb.
+int w_procedural_mesh(lua_State* L) {
+  Options o(L, 1, "sn.procedural_mesh", {"positions", "normals", "uvs", "indices", "texture", "name"});
+  scene::Mesh m;
+  m.name = o.string("name", "procedural");
+  m.positions = flat_vectors<glm::vec3>(L, o, "positions", 3);
+  if (m.positions.empty()) throw Error("sn.procedural_mesh option 'positions' is required (x, y, z per vertex)");
+  auto idx = o.numbers("indices", -1);
+  if (idx.empty() || idx.size() % 3)
+    throw Error("sn.procedural_mesh option 'indices': three 1-based vertex indices per triangle expected, got " +
+                std::to_string(idx.size()) + " numbers");
+  for (std::size_t i = 0; i < idx.size(); ++i) {
+    if (idx[i] < 1 || idx[i] > double(m.positions.size()) || idx[i] != std::floor(idx[i]))
+      throw Error("sn.procedural_mesh option 'indices' element " + std::to_string(i + 1) + ": " +
+                  std::to_string(idx[i]) + " is not a vertex index 1.." + std::to_string(m.positions.size()));
+    m.indices.push_back(uint32_t(idx[i]) - 1);
+  }
+  if (o.has("normals")) {
+    m.normals = flat_vectors<glm::vec3>(L, o, "normals", 3);
+    for (auto& n : m.normals) {
+      float len = glm::length(n);
+      if (!(len > 0)) throw Error("sn.procedural_mesh option 'normals': a normal is zero or not a number");
+      n /= len;
+    }
+  } else {
+    m.normals = scene::area_weighted_normals(m.positions, m.indices);
+    m.normals_computed = true;
+  }
+  m.has_normals = true;
+  if (o.has("uvs")) {
+    m.uvs = flat_vectors<glm::vec2>(L, o, "uvs", 2);
+    m.has_uvs = true;
+  } else {
+    m.uvs.assign(m.positions.size(), glm::vec2(0.0f));
+  }
+  if (o.has("texture")) {
+    if (!m.has_uvs) throw Error("sn.procedural_mesh option 'texture' needs 'uvs' to map it");
+    int t = o.push("texture");
+    m.base_color = check<io::Image>(L, t, "Image");
+    lua_pop(L, 1);
+  }
+  m.bounds = scene::compute_bounds(m.positions);
+  scene::validate(m);
+  push(L, std::make_shared<scene::Mesh>(std::move(m)), "Mesh");
+  return 1;
+}
+
 // sn.dataset_stats() -> { builds, hits, gbuffer_renders, cached }
 int w_dataset_stats(lua_State* L) {
   auto s = scene::dataset_stats();
@@ -344,7 +409,8 @@ void open_scene(lua_State* L) {
   define_box_type<scene::GBuffer>(L, kGBufferType, gb_methods, wrap<w_gb_tostring>);
   static const luaL_Reg fns[] = {SN_FN("scene", w_new), SN_FN("render_truth", w_render_truth),
                                  SN_FN("dataset_stats", w_dataset_stats),
-                                 SN_FN("dataset_cache_clear", w_dataset_cache_clear), {nullptr, nullptr}};
+                                 SN_FN("dataset_cache_clear", w_dataset_cache_clear),
+                                 SN_FN("procedural_mesh", w_procedural_mesh), {nullptr, nullptr}};
   luaL_register(L, nullptr, fns);
 }
 
