@@ -10,7 +10,7 @@ local M = {}
 function M.run(E, o)
   local sizes = o.sizes or thesis.sizes
   local seeds = E:pick(2, 10)
-  local epochs = E:pick(3, exp.epochs)
+  local epochs = E:pick(10, exp.epochs)
   local desc = E:data_desc { model = o.model }
   local runs, ids = {}, {}
   for seed = 1, seeds do

@@ -16,6 +16,7 @@ local plot = require "lib.plot"
 local exp = {}
 local E = {}
 E.__index = E
+exp.Experiment = E  -- the methods every experiment object has (scripts may wrap them)
 
 -- The thesis' training settings (Adam(0.00025, 0.8, 0.9), batch 8, 20 epochs).
 exp.adam = { lr = 0.00025, beta1 = 0.8, beta2 = 0.9 }
@@ -59,7 +60,7 @@ end
 -- ---- data -----------------------------------------------------------------------------------
 
 -- The meshes: the cloth the thesis trains on, and a different mesh to test generalisation.
-exp.meshes = { train = "meshes/cloth.glb", test = "meshes/test.glb" }
+exp.meshes = { train = "meshes/cloth.glb", test = "meshes/test_blob.glb" }
 
 -- The scene the thesis' samples come from: the cloth mesh seen from an orbit of views. Full mode
 -- samples 64,149 covered pixels like the thesis; quick mode a few thousand from small images.
@@ -114,7 +115,7 @@ function E:data_desc(o)
     model = o.model or "phong",
     inputs = o.inputs or { "normal", "view" },
     color = o.color or "rgb",
-    samples = o.samples or self:pick(6000, 64149),
+    samples = o.samples or self:pick(8000, 64149),
     split = 0.8,
     seed = o.seed or 1,
     scene = self:scene_options(o),
@@ -193,6 +194,16 @@ function exp.arch_name(hidden)
   local s = {}
   for k, p in ipairs(parts) do s[k] = string.format("%dx%d", p.n, p.w) end
   return table.concat(s, "+")
+end
+
+-- Weights and biases of a network: sum over layers of (in + 1) * out.
+function exp.param_count(inputs, hidden, outputs)
+  local n, prev = 0, inputs
+  for _, w in ipairs(hidden) do
+    n = n + (prev + 1) * w
+    prev = w
+  end
+  return n + (prev + 1) * outputs
 end
 
 function exp.rep(width, count)
@@ -359,6 +370,63 @@ function E:figure(rel, img)
   img:save(self.R:path(rel))
   self.R.written[#self.R.written + 1] = rel
   return self.R:path(rel)
+end
+
+-- ---- image grids: truth | networks, with error heatmaps under them ---------------------------
+
+local function blank() return sn.image.new { width = 1, height = 1, channels = 3, fill = 1 } end
+
+-- E:compare{ file = "figures/NAME.png", title = "...", model = "ggx" (the ground truth),
+--            nets = { {net = Mlp, label = "8x12"}, ... },
+--            meshes = { {mesh = path, label = "training mesh", views = {1, 3}}, ... },
+--            size = {w, h}, view_count = 8, max = error at the top of the colour bar (default: the
+--            largest error in the figure, shared by every heatmap so they compare) }
+-- One pair of rows per (mesh, view): the truth and each network's rendering, captioned with its
+-- MSE over the covered pixels, then the |error| heatmaps under them. Writes the PNG and a CSV
+-- of the MSEs beside it; returns the MSE rows.
+function E:compare(o)
+  local truth_model = exp.model(o.model)
+  local size = o.size or self:pick({ 160, 120 }, { 320, 240 })
+  local renders, rows = {}, {}
+  local max_err = 0
+  for _, m in ipairs(o.meshes) do
+    local scene = self:scene { mesh = m.mesh, size = size, views = m.view_count or o.view_count or 8 }
+    for _, v in ipairs(m.views or { 1 }) do
+      local truth = self:time("render", scene.render, scene, truth_model, { view = v })
+      local entry = { label = string.format("%s, view %d", m.label, v), truth = truth, nets = {} }
+      for k, n in ipairs(o.nets) do
+        local img = self:time("render", scene.render, scene, n.net, { view = v })
+        local mse = sn.image.mse(truth, img, { channels = 3, mask = truth })
+        local diff = sn.image.diff(truth, img)
+        local _, mx = sn.image.heatmap(diff, { mask = truth, colorbar = false })
+        max_err = math.max(max_err, mx)
+        entry.nets[k] = { img = img, diff = diff, mse = mse }
+        rows[#rows + 1] = { mesh = m.label, view = v, network = n.label, mse = mse }
+      end
+      renders[#renders + 1] = entry
+    end
+  end
+  local max = o.max or max_err
+  local panels, row_labels = {}, {}
+  for _, e in ipairs(renders) do
+    panels[#panels + 1] = { image = e.truth, caption = "ground truth" }
+    for k, n in ipairs(e.nets) do
+      panels[#panels + 1] = { image = n.img, caption = string.format("%s  MSE %.2e", o.nets[k].label, n.mse) }
+    end
+    row_labels[#row_labels + 1] = e.label
+    panels[#panels + 1] = { image = blank(), caption = "" }
+    for _, n in ipairs(e.nets) do
+      local h = sn.image.heatmap(n.diff, { mask = e.truth, max = max, label = "|error|" })
+      panels[#panels + 1] = { image = h, caption = "" }
+    end
+    row_labels[#row_labels + 1] = "error"
+  end
+  local img = sn.image.grid { panels = panels, columns = #o.nets + 1, row_labels = row_labels, title = o.title,
+                              caption_size = size[1] >= 300 and 14 or 11 }
+  self:figure(o.file, img)
+  local csv = o.file:gsub("%.png$", ".csv")
+  self.R:write(csv, results.csv({ { key = "mesh" }, { key = "view" }, { key = "network" }, { key = "mse" } }, rows))
+  return rows
 end
 
 -- ---- finish ---------------------------------------------------------------------------------

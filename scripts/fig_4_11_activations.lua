@@ -1,0 +1,102 @@
+-- Figure 4.11: validation curves of a GGX network (8 hidden layers x 8) with each activation
+-- the thesis tried: tanh, sigmoid, ReLU and leaky ReLU with a = 0.05, 0.1, 0.2 (Adam lr 0.00003,
+-- 800 epochs in full mode). The thesis saw sigmoid and ReLU stall at the all-zeros output's
+-- MSE; the dead-unit diagnostics (per hidden layer: ReLU units active on no sample, sigmoid/tanh
+-- units saturated on more than 99% of the samples) say why a curve stalls.
+--   shadenet scripts/fig_4_11_activations.lua [--quick] [--shard i/n] [--out DIR] [--backend cpu|gl|auto]
+package.path = (arg and arg[0] and arg[0]:match("^(.*)/[^/]*$") or ".") .. "/?.lua;" .. package.path
+local exp = require "lib.experiment"
+local stats = require "lib.stats"
+local thesis = require "lib.thesis"
+
+local E = exp.start("fig_4_11_activations", arg)
+local adam = { lr = 0.00003, beta1 = exp.adam.beta1, beta2 = exp.adam.beta2 }
+local epochs = E:pick(20, 800)
+local seeds = E:pick(1, 3)
+local acts = {
+  { id = "tanh", label = "tanh", activation = "tanh" },
+  { id = "sigmoid", label = "sigmoid", activation = "sigmoid" },
+  { id = "relu", label = "ReLU", activation = "relu" },
+  { id = "leaky005", label = "leaky ReLU a=0.05", activation = "leaky_relu", slope = 0.05 },
+  { id = "leaky010", label = "leaky ReLU a=0.1", activation = "leaky_relu", slope = 0.1 },
+  { id = "leaky020", label = "leaky ReLU a=0.2", activation = "leaky_relu", slope = 0.2 },
+}
+local desc = E:data_desc { model = "ggx" }
+local runs = {}
+for seed = 1, seeds do
+  for _, a in ipairs(acts) do
+    runs[#runs + 1] = exp.run { id = string.format("%s-s%02d", a.id, seed), hidden = exp.rep(8, 8), seed = seed,
+                                epochs = epochs, adam = adam, activation = a.activation, slope = a.slope, data = desc }
+  end
+end
+local records = E:sweep(runs)
+local base = E:baseline(desc)
+
+local rows, series = {}, {}
+for _, a in ipairs(acts) do
+  local x, y = {}, {}
+  for e = 1, epochs do
+    local vals = {}
+    for seed = 1, seeds do
+      local rec = records[string.format("%s-s%02d", a.id, seed)]
+      if rec and rec.result.val_mse[e] then vals[#vals + 1] = rec.result.val_mse[e] end
+    end
+    x[e], y[e] = e, stats.median(vals) or 0 / 0
+  end
+  series[#series + 1] = { name = a.label, x = x, y = y }
+  local ids = {}
+  for seed = 1, seeds do ids[seed] = string.format("%s-s%02d", a.id, seed) end
+  local best = exp.median_of(records, ids, "best_val_mse")
+  -- Dead units: per hidden layer, the mean over seeds; the row shows the mean over layers and
+  -- the worst layer.
+  local per_layer = {}
+  for _, id in ipairs(ids) do
+    local rec = records[id]
+    if rec then
+      for l, f in ipairs(rec.result.dead_units or {}) do per_layer[l] = (per_layer[l] or 0) + f / seeds end
+    end
+  end
+  local layer_text = {}
+  for l, f in ipairs(per_layer) do layer_text[l] = string.format("%.2f", f) end
+  local final = y[epochs]
+  rows[#rows + 1] = {
+    activation = a.label, best_val_mse = best, final_val_mse = final,
+    vs_zeros = best and best / base.zeros or nil, vs_constant = best and best / base.constant or nil,
+    stalled = best and (best > 0.9 * base.constant and "yes" or "no") or nil,
+    dead_mean = stats.mean(per_layer), dead_max = stats.max(per_layer), dead_per_layer = table.concat(layer_text, " "),
+  }
+end
+series[#series + 1] = { name = "all-zeros output", x = { 1, epochs }, y = { base.zeros, base.zeros }, color = "#888888" }
+series[#series + 1] = { name = "constant predictor", x = { 1, epochs }, y = { base.constant, base.constant }, color = "#bbbbbb" }
+E:plot("plots/fig_4_11_activations.png", {
+  title = string.format("Figure 4.11 — GGX, 8 x 8, lr 0.00003: validation MSE by activation (median of %d seeds)", seeds),
+  xlabel = "epoch", ylabel = "validation MSE", logy = true, logx = epochs >= 100, series = series })
+
+E.R:table {
+  title = "Figure 4.11 — activations: best and final validation MSE, and dead units",
+  columns = {
+    { key = "activation", align = "left" },
+    { key = "best_val_mse", header = "min val MSE", format = "%.6f" },
+    { key = "final_val_mse", header = "final val MSE", format = "%.6f" },
+    { key = "vs_zeros", header = "min / all-zeros MSE", format = "%.3f" },
+    { key = "vs_constant", header = "min / constant MSE", format = "%.3f" },
+    { key = "stalled", header = "stalled (> 0.9 x constant)" },
+    { key = "dead_mean", header = "dead units (mean over layers)", format = "%.2f" },
+    { key = "dead_max", header = "dead units (worst layer)", format = "%.2f" },
+    { key = "dead_per_layer", header = "dead units per hidden layer", align = "left" },
+  },
+  rows = rows,
+  notes = {
+    string.format("Median of %d seeds; %d epochs, Adam(%g, %g, %g), batch %d; default (Xavier) initialisation for every activation.",
+                  seeds, epochs, adam.lr, adam.beta1, adam.beta2, exp.batch),
+    string.format("Our all-zeros output MSE is %.6f and the constant predictor's %.6f (the thesis' all-zeros MSE on its data: %.5f).",
+                  base.zeros, base.constant, thesis.fig_4_11.stall_mse),
+    "Dead units, per hidden layer over the training rows: ReLU / leaky ReLU units never positive; tanh units with |a| > 0.99 and sigmoid units below 0.01 or above 0.99 on more than 99% of the rows.",
+  },
+}
+E:finish {
+  records = records,
+  config = { model = "ggx", hidden = exp.rep(8, 8), activations = acts, seeds = seeds, epochs = epochs, adam = adam,
+             batch = exp.batch, data = desc },
+  summary = { rows = rows, zeros_mse = base.zeros, constant_mse = base.constant, thesis_stall_mse = thesis.fig_4_11.stall_mse },
+}

@@ -1,0 +1,15 @@
+-- Table 4.1: how well networks of 2..12 hidden layers x 2..12 neurons learn the Phong model
+-- (normal + view -> RGB on the cloth mesh), median of 10 seeds of the minimum validation MSE
+-- over 20 epochs, beside the thesis' numbers.
+--   shadenet scripts/table_4_1_phong.lua [--quick] [--shard i/n] [--out DIR] [--backend cpu|gl|auto]
+package.path = (arg and arg[0] and arg[0]:match("^(.*)/[^/]*$") or ".") .. "/?.lua;" .. package.path
+local exp = require "lib.experiment"
+local thesis = require "lib.thesis"
+local depth_width = require "lib.depth_width"
+
+local E = exp.start("table_4_1_phong", arg)
+depth_width.run(E, {
+  model = "phong",
+  thesis = thesis.table_4_1,
+  title = "Table 4.1 — Phong: median minimum validation MSE by hidden layers and width",
+})

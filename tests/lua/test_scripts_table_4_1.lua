@@ -1,0 +1,71 @@
+-- scripts/table_4_1_phong.lua --quick: the table's shape and numbers, shard + merge = one run,
+-- a resumed run = an uninterrupted one, Ctrl-C keeps finished runs and the re-run completes them.
+local C = require "script_check"
+local thesis = require "lib.thesis"
+
+local script = "scripts/table_4_1_phong.lua"
+local root = C.tmpdir("t41")
+local A = root .. "/whole"
+C.ok(script, { "--quick", "--out", A })
+C.assert_files(A, { "table.md", "table.csv", "run.json", "plots/mse_vs_width.png", "plots/mse_vs_width.csv" })
+
+local rows, head = C.csv(A .. "/table.csv")
+assert(#rows == 36, "36 rows (6 depths x 6 widths), got " .. #rows)
+for _, k in ipairs { "layers", "width", "val_mse", "thesis_val_mse", "ratio", "vs_constant", "runs", "diverged" } do
+  local found = false
+  for _, h in ipairs(head) do found = found or h == k end
+  assert(found, "table.csv lacks column " .. k)
+end
+C.assert_range(rows, "val_mse", 1e-6, 0.2, "table_4_1")
+local info = C.json(A .. "/run.json")
+local constant = info.baselines[1].constant
+assert(C.finite(constant) and constant > 0.01, "the constant predictor's MSE is recorded: " .. tostring(constant))
+local best, below = math.huge, 0
+for _, r in ipairs(rows) do
+  assert(r.thesis_val_mse == thesis.table_4_1[r.layers][r.width], "thesis value beside ours")
+  assert(r.runs == 2 and r.diverged == 0, "2 quick seeds per cell, none diverged")
+  best = math.min(best, r.val_mse)
+  if r.val_mse < constant / 5 then below = below + 1 end
+end
+assert(best < constant / 30, string.format("the best network (%.6f) beats the constant predictor (%.6f) by 30x", best, constant))
+assert(below >= 30, below .. " of 36 architectures beat the constant predictor by 5x")
+-- Wider and deeper helps: the 12 x 12 cell beats the 2 x 2 cell.
+local function cell(l, w) for _, r in ipairs(rows) do if r.layers == l and r.width == w then return r.val_mse end end end
+assert(cell(12, 12) < cell(2, 2) / 3, "12x12 learns Phong far better than 2x2")
+assert(info.quick == true and info.backend.used == "cpu" and info.environment.gl.renderer, "run.json records mode, backend, renderer")
+local md = C.read(A .. "/table.md")
+assert(md:find("| hidden layers \\ width |", 1, true) and md:find("(0.002158)", 1, true), "markdown grid with thesis values")
+
+-- Sharded in two, merged: the same table.
+local S1, S2, M = root .. "/s1", root .. "/s2", root .. "/merged"
+C.ok(script, { "--quick", "--shard", "1/2", "--out", S1 })
+C.ok(script, { "--quick", "--out", S2 }, { SLURM_ARRAY_TASK_ID = "1", SLURM_ARRAY_TASK_COUNT = "2", SLURM_ARRAY_TASK_MIN = "0" })
+assert(#C.csv(S1 .. "/table.csv") == 36, "a shard's table lists every cell")
+local out = C.ok("scripts/merge.lua", { S1, S2, "--out", M })
+assert(out:find("72 run files from 2 folders"), "merge copies both shards' runs:\n" .. out)
+assert(C.read(M .. "/table.csv") == C.read(A .. "/table.csv"), "shard + merge = unsharded table")
+local ra, rm = C.run_results(A), C.run_results(M)
+for id, r in pairs(ra) do assert(rm[id] == r, "run " .. id .. " differs after merging") end
+
+-- Resumed: half the runs already there.
+local R = root .. "/resumed"
+local kept = C.copy_runs(A, R, function(i) return i % 2 == 0 end)
+out = C.ok(script, { "--quick", "--out", R })
+assert(out:find("resuming, " .. kept .. " of 72 runs already finished"), "resume message:\n" .. out)
+assert(C.read(R .. "/table.csv") == C.read(A .. "/table.csv"), "a resumed run = an uninterrupted one")
+
+-- Ctrl-C after the first training group: exit 130, finished runs kept; the re-run completes.
+local I = root .. "/interrupted"
+local code, iout = C.run_interrupted(script, { "--quick", "--out", I })
+assert(code == 130, "an interrupted sweep exits 130, got " .. tostring(code) .. ":\n" .. iout)
+assert(iout:find("stopped by Ctrl%-C; 36 of 72 runs finished and kept"), "interrupt message:\n" .. iout)
+out = C.ok(script, { "--quick", "--out", I })
+assert(out:find("resuming, 36 of 72"), "the re-run resumes:\n" .. out)
+assert(C.read(I .. "/table.csv") == C.read(A .. "/table.csv"), "interrupted + resumed = uninterrupted")
+
+-- An unknown option lists the valid ones.
+code, out = C.run(script, { "--quik" })
+assert(code ~= 0 and out:find("unknown option '%-%-quik' %(valid: %-%-quick, %-%-shard i/n, %-%-out DIR"), out)
+
+C.rm(root)
+print("table_4_1 script: ok")

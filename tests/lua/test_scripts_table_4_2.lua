@@ -1,0 +1,24 @@
+-- scripts/table_4_2_ggx.lua --quick: the GGX table's shape, thesis values and numbers.
+local C = require "script_check"
+local thesis = require "lib.thesis"
+
+local dir = C.tmpdir("t42")
+C.ok("scripts/table_4_2_ggx.lua", { "--quick", "--out", dir })
+C.assert_files(dir, { "table.md", "table.csv", "run.json", "plots/mse_vs_width.png", "plots/mse_vs_width.csv" })
+local rows = C.csv(dir .. "/table.csv")
+assert(#rows == 36, "36 cells")
+C.assert_range(rows, "val_mse", 1e-7, 0.05, "table_4_2")
+local info = C.json(dir .. "/run.json")
+local constant = info.baselines[1].constant
+local best = math.huge
+for _, r in ipairs(rows) do
+  assert(r.thesis_val_mse == thesis.table_4_2[r.layers][r.width], "thesis value beside ours")
+  assert(math.abs(r.vs_constant - r.val_mse / constant) < 1e-6 * r.vs_constant, "ours / constant column")
+  best = math.min(best, r.val_mse)
+end
+-- GGX (a mostly dark metal with narrow highlights) is slow to learn: even quick mode's best
+-- network halves the constant predictor's error.
+assert(best < constant / 2, string.format("best %.6f vs constant %.6f", best, constant))
+assert(info.config.model == "ggx" and info.config.data.model == "ggx", "run.json configuration")
+C.rm(dir)
+print("table_4_2 script: ok")
