@@ -116,7 +116,7 @@ function E:data_desc(o)
     inputs = o.inputs or { "normal", "view" },
     color = o.color or "rgb",
     samples = o.samples or self:pick(8000, 64149),
-    split = 0.8,
+    split = o.split or 0.8,
     seed = o.seed or 1,
     scene = self:scene_options(o),
   }
@@ -232,6 +232,9 @@ function exp.run(o)
       data = o.data,
       keep_params = o.keep_params or nil,
       tag = o.tag,
+      backend = o.backend,               -- nil: the script's --backend
+      job = o.alone and o.id or nil,     -- alone: trained in a job of its own (for timings)
+      copies = o.copies,                 -- train this many networks (seeds seed, seed+1, ...) in its job
     },
   }
 end
@@ -266,19 +269,28 @@ end
 -- job with: shards and resumed sweeps give exactly the unsharded numbers.
 function exp.group_key(run)
   local c = run.config
-  return json.encode { c.data, c.epochs, c.batch, c.adam, c.seed }
+  return json.encode { c.data, c.epochs, c.batch, c.adam, c.seed, c.backend or "", c.job or "" }
 end
 
 -- Trains one group; returns one result table per run. tick(fraction) hears how far it is.
 function E:train_group(group, tick)
   local c = group[1].config
   local data = self:data(c.data)
-  local nets = {}
-  for i, r in ipairs(group) do nets[i] = exp.make_net(r.config) end
-  local epochs_done, total = 0, #group * c.epochs
+  local nets, first = {}, {}
+  for i, r in ipairs(group) do
+    first[i] = #nets + 1
+    for k = 1, r.config.copies or 1 do
+      local cfg = r.config
+      if k > 1 then
+        cfg = setmetatable({ seed = r.config.seed + k - 1 }, { __index = r.config })
+      end
+      nets[#nets + 1] = exp.make_net(cfg)
+    end
+  end
+  local epochs_done, total = 0, #nets * c.epochs
   local out = self:time("training", sn.train, {
     nets = nets, data = data, epochs = c.epochs, batch = c.batch, adam = c.adam, seed = c.seed,
-    backend = self.backend, keep = "best",
+    backend = c.backend or self.backend, keep = "best",
     progress = tick and function()
       epochs_done = epochs_done + 1
       tick(epochs_done / total)
@@ -286,13 +298,13 @@ function E:train_group(group, tick)
   })
   local res = {}
   for i, r in ipairs(group) do
-    local o = out[i]
+    local o = out[first[i]]
     local p = nil
-    if r.config.keep_params then p = nets[i]:params() end
+    if r.config.keep_params then p = nets[first[i]]:params() end
     res[i] = {
       best_val_mse = o.best_val_mse, best_epoch = o.best_epoch,
       val_mse = o.val_mse, train_mse = o.train_mse,
-      wall_time = o.wall_time, job_nets = #group, steps = o.steps, sample_steps_per_s = o.sample_steps_per_s,
+      wall_time = o.wall_time, job_nets = #nets, steps = o.steps, sample_steps_per_s = o.sample_steps_per_s,
       diverged = o.diverged, dead_units = o.dead_units, backend = o.backend, device = o.device,
       params = p,
     }
