@@ -1,4 +1,5 @@
-// shadenet [options] script.lua [args...]: runs a Lua experiment script, headless by default.
+// shadenet [options] script.lua [args...]: runs a Lua experiment script, headless by default;
+// --watch keeps it live (runtime/app/live_loop.h).
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -6,6 +7,7 @@
 
 #include <lua.hpp>
 
+#include "app/live_loop.h"
 #include "app/options.h"
 #include "gl/context.h"
 #include "lua/module.h"
@@ -23,17 +25,12 @@ int traceback(lua_State* L) {
   return 1;
 }
 
-// Runs the script; prints "script.lua:LINE: message" and a traceback on error.
-int run_script(const sn::app::Options& opt) {
+// A Lua state with the shadenet module and the global `arg`, as the standalone lua interpreter sets it.
+lua_State* new_state(const sn::app::Options& opt) {
   lua_State* L = luaL_newstate();
-  if (!L) {
-    fprintf(stderr, "shadenet: cannot create a Lua state\n");
-    return 1;
-  }
+  if (!L) return nullptr;
   luaL_openlibs(L);
   sn::lua::install(L);
-
-  // The global `arg`, as the standalone lua interpreter sets it.
   lua_createtable(L, int(opt.script_args.size()), 2);
   lua_pushstring(L, opt.program.c_str());  // arg[-1]: this executable, for scripts that run shadenet again
   lua_rawseti(L, -2, -1);
@@ -44,7 +41,11 @@ int run_script(const sn::app::Options& opt) {
     lua_rawseti(L, -2, int(i + 1));
   }
   lua_setglobal(L, "arg");
+  return L;
+}
 
+// Runs the script once; prints "script.lua:LINE: message" and a traceback on error.
+int run_script(lua_State* L, const sn::app::Options& opt) {
   int status = 0;
   lua_pushcfunction(L, traceback);
   if (luaL_loadfile(L, opt.script.c_str()) != 0) {
@@ -57,8 +58,22 @@ int run_script(const sn::app::Options& opt) {
       status = 1;
     }
   }
-  lua_close(L);  // runs every __gc while the GL context still lives
+  lua_settop(L, 0);
   return status;
+}
+
+// True when the script loaded shadenet and called sn.live.show{...}: a window then stays open on it.
+bool shows_a_view(lua_State* L) {
+  lua_getglobal(L, "package");
+  lua_getfield(L, -1, "loaded");
+  lua_getfield(L, -1, "shadenet.live");
+  bool has = false;
+  if (lua_istable(L, -1)) {
+    lua_getfield(L, -1, "_has_view");
+    has = lua_isfunction(L, -1) && lua_pcall(L, 0, 1, 0) == 0 && lua_toboolean(L, -1);
+  }
+  lua_settop(L, 0);
+  return has;
 }
 
 }  // namespace
@@ -87,7 +102,24 @@ int main(int argc, char** argv) {
     fprintf(stderr, "shadenet: %s\n", e.what());
     return 1;
   }
-  int status = run_script(opt);
+  lua_State* L = new_state(opt);
+  if (!L) {
+    fprintf(stderr, "shadenet: cannot create a Lua state\n");
+    return 1;
+  }
+  int status = 0;
+  sn::app::LiveOptions live{opt.script, opt.script_args, true, false};
+  if (opt.watch) {
+    status = sn::app::run_live(L, live);
+  } else {
+    status = run_script(L, opt);
+    // A windowed script that declared a view with sn.live.show keeps its window open on it.
+    if (status == 0 && opt.window && shows_a_view(L)) {
+      live.watch = false, live.already_ran = true;
+      status = sn::app::run_live(L, live);
+    }
+  }
+  lua_close(L);  // runs every __gc while the GL context still lives
   sn::gl::destroy_current();
   return status;
 }

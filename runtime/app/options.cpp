@@ -10,6 +10,9 @@ std::string usage() {
          "options:\n"
          "  --window           open a GLFW window instead of running headless (EGL)\n"
          "  --size WxH         window size (default 960x720)\n"
+         "  --watch            live mode: re-run the script when it, a module it requires or a shader\n"
+         "                     it uses is saved (sn.keep values survive); Lua lines on stdin run in\n"
+         "                     the script's state (see docs/live-mode.md)\n"
          "  --help             print this help\n"
          "  --version          print the version, GL renderer and GL version\n";
 }
@@ -28,13 +31,14 @@ Options parse_options(int argc, char** argv) {
     if (a == "--help" || a == "-h") o.help = true;
     else if (a == "--version" || a == "-v") o.version = true;
     else if (a == "--window") o.window = true;
+    else if (a == "--watch") o.watch = true;
     else if (a == "--size") {
       if (i + 1 >= argc) throw std::invalid_argument("--size needs a value such as 1280x720");
       std::string v = argv[++i];
       if (sscanf(v.c_str(), "%dx%d", &o.width, &o.height) != 2 || o.width < 1 || o.height < 1)
         throw std::invalid_argument("--size: expected WIDTHxHEIGHT, got '" + v + "'");
     } else
-      throw std::invalid_argument("unknown option '" + a + "' (valid: --window, --size, --help, --version)");
+      throw std::invalid_argument("unknown option '" + a + "' (valid: --window, --watch, --size, --help, --version)");
   }
   if (i < argc) {
     o.script = argv[i++];

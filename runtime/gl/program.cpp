@@ -142,7 +142,9 @@ void Program::set_uniform(const std::string& name, const std::vector<double>& v)
   }
 }
 
-std::shared_ptr<Program> get_program(const ProgramDesc& desc) {
+namespace {
+
+std::shared_ptr<Program> build_program(const ProgramDesc& desc) {
   // The key is the preprocessed text, so an edited file or include is a new program.
   std::string key;
   if (!desc.compute.empty()) {
@@ -161,7 +163,40 @@ std::shared_ptr<Program> get_program(const ProgramDesc& desc) {
   return p;
 }
 
-void clear_program_cache() { cache().clear(); }
+std::function<void(const std::string&)>& fallback_sink() {
+  static std::function<void(const std::string&)> f;
+  return f;
+}
+
+// The last program that built for each request (paths + defines), for set_program_fallback.
+std::map<std::string, std::shared_ptr<Program>>& last_good() {
+  static std::map<std::string, std::shared_ptr<Program>> m;
+  return m;
+}
+
+}  // namespace
+
+void set_program_fallback(std::function<void(const std::string&)> sink) { fallback_sink() = std::move(sink); }
+
+std::shared_ptr<Program> get_program(const ProgramDesc& desc) {
+  std::string request = desc.compute + "|" + desc.vertex + "|" + desc.fragment;
+  for (const auto& [k, v] : desc.defines) request += "|" + k + "=" + v;
+  try {
+    auto p = build_program(desc);
+    last_good()[request] = p;
+    return p;
+  } catch (const std::exception& e) {
+    auto it = last_good().find(request);
+    if (!fallback_sink() || it == last_good().end()) throw;
+    fallback_sink()(e.what());
+    return it->second;
+  }
+}
+
+void clear_program_cache() {
+  cache().clear();
+  last_good().clear();
+}
 std::size_t program_cache_size() { return cache().size(); }
 
 void dispatch(Program& p, unsigned gx, unsigned gy, unsigned gz) {

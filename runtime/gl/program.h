@@ -1,6 +1,7 @@
 // Compute and graphics programs built from files under shaders/, specialised by #defines and
 // cached by their full preprocessed source, so the same request never compiles twice.
 #pragma once
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -52,6 +53,11 @@ class Program {
 std::shared_ptr<Program> get_program(const ProgramDesc& desc);
 void clear_program_cache();
 std::size_t program_cache_size();
+
+// Live mode: when a program that built before fails after an edit of its files, get_program
+// hands back the last good one and reports the error to `sink` instead of throwing, so the
+// window keeps running while the shader is broken. Empty = throw (the default).
+void set_program_fallback(std::function<void(const std::string& error)> sink);
 
 // Runs `groups` workgroups of the bound compute program and orders its writes before later reads.
 void dispatch(Program& p, unsigned gx, unsigned gy = 1, unsigned gz = 1);

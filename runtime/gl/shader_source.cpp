@@ -15,7 +15,13 @@ namespace sn::gl {
 
 namespace {
 
+std::function<void(const std::string&)>& file_observer() {
+  static std::function<void(const std::string&)> f;
+  return f;
+}
+
 std::string read_file(const fs::path& p) {
+  if (file_observer()) file_observer()(fs::absolute(p).string());  // before reading: a missing file is watched too
   std::ifstream in(p, std::ios::binary);
   if (!in) throw std::runtime_error("cannot read shader file '" + display_path(p.string()) + "'");
   std::stringstream ss;
@@ -91,6 +97,10 @@ std::string prolog(const Defines& defines) {
 }  // namespace
 
 std::string ShaderSource::key() const { return text; }
+
+void set_shader_file_observer(std::function<void(const std::string&)> observer) {
+  file_observer() = std::move(observer);
+}
 
 std::string shader_root() {
   if (const char* env = getenv("SHADENET_SHADERS"); env && *env) return fs::absolute(env).string();

@@ -1,6 +1,7 @@
 // GLSL files as the driver sees them: #version and #define lines prepended, #include "file"
 // expanded with #line markers, and driver logs mapped back to `shaders/FILE.glsl:LINE`.
 #pragma once
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -26,6 +27,10 @@ std::string resolve_shader_path(const std::string& path);
 std::string display_path(const std::string& path);
 
 ShaderSource preprocess(const std::string& path, const Defines& defines);
+
+// Live mode watches every shader file programs read: when set, `observer` receives the absolute
+// path of each file preprocess() opens (the file itself and its #includes). Empty = off.
+void set_shader_file_observer(std::function<void(const std::string& absolute_path)> observer);
 // Same, from text held in memory (named `name` in messages).
 ShaderSource preprocess_text(const std::string& name, const std::string& text, const Defines& defines);
 

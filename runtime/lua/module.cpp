@@ -31,6 +31,7 @@ int open_core(lua_State* L) {
   open_mesh(L);
   open_camera(L);
   open_draw(L);
+  open_live(L);
   open_mlp(L);
   open_dataset(L);
   open_train(L);

@@ -20,6 +20,7 @@ void open_mesh(lua_State* L);
 void open_camera(lua_State* L);
 void open_draw(lua_State* L);
 void open_context(lua_State* L);
+void open_live(lua_State* L);
 void open_mlp(lua_State* L);
 void open_dataset(lua_State* L);
 void open_train(lua_State* L);

@@ -14,6 +14,8 @@ function Buffer.ffi(buf, ctype)
                     or (kind == "int32" or kind == "ivec4") and "int32_t*" or "float*")
   return ffi.cast(ctype, buf:pointer())
 end
+
+require "shadenet.live"  -- sn.keep, sn.live.*, sn.record
 require "shadenet.scene"  -- scene:render
 
 return sn

@@ -1,0 +1,75 @@
+// The window's controls, from GLFW callbacks into a plain state: an orbit camera (left drag
+// turns it, the wheel zooms), the light direction (right drag or the arrow keys), the view
+// mode and one-shot actions (screenshot, recording, ...). The live loop reads it each frame.
+#pragma once
+#include <array>
+#include <string>
+
+struct GLFWwindow;
+
+namespace sn::app {
+
+enum class Mode { network, truth, error, side };
+const char* mode_name(Mode m);
+bool parse_mode(const std::string& name, Mode& out);
+
+// A direction around a centre: azimuth from +Z towards +X, elevation above the XZ plane
+// (degrees), as sn.orbit places its cameras.
+struct Orbit {
+  double azimuth = 0, elevation = 0, distance = 1;
+  std::array<double, 3> center{0, 0, 0};
+  std::array<double, 3> position() const;  // center + distance * direction
+  static Orbit from(const std::array<double, 3>& center, const std::array<double, 3>& point);
+};
+
+struct ViewState {
+  Mode mode = Mode::network;
+  Orbit camera;
+  double fov = 45;
+  bool camera_moved = false;  // false: the script's own camera, exactly
+  Orbit light;  // distance 1: a unit direction towards the light
+  bool light_moved = false;
+  double error_scale_factor = 1;  // [ and ] halve / double the heatmap's scale
+};
+
+struct Actions {
+  bool screenshot = false, record = false, print_view = false, quit = false, help = false;
+  bool present = false;  // the window was uncovered: show the last frame again (no new render)
+};
+
+class Input {
+ public:
+  // Installs the callbacks on `window` (its user pointer is this object).
+  void attach(GLFWwindow* window);
+  // Sets the camera and light the script asked for; what the user moved since is dropped
+  // only when `reset` (the script's camera or light changed, or the Home key).
+  void set_initial(const Orbit& camera, double fov, const Orbit& light, Mode mode, bool reset);
+
+  ViewState& view() { return view_; }
+  // True once since the last call when the view changed (a redraw is due).
+  bool take_dirty();
+  Actions take_actions();
+  static const char* help();  // the key bindings, for the terminal
+
+  // What the callbacks do (public so tests and the loop can drive them without a window).
+  void drag(double dx, double dy, bool light);  // pixels
+  void zoom(double wheel_steps);
+  void key(int glfw_key, int mods);
+
+ private:
+  static void on_cursor(GLFWwindow* w, double x, double y);
+  static void on_button(GLFWwindow* w, int button, int action, int mods);
+  static void on_scroll(GLFWwindow* w, double dx, double dy);
+  static void on_key(GLFWwindow* w, int key, int scancode, int action, int mods);
+  static void on_refresh(GLFWwindow* w);
+
+  ViewState view_;
+  Orbit initial_camera_, initial_light_;
+  Mode initial_mode_ = Mode::network;
+  bool dirty_ = true;
+  Actions actions_;
+  int dragging_ = -1;  // 0 = camera, 1 = light
+  double last_x_ = 0, last_y_ = 0;
+};
+
+}  // namespace sn::app

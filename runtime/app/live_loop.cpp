@@ -1,0 +1,510 @@
+#include "app/live_loop.h"
+
+#include <GLFW/glfw3.h>
+
+#include <array>
+#include <chrono>
+#include <condition_variable>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <set>
+#include <sstream>
+
+#include "app/file_watcher.h"
+#include "app/input.h"
+#include "app/repl.h"
+#include "gl/buffer.h"  // gl::finish
+#include "gl/context.h"
+#include "gl/program.h"
+#include "gl/render_target.h"
+#include "gl/shader_source.h"
+#include "io/image.h"
+#include "lua/binding.h"
+
+namespace sn::app {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+std::string first_line(const std::string& s) { return s.substr(0, s.find('\n')); }
+
+std::string read_all(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return in ? ss.str() : std::string("\x01missing");
+}
+
+// The script's top-level locals (`local net = ...`), taken as its main chunk returns, so that
+// console lines can name them as the script does.
+int g_chunk_ref = LUA_NOREF, g_locals_ref = LUA_NOREF;
+void capture_locals(lua_State* L, lua_Debug* ar) {
+  if (ar->event != LUA_HOOKRET || !lua_getinfo(L, "f", ar)) return;
+  lua_rawgeti(L, LUA_REGISTRYINDEX, g_chunk_ref);
+  bool main_chunk = lua_rawequal(L, -1, -2);
+  lua_pop(L, 2);
+  if (!main_chunk) return;
+  lua_newtable(L);
+  for (int i = 1;; ++i) {
+    const char* name = lua_getlocal(L, ar, i);
+    if (!name) break;
+    if (name[0] == '(') lua_pop(L, 1);  // temporaries such as "(for index)"
+    else lua_setfield(L, -2, name);
+  }
+  if (g_locals_ref != LUA_NOREF) luaL_unref(L, LUA_REGISTRYINDEX, g_locals_ref);
+  g_locals_ref = luaL_ref(L, LUA_REGISTRYINDEX);
+}
+
+int traceback(lua_State* L) {
+  const char* msg = lua_tostring(L, 1);
+  if (!msg) msg = lua_pushfstring(L, "(error object is a %s value)", luaL_typename(L, 1));
+  luaL_traceback(L, L, msg, 1);
+  return 1;
+}
+
+// The loop's wake-up call from the watcher and console threads: an empty GLFW event for a
+// window, a condition variable headless.
+class Waker {
+ public:
+  explicit Waker(bool window) : window_(window) {}
+  void wake() {
+    if (window_) {
+      glfwPostEmptyEvent();
+      return;
+    }
+    std::lock_guard<std::mutex> lock(mutex_);
+    woken_ = true;
+    cv_.notify_one();
+  }
+  // Sleeps until woken or `timeout` seconds (headless only; a window waits in poll()).
+  void wait(double timeout) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    cv_.wait_for(lock, std::chrono::duration<double>(timeout), [&] { return woken_; });
+    woken_ = false;
+  }
+
+ private:
+  bool window_;
+  std::mutex mutex_;
+  std::condition_variable cv_;
+  bool woken_ = false;
+};
+
+class Loop {
+ public:
+  Loop(lua_State* L, const LiveOptions& o) : L_(L), o_(o), ctx_(gl::current()), waker_(ctx_.windowed()) {}
+  ~Loop() {
+    gl::set_shader_file_observer(nullptr);
+    gl::set_program_fallback(nullptr);
+    if (target_ref_ != LUA_NOREF) luaL_unref(L_, LUA_REGISTRYINDEX, target_ref_);
+    if (live_ref_ != LUA_NOREF) luaL_unref(L_, LUA_REGISTRYINDEX, live_ref_);
+  }
+  int run();
+
+ private:
+  bool push_live(const char* fn);  // pushes sn.live[fn]; false (nothing pushed) when missing
+  bool call(const char* fn, int nargs, int nresults, std::string* error = nullptr);
+  void run_script();
+  void sync_view(bool force_reset);
+  void update_watch_set();
+  bool files_changed();
+  void console();
+  void take_requests();
+  void redraw();
+  void present_last();
+  void actions();
+  void set_status();
+  void report(const std::string& message);
+
+  lua_State* L_;
+  LiveOptions o_;
+  gl::Context& ctx_;
+  Waker waker_;
+  Input input_;
+  std::unique_ptr<FileWatcher> watcher_;
+  std::unique_ptr<StdinReader> stdin_;
+  std::unique_ptr<Console> console_;
+  int live_ref_ = LUA_NOREF, target_ref_ = LUA_NOREF;
+
+  std::set<std::string> shader_files_;           // every shader file a program read
+  std::vector<std::string> fallback_errors_;     // broken programs replaced by their last good build
+  std::map<std::string, std::string> contents_;  // watched file -> content when last run
+  std::vector<std::string> watched_;
+
+  std::string script_error_, frame_error_, shader_error_, last_reported_, title_;
+  std::string snapshot_;
+  double exit_after_ = 0, frame_ms_ = 0;
+  bool dirty_ = true, quit_ = false, prompt_after_frame_ = false;
+  std::string shown_title_;
+  long frame_ = 0;
+  std::array<double, 9> initial_{};  // eye, target, light dir of the script's view
+  std::string initial_mode_;
+  std::pair<int, int> drawn_size_{0, 0};
+};
+
+bool Loop::push_live(const char* fn) {
+  lua_rawgeti(L_, LUA_REGISTRYINDEX, live_ref_);
+  lua_getfield(L_, -1, fn);
+  lua_remove(L_, -2);
+  if (lua_isfunction(L_, -1)) return true;
+  lua_pop(L_, 1);
+  return false;
+}
+
+// Calls sn.live[fn] with the nargs values on the stack; on error returns false with the message.
+bool Loop::call(const char* fn, int nargs, int nresults, std::string* error) {
+  if (!push_live(fn)) {
+    lua_pop(L_, nargs);
+    if (error) *error = std::string("internal: sn.live.") + fn + " is missing";
+    return false;
+  }
+  lua_insert(L_, -nargs - 1);
+  lua_pushcfunction(L_, traceback);
+  lua_insert(L_, -nargs - 2);
+  int base = lua_gettop(L_) - nargs - 2;
+  if (lua_pcall(L_, nargs, nresults, base + 1) != 0) {
+    if (error) *error = lua_tostring(L_, -1) ? lua_tostring(L_, -1) : "(error)";
+    lua_settop(L_, base);
+    return false;
+  }
+  lua_remove(L_, base + 1);  // the traceback function; the results stay
+  return true;
+}
+
+void Loop::report(const std::string& message) {
+  if (message == last_reported_) return;
+  last_reported_ = message;
+  if (!message.empty()) fprintf(stderr, "[live] error: %s\n", message.c_str());
+  fflush(stderr);
+}
+
+void Loop::set_status() {
+  // The error a user must see first: the script's, then the frame's, then a shader's.
+  std::string err = !script_error_.empty() ? script_error_ : !frame_error_.empty() ? frame_error_ : shader_error_;
+  report(err);
+  char ms[32] = "";
+  if (frame_ms_ > 0) snprintf(ms, sizeof ms, " · %.1f ms", frame_ms_);
+  std::string title = (err.empty() ? "" : "ERROR " + first_line(err) + " | ") + (title_.empty() ? "shadenet" : title_) + ms;
+  if (title != shown_title_) ctx_.set_title(title), shown_title_ = title;
+  lua_pushstring(L_, title.c_str());
+  lua_pushstring(L_, err.c_str());
+  call("_set_status", 2, 0);
+}
+
+void Loop::update_watch_set() {
+  if (!watcher_) return;
+  std::vector<std::string> files = {o_.script};
+  lua_rawgeti(L_, LUA_REGISTRYINDEX, live_ref_);
+  if (call("_watched", 0, 1) && lua_istable(L_, -1)) {
+    for (int i = 1; i <= int(lua_objlen(L_, -1)); ++i) {
+      lua_rawgeti(L_, -1, i);
+      if (const char* s = lua_tostring(L_, -1)) files.push_back(s);
+      lua_pop(L_, 1);
+    }
+  }
+  lua_settop(L_, 0);
+  files.insert(files.end(), shader_files_.begin(), shader_files_.end());
+  if (files == watched_) return;
+  watched_ = files;
+  for (const auto& f : files)
+    if (!contents_.count(f)) contents_[f] = read_all(f);
+  watcher_->watch(files);
+}
+
+// True when a watched file now differs from what the last run read (a save that rewrote the
+// same bytes is no reason to reload).
+bool Loop::files_changed() {
+  if (!watcher_) return false;
+  bool any = false;
+  std::set<std::string> changed;
+  for (const auto& f : watcher_->take_changed()) changed.insert(f);
+  if (changed.empty()) return false;
+  for (const auto& f : watched_) {
+    std::error_code ec;
+    std::string canon = std::filesystem::weakly_canonical(std::filesystem::absolute(f), ec).string();
+    if (!changed.count(canon)) continue;
+    std::string now = read_all(f);
+    if (now != contents_[f]) contents_[f] = now, any = true;
+  }
+  return any;
+}
+
+void Loop::run_script() {
+  auto t0 = Clock::now();
+  for (const auto& f : watched_) contents_[f] = read_all(f);
+  // A syntax error changes nothing: the last good state stays, networks included.
+  if (luaL_loadfile(L_, o_.script.c_str()) != 0) {
+    script_error_ = lua_tostring(L_, -1);
+    lua_settop(L_, 0);
+    set_status();
+    return;
+  }
+  call("_begin_run", 0, 0);
+  fallback_errors_.clear();
+  lua_pushvalue(L_, -1);
+  g_chunk_ref = luaL_ref(L_, LUA_REGISTRYINDEX);
+  lua_pushcfunction(L_, traceback);
+  lua_insert(L_, -2);
+  for (const auto& a : o_.args) lua_pushstring(L_, a.c_str());
+  lua_sethook(L_, capture_locals, LUA_MASKRET, 0);
+  bool ok = lua_pcall(L_, int(o_.args.size()), 0, 1) == 0;
+  lua_sethook(L_, nullptr, 0, 0);
+  luaL_unref(L_, LUA_REGISTRYINDEX, g_chunk_ref);
+  g_chunk_ref = LUA_NOREF;
+  if (ok && g_locals_ref != LUA_NOREF) {  // the console sees this run's locals from now on
+    lua_rawgeti(L_, LUA_REGISTRYINDEX, g_locals_ref);
+    luaL_unref(L_, LUA_REGISTRYINDEX, g_locals_ref);
+    g_locals_ref = LUA_NOREF;
+    call("_set_locals", 1, 0);
+  }
+  script_error_ = ok ? "" : lua_tostring(L_, -1) ? lua_tostring(L_, -1) : "(error)";
+  lua_settop(L_, 0);
+  lua_pushboolean(L_, ok);
+  call("_end_run", 1, 0);
+  shader_error_ = fallback_errors_.empty() ? "" : fallback_errors_.front();
+  update_watch_set();
+  if (ok) {
+    fprintf(stderr, "[live] ran %s in %.0f ms\n", o_.script.c_str(), seconds_since(t0) * 1e3);
+    sync_view(false);
+    dirty_ = true;
+  }
+  take_requests();
+  set_status();
+}
+
+// Takes the script's camera, light and mode into the controls. What the user moved survives a
+// reload unless the script now asks for a different camera, light or mode.
+void Loop::sync_view(bool force_reset) {
+  if (!call("_initial_view", 0, 6)) return;
+  if (lua_isnil(L_, 1)) return (void)lua_settop(L_, 0);
+  auto vec = [&](int idx, double* out) {
+    for (int i = 0; i < 3; ++i) {
+      lua_rawgeti(L_, idx, i + 1);
+      out[i] = lua_tonumber(L_, -1);
+      lua_pop(L_, 1);
+    }
+  };
+  std::array<double, 9> v{};
+  vec(1, &v[0]), vec(2, &v[3]), vec(4, &v[6]);
+  double fov = lua_tonumber(L_, 3);
+  std::string mode = lua_tostring(L_, 5) ? lua_tostring(L_, 5) : "network";
+  lua_settop(L_, 0);
+  bool reset = force_reset || v != initial_ || mode != initial_mode_;
+  initial_ = v, initial_mode_ = mode;
+  Mode m = Mode::network;
+  parse_mode(mode, m);
+  Orbit cam = Orbit::from({v[3], v[4], v[5]}, {v[0], v[1], v[2]});
+  Orbit light = Orbit::from({0, 0, 0}, {v[6], v[7], v[8]});
+  light.distance = 1;
+  input_.set_initial(cam, fov, light, m, reset);
+}
+
+void Loop::take_requests() {
+  if (!call("_take_requests", 0, 2)) return;
+  if (lua_toboolean(L_, 1)) quit_ = true;
+  if (lua_toboolean(L_, 2)) dirty_ = true;
+  lua_settop(L_, 0);
+}
+
+void Loop::console() {
+  if (!stdin_) return;
+  std::string line;
+  while (stdin_->take(line)) {
+    bool ok = false;
+    if (!console_->execute(line, &ok)) {
+      console_->prompt();
+      continue;
+    }
+    lua_settop(L_, 0);
+    if (ok) dirty_ = true;  // a line that ran may have changed anything the view depends on
+    take_requests();
+    if (!dirty_) console_->prompt();  // after a redraw otherwise, so the prompt follows its messages
+    else prompt_after_frame_ = true;
+  }
+  if (stdin_->at_end()) {
+    stdin_.reset();
+    // Ctrl-D at a terminal ends the session, as in lua; a pipe that ran dry just ends the console.
+    if (StdinReader::interactive()) quit_ = true;
+  }
+}
+
+void Loop::redraw() {
+  lua_settop(L_, 0);
+  if (!call("_has_view", 0, 1)) return;
+  bool has = lua_toboolean(L_, -1);
+  lua_settop(L_, 0);
+  if (!has) {
+    title_ = "shadenet — nothing to show: call sn.live.show{...}";
+    return set_status();
+  }
+  auto [w, h] = ctx_.framebuffer_size();
+  if (ctx_.windowed() && (w < 1 || h < 1)) return;  // minimised
+  const ViewState& v = input_.view();
+  lua_createtable(L_, 0, 8);
+  lua_pushstring(L_, mode_name(v.mode)), lua_setfield(L_, -2, "mode");
+  if (w > 0) lua_pushinteger(L_, w), lua_setfield(L_, -2, "width"), lua_pushinteger(L_, h), lua_setfield(L_, -2, "height");
+  auto push3 = [&](const std::array<double, 3>& a, const char* key) {
+    lua_createtable(L_, 3, 0);
+    for (int i = 0; i < 3; ++i) lua_pushnumber(L_, a[i]), lua_rawseti(L_, -2, i + 1);
+    lua_setfield(L_, -2, key);
+  };
+  if (v.camera_moved) {
+    push3(v.camera.position(), "eye");
+    push3(v.camera.center, "target");
+    lua_pushnumber(L_, v.fov), lua_setfield(L_, -2, "fov");
+  }
+  if (v.light_moved) push3(v.light.position(), "light");
+  lua_pushnumber(L_, v.error_scale_factor), lua_setfield(L_, -2, "error_scale_factor");
+
+  fallback_errors_.clear();
+  auto t0 = Clock::now();
+  std::string err;
+  if (!call("_frame", 1, 2, &err)) {
+    frame_error_ = err;
+    return set_status();
+  }
+  frame_error_.clear();
+  shader_error_ = fallback_errors_.empty() ? "" : fallback_errors_.front();
+  auto& target = lua::check<gl::RenderTarget>(L_, 1, "Target");
+  title_ = lua_tostring(L_, 2) ? lua_tostring(L_, 2) : "";
+  gl::finish();
+  frame_ms_ = seconds_since(t0) * 1e3;
+  ++frame_;
+  if (target_ref_ != LUA_NOREF) luaL_unref(L_, LUA_REGISTRYINDEX, target_ref_);
+  lua_pushvalue(L_, 1);
+  target_ref_ = luaL_ref(L_, LUA_REGISTRYINDEX);  // shown again when the window is uncovered
+  ctx_.present(target.fbo(), target.width(), target.height());
+  if (!snapshot_.empty()) {
+    char path[4096];
+    snprintf(path, sizeof path, snapshot_.c_str(), int(frame_));
+    try {
+      io::save_image(target.read(), path);
+    } catch (const std::exception& e) {
+      fprintf(stderr, "[live] SHADENET_LIVE_SNAPSHOT: %s\n", e.what());
+    }
+  }
+  lua_settop(L_, 0);
+  lua_gc(L_, LUA_GCCOLLECT, 0);  // the frame's targets are GPU memory the collector cannot see
+  update_watch_set();            // the first frame may have read new shader files
+  set_status();
+}
+
+void Loop::present_last() {
+  if (target_ref_ == LUA_NOREF) return;
+  lua_rawgeti(L_, LUA_REGISTRYINDEX, target_ref_);
+  auto& t = lua::check<gl::RenderTarget>(L_, -1, "Target");
+  ctx_.present(t.fbo(), t.width(), t.height());
+  lua_pop(L_, 1);
+}
+
+void Loop::actions() {
+  Actions a = input_.take_actions();
+  if (a.quit) quit_ = true;
+  if (a.help) printf("%s", Input::help());
+  auto run_lua = [&](const char* code) {
+    if (luaL_loadstring(L_, code) != 0) return lua_settop(L_, 0);
+    lua_pushcfunction(L_, traceback);
+    lua_insert(L_, -2);
+    if (lua_pcall(L_, 0, 0, 1) != 0) fprintf(stderr, "[live] %s\n", lua_tostring(L_, -1));
+    lua_settop(L_, 0);
+  };
+  if (a.screenshot) run_lua("local sn = require 'shadenet'; print('[live] screenshot: ' .. sn.live.screenshot())");
+  if (a.record)
+    run_lua("local sn = require 'shadenet'; local dir, frames = sn.record { orbit = { count = 36 } }; "
+            "print(('[live] recorded %d frames of an orbit in %s'):format(#frames, dir))");
+  if (a.print_view) run_lua("local sn = require 'shadenet'; print(sn.live.view_code())");
+  if (a.present && !dirty_) present_last();
+  fflush(stdout);
+}
+
+int Loop::run() {
+  if (const char* s = getenv("SHADENET_LIVE_SNAPSHOT"); s && *s) snapshot_ = s;
+  if (const char* s = getenv("SHADENET_LIVE_EXIT_AFTER"); s && *s) exit_after_ = atof(s);
+  auto start = Clock::now();
+
+  // The module table: `require "shadenet"` before the script, so its sn.live functions exist.
+  lua_settop(L_, 0);
+  lua_getglobal(L_, "require");
+  lua_pushstring(L_, "shadenet");
+  if (lua_pcall(L_, 1, 1, 0) != 0) {
+    fprintf(stderr, "shadenet: %s\n", lua_tostring(L_, -1));
+    return 1;
+  }
+  lua_getfield(L_, -1, "live");
+  live_ref_ = luaL_ref(L_, LUA_REGISTRYINDEX);
+  lua_settop(L_, 0);
+
+  gl::set_shader_file_observer([this](const std::string& f) { shader_files_.insert(f); });
+  gl::set_program_fallback([this](const std::string& e) { fallback_errors_.push_back(e); });
+  if (ctx_.windowed()) input_.attach(static_cast<GLFWwindow*>(ctx_.native_window()));
+  auto wake = [this] { waker_.wake(); };
+  if (o_.watch) {
+    try {
+      watcher_ = std::make_unique<FileWatcher>(wake);
+    } catch (const std::exception& e) {
+      fprintf(stderr, "shadenet: %s\n", e.what());
+      return 1;
+    }
+    stdin_ = std::make_unique<StdinReader>(wake);
+    console_ = std::make_unique<Console>(L_, [this](lua_State*) {
+      if (!call("_console_env", 0, 1)) return false;
+      if (lua_istable(L_, -1)) return true;
+      lua_pop(L_, 1);
+      return false;
+    });
+  }
+  if (o_.already_ran) {
+    sync_view(true);
+    update_watch_set();
+  } else {
+    run_script();
+  }
+  if (ctx_.windowed()) fprintf(stderr, "[live] %s", Input::help());
+  if (console_) console_->prompt();
+
+  while (!quit_) {
+    if (files_changed()) run_script();
+    console();
+    actions();
+    if (input_.take_dirty()) dirty_ = true;
+    if (ctx_.windowed()) {
+      if (ctx_.should_close()) break;
+      if (ctx_.framebuffer_size() != drawn_size_) drawn_size_ = ctx_.framebuffer_size(), dirty_ = true;
+    }
+    // Headless there is nothing to show unless a snapshot file is asked for.
+    if (dirty_ && !quit_ && (ctx_.windowed() || !snapshot_.empty())) {
+      dirty_ = false;
+      redraw();
+      if (prompt_after_frame_ && console_) console_->prompt(), prompt_after_frame_ = false;
+    }
+    dirty_ = false;
+    if (quit_) break;
+    double timeout = 3600;
+    if (exit_after_ > 0) {
+      timeout = exit_after_ - seconds_since(start);
+      if (timeout <= 0) break;
+    }
+    if (ctx_.windowed()) ctx_.poll(timeout);  // sleeps until an event, a file save or a console line
+    else waker_.wait(timeout);
+  }
+  fflush(stdout);
+  return 0;
+}
+
+}  // namespace
+
+int run_live(lua_State* L, const LiveOptions& options) {
+  Loop loop(L, options);
+  return loop.run();
+}
+
+}  // namespace sn::app

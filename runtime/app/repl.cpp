@@ -1,0 +1,146 @@
+#include "app/repl.h"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstring>
+
+namespace sn::app {
+
+StdinReader::StdinReader(std::function<void()> wake) : wake_(std::move(wake)) {
+  if (pipe2(control_, O_CLOEXEC) != 0) control_[0] = control_[1] = -1;
+  thread_ = std::thread([this] { run(); });
+}
+
+StdinReader::~StdinReader() {
+  char q = 'q';
+  if (control_[1] >= 0) (void)!write(control_[1], &q, 1);
+  thread_.join();
+  if (control_[0] >= 0) close(control_[0]), close(control_[1]);
+}
+
+bool StdinReader::interactive() { return isatty(0); }
+
+bool StdinReader::take(std::string& line) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (lines_.empty()) return false;
+  line = std::move(lines_.front());
+  lines_.pop_front();
+  return true;
+}
+
+bool StdinReader::at_end() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return eof_ && lines_.empty();
+}
+
+void StdinReader::run() {
+  std::string partial;
+  char buf[4096];
+  auto finish = [&] {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!partial.empty()) lines_.push_back(partial);
+    eof_ = true;
+  };
+  for (;;) {
+    // poll, not a blocking read: the destructor must be able to stop the thread.
+    pollfd fds[2] = {{0, POLLIN, 0}, {control_[0], POLLIN, 0}};
+    if (poll(fds, control_[0] >= 0 ? 2 : 1, -1) < 0) {
+      if (errno == EINTR) continue;
+      return finish(), wake_();
+    }
+    if (fds[1].revents) return;
+    if (fds[0].revents & POLLNVAL) return finish(), wake_();
+    ssize_t n = read(0, buf, sizeof buf);
+    if (n < 0 && (errno == EINTR || errno == EAGAIN)) continue;
+    if (n <= 0) return finish(), wake_();
+    partial.append(buf, size_t(n));
+    bool any = false;
+    for (size_t nl; (nl = partial.find('\n')) != std::string::npos;) {
+      std::string line = partial.substr(0, nl);
+      if (!line.empty() && line.back() == '\r') line.pop_back();
+      partial.erase(0, nl + 1);
+      std::lock_guard<std::mutex> lock(mutex_);
+      lines_.push_back(std::move(line));
+      any = true;
+    }
+    if (any) wake_();
+  }
+}
+
+namespace {
+
+int traceback(lua_State* L) {
+  const char* msg = lua_tostring(L, 1);
+  if (!msg) msg = lua_pushfstring(L, "(error object is a %s value)", luaL_typename(L, 1));
+  luaL_traceback(L, L, msg, 1);
+  return 1;
+}
+
+// A chunk that failed to compile only because it ended too early (an open `function`, `do`, ...).
+bool incomplete(lua_State* L) {
+  size_t len = 0;
+  const char* msg = lua_tolstring(L, -1, &len);
+  const char* eof = "'<eof>'";
+  return msg && len >= strlen(eof) && strcmp(msg + len - strlen(eof), eof) == 0;
+}
+
+}  // namespace
+
+void Console::prompt() const {
+  if (!StdinReader::interactive()) return;
+  fputs(continuing() ? ">> " : "> ", stdout);
+  fflush(stdout);
+}
+
+bool Console::execute(const std::string& line, bool* ok) {
+  if (ok) *ok = false;
+  buffer_ += buffer_.empty() ? line : "\n" + line;
+  int base = lua_gettop(L_);
+  // As the lua interpreter does: try the line as an expression first so its values print. It
+  // is an argument, not `return <line>`, so a call is no tail call and its errors keep stdin:LINE.
+  std::string ret = "local function pack(...) return {n = select('#', ...), ...} end return pack(" + buffer_ + "\n)";
+  bool expression = true;
+  if (luaL_loadbuffer(L_, ret.data(), ret.size(), "=stdin") != 0) {
+    lua_pop(L_, 1);
+    expression = false;
+    if (luaL_loadbuffer(L_, buffer_.data(), buffer_.size(), "=stdin") != 0) {
+      if (incomplete(L_)) {
+        lua_pop(L_, 1);
+        return false;
+      }
+      fprintf(stderr, "%s\n", lua_tostring(L_, -1));
+      lua_settop(L_, base);
+      buffer_.clear();
+      return true;
+    }
+  }
+  buffer_.clear();
+  if (prepare_ && prepare_(L_)) lua_setfenv(L_, -2);
+  lua_pushcfunction(L_, traceback);
+  lua_insert(L_, -2);
+  if (lua_pcall(L_, 0, LUA_MULTRET, base + 1) != 0) {
+    fprintf(stderr, "%s\n", lua_tostring(L_, -1));
+    lua_settop(L_, base);
+    return true;
+  }
+  if (ok) *ok = true;
+  if (expression && lua_istable(L_, -1)) {  // print(...) of the values, through the script's own `print`
+    int results = lua_gettop(L_);
+    lua_getfield(L_, results, "n");
+    int n = int(lua_tointeger(L_, -1));
+    lua_pop(L_, 1);
+    if (n > 0) {
+      lua_getglobal(L_, "print");
+      for (int i = 1; i <= n; ++i) lua_rawgeti(L_, results, i);
+      if (lua_pcall(L_, n, 0, 0) != 0) fprintf(stderr, "%s\n", lua_tostring(L_, -1));
+    }
+  }
+  fflush(stdout);
+  lua_settop(L_, base);
+  return true;
+}
+
+}  // namespace sn::app
