@@ -27,13 +27,13 @@ std::size_t round8(std::size_t n) { return (n + 7) & ~std::size_t(7); }
 std::size_t round16(std::size_t n) { return (n + 15) & ~std::size_t(15); }
 
 SN_INLINE v8 splat(float x) { return v8{x, x, x, x, x, x, x, x}; }
-SN_INLINE float hsum(v8 v) { return ((v[0] + v[4]) + (v[1] + v[5])) + ((v[2] + v[6]) + (v[3] + v[7])); }
+SN_INLINE float hsum(const v8& v) { return ((v[0] + v[4]) + (v[1] + v[5])) + ((v[2] + v[6]) + (v[3] + v[7])); }
 
 struct Avx2 {};
 struct Sse2 {};
 
 template <class Isa>
-SN_INLINE v8 vsqrt(v8 x) {
+SN_INLINE v8 vsqrt(const v8& x) {
   if constexpr (std::is_same_v<Isa, Avx2>) {
     return (v8)__builtin_ia32_sqrtps256((__m256)x);
   } else {
@@ -47,7 +47,7 @@ SN_INLINE v8 vsqrt(v8 x) {
 
 // a = act(z), and d act / dz written in terms of a (all four hidden activations allow it).
 template <Activation A>
-SN_INLINE v8 act(v8 z, float slope) {
+SN_INLINE v8 act(const v8& z, float slope) {
   if constexpr (A == Activation::tanh) return fast_tanh(z);
   if constexpr (A == Activation::sigmoid) return 0.5f + 0.5f * fast_tanh(0.5f * z);
   if constexpr (A == Activation::relu) return z > 0.0f ? z : splat(0.0f);
@@ -55,7 +55,7 @@ SN_INLINE v8 act(v8 z, float slope) {
   return z;
 }
 template <Activation A>
-SN_INLINE v8 act_grad(v8 a, float slope) {
+SN_INLINE v8 act_grad(const v8& a, float slope) {
   if constexpr (A == Activation::tanh) return 1.0f - a * a;
   if constexpr (A == Activation::sigmoid) return a * (1.0f - a);
   if constexpr (A == Activation::relu) return a > 0.0f ? splat(1.0f) : splat(0.0f);
@@ -63,7 +63,7 @@ SN_INLINE v8 act_grad(v8 a, float slope) {
   return splat(1.0f);
 }
 // The output layer's activation is chosen per neuron at run time (few neurons, cheap).
-SN_INLINE v8 act_any(Activation a, v8 z, float slope) {
+SN_INLINE v8 act_any(Activation a, const v8& z, float slope) {
   switch (a) {
     case Activation::tanh: return act<Activation::tanh>(z, slope);
     case Activation::sigmoid: return act<Activation::sigmoid>(z, slope);
@@ -72,7 +72,7 @@ SN_INLINE v8 act_any(Activation a, v8 z, float slope) {
     default: return z;
   }
 }
-SN_INLINE v8 act_grad_any(Activation a, v8 y, float slope) {
+SN_INLINE v8 act_grad_any(Activation a, const v8& y, float slope) {
   switch (a) {
     case Activation::tanh: return act_grad<Activation::tanh>(y, slope);
     case Activation::sigmoid: return act_grad<Activation::sigmoid>(y, slope);

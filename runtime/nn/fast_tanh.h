@@ -7,7 +7,8 @@
 namespace sn::nn {
 
 template <class T>
-inline __attribute__((always_inline)) T fast_tanh(T x) {
+inline __attribute__((always_inline)) T fast_tanh(const T& in) {
+  T x = in;
   // Beyond +-7.9053 tanh rounds to +-1 in float; clamping keeps the polynomials in range.
   const float clamp = 7.90531110763549805f;
   const T c = T{} + clamp;  // a splat for vector T
