@@ -28,6 +28,12 @@ struct LuaScene {
 
 LuaScene& self(lua_State* L) { return check<LuaScene>(L, 1, kType); }
 
+std::string number_text(double v) {
+  char b[32];
+  snprintf(b, sizeof b, "%g", v);
+  return b;
+}
+
 std::shared_ptr<scene::Mesh> mesh_at(lua_State* L, int idx, LuaScene& s) {
   if (lua_type(L, idx) == LUA_TSTRING) {
     std::string path = lua_tostring(L, idx);
@@ -159,7 +165,7 @@ int w_dataset(lua_State* L) {
     lua_pop(L, 1);
     for (double x : views) {
       if (x < 1 || x > double(s.scene.views.size()) || x != std::floor(x))
-        throw Error(o.where("views") + ": view " + std::to_string(x) + " is outside the scene's views 1.." +
+        throw Error(o.where("views") + ": view " + number_text(x) + " is outside the scene's views 1.." +
                     std::to_string(s.scene.views.size()));
       r.views.push_back(int(x) - 1);
     }

@@ -1,6 +1,7 @@
 #include "scene/scene.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
@@ -15,6 +16,12 @@ namespace sn::scene {
 namespace {
 
 std::size_t g_last_covered = 0;
+
+std::string number(double v) {
+  char b[32];
+  snprintf(b, sizeof b, "%g", v);
+  return b;
+}
 
 // splitmix64: a seeded stream that is the same on every platform (std distributions are not).
 struct SplitMix {
@@ -76,7 +83,7 @@ std::shared_ptr<nn::Dataset> build_dataset(const Scene& s, const DatasetRequest&
   check_attributes(r.inputs);
   if (!(r.split > 0 && r.split < 1))
     throw std::invalid_argument("dataset split must lie strictly between 0 and 1 (the training share), got " +
-                                std::to_string(r.split));
+                                number(r.split));
   std::vector<int> views = r.views;
   if (views.empty()) {
     views.resize(s.views.size());
@@ -122,7 +129,8 @@ std::shared_ptr<nn::Dataset> build_dataset(const Scene& s, const DatasetRequest&
   g_last_covered = rows.size();
   if (rows.empty())
     throw std::invalid_argument("the dataset has no covered pixels: the mesh is outside every camera view (" +
-                                std::to_string(views.size()) + " views of " + std::to_string(s.width) + "x" +
+                                std::to_string(views.size()) + (views.size() == 1 ? " view" : " views") + " of " +
+                                std::to_string(s.width) + "x" +
                                 std::to_string(s.height) + "); frame it with views = sn.orbit{...} or move the cameras");
 
   // The GPU's slot order is a race; (view, pixel) is not.
@@ -134,7 +142,7 @@ std::shared_ptr<nn::Dataset> build_dataset(const Scene& s, const DatasetRequest&
   std::size_t m = r.samples == 0 ? rows.size() : std::min(r.samples, rows.size());
   std::size_t n_train = std::size_t(std::llround(r.split * double(m)));
   if (n_train == 0 || n_train == m)
-    throw std::invalid_argument("dataset: " + std::to_string(m) + " samples split " + std::to_string(r.split) +
+    throw std::invalid_argument("dataset: " + std::to_string(m) + " samples split " + number(r.split) +
                                 " leaves no " + (n_train == 0 ? "training" : "validation") + " rows");
 
   auto d = std::make_shared<nn::Dataset>();

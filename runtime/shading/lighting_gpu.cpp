@@ -3,6 +3,7 @@
 #include <epoxy/gl.h>
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -56,6 +57,8 @@ std::shared_ptr<gl::Buffer> upload(const std::vector<glm::vec3>& v) {
 gl::Defines lighting_defines(const LightingParams& p) { return {{"LIGHTING_MODEL", std::to_string(int(p.model))}}; }
 
 void set_lighting_uniforms(gl::Program& prog, const LightingParams& p, const Light& light) {
+  if (!(std::abs(glm::length(light.dir) - 1.0) < 1e-6))  // float-rounded unit vectors pass
+    throw std::logic_error("the light direction must be unit length (build lights with make_light)");
   prog.set_uniform("u_light_dir", {light.dir.x, light.dir.y, light.dir.z});
   if (prog.uniform("u_light_color"))  // toon3's colours are its own: it reads only the direction
     prog.set_uniform("u_light_color", {light.color.r, light.color.g, light.color.b});

@@ -60,7 +60,7 @@ inline LightingParams default_params(Model m) { return make_params(m, {}); }
 // unit length here) and a colour. The direction is a parameter of the ground truth, not a
 // network input.
 struct Light {
-  glm::dvec3 dir{0.5, 0.7, 0.6};
+  glm::dvec3 dir = glm::normalize(glm::dvec3(0.5, 0.7, 0.6));  // unit: every model relies on it
   glm::dvec3 color{1.0, 1.0, 1.0};
 };
 // Throws for a zero-length or non-finite direction or a negative / non-finite colour.

@@ -216,3 +216,11 @@ TEST(LightingParams, ErrorsNameTheModelParameterAndDomain) {
 }
 
 }  // namespace
+
+namespace {
+TEST(LightingParams, TheDefaultLightIsUnitLength) {
+  sn::shading::Light l;
+  EXPECT_NEAR(glm::length(l.dir), 1.0, 1e-15);
+  EXPECT_NEAR(l.dir.y, 0.7 / std::sqrt(1.1), 1e-15);
+}
+}  // namespace
