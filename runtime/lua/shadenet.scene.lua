@@ -27,7 +27,13 @@ function Scene.render(scene, what, options)
     local g = scene:gbuffer { view = view, attributes = what:attributes() }
     return sn.render_truth(g, what, scene:light())
   elseif kind == "Mlp" then
-    local g = scene:gbuffer { view = view, attributes = what:inputs() }
+    local inputs = what:inputs()
+    if #inputs == 0 then
+      error("scene:render: this network does not know which G-buffer attributes it reads; train it on a "
+            .. "scene:dataset (or give it input names) first", 2)
+    end
+    if not what.render then error("scene:render: this build cannot render networks (net:render is missing)", 2) end
+    local g = scene:gbuffer { view = view, attributes = inputs }
     return what:render(g)
   end
   error("scene:render: a lighting model (sn.lighting.*) or a network (sn.mlp) expected, got " .. kind, 2)
