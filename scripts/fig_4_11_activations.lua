@@ -76,8 +76,8 @@ E.R:table {
   title = "Figure 4.11 — activations: best and final validation MSE, and dead units",
   columns = {
     { key = "activation", align = "left" },
-    { key = "best_val_mse", header = "min val MSE", format = "%.6f" },
-    { key = "final_val_mse", header = "final val MSE", format = "%.6f" },
+    { key = "best_val_mse", header = "min val MSE", format = "%.4g" },
+    { key = "final_val_mse", header = "final val MSE", format = "%.4g" },
     { key = "vs_zeros", header = "min / all-zeros MSE", format = "%.3f" },
     { key = "vs_constant", header = "min / constant MSE", format = "%.3f" },
     { key = "stalled", header = "stalled (> 0.9 x constant)" },

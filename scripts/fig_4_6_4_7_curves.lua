@@ -97,9 +97,9 @@ E.R:table {
   title = "Figures 4.6 and 4.7 — where each validation curve bottoms out and ends",
   columns = {
     { key = "figure" }, { key = "layers", header = "hidden layers" }, { key = "width" },
-    { key = "best_val_mse", header = "min val MSE", format = "%.6f" }, { key = "best_epoch", header = "at epoch" },
+    { key = "best_val_mse", header = "min val MSE", format = "%.4g" }, { key = "best_epoch", header = "at epoch" },
     { key = "epoch_to_2x_best", header = "first epoch within 2x of min" },
-    { key = "final_val_mse", header = "final val MSE", format = "%.6f" },
+    { key = "final_val_mse", header = "final val MSE", format = "%.4g" },
     { key = "rise_after_best", header = "final / min", format = "%.3f" },
   },
   rows = rows,

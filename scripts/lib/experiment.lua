@@ -111,8 +111,12 @@ exp.model_params = {
 function E:data_desc(o)
   o = o or {}
   if o.scene then return o end  -- already a description
+  local model = o.model or "phong"
   return {
-    model = o.model or "phong",
+    model = model,
+    -- Every parameter of the ground truth as the runtime has it: a changed default is a new
+    -- experiment, never a reused result.
+    truth = tostring(exp.model(model)),
     inputs = o.inputs or { "normal", "view" },
     color = o.color or "rgb",
     samples = o.samples or self:pick(8000, 64149),
