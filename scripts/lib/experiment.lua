@@ -12,6 +12,7 @@ local Sweep = require "lib.sweep"
 local stats = require "lib.stats"
 local json = require "lib.json"
 local plot = require "lib.plot"
+local Progress = require "lib.progress"
 
 local exp = {}
 local E = {}
@@ -142,7 +143,7 @@ function E:data(o)
   self.datasets[key] = { data = data, desc = d }
   self.data_log = self.data_log or {}
   self.data_log[#self.data_log + 1] = { desc = d, train_rows = train, val_rows = val }
-  print(string.format("%s: dataset %s -> %s: %d train / %d validation rows", self.name,
+  Progress.say(string.format("%s: dataset %s -> %s: %d train / %d validation rows", self.name,
                       table.concat(d.inputs, "+"), type(d.model) == "table" and d.model.name or d.model, train, val))
   return data, d
 end

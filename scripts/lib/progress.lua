@@ -26,6 +26,7 @@ function Progress.new(o)
                               out = o.out or io.stdout, done = 0, start_done = o.already or 0,
                               t0 = clock(), last_print = -math.huge, width = sn.terminal_width() or 100 }, Progress)
   self.done = self.start_done
+  Progress.active = self
   return self
 end
 
@@ -35,10 +36,11 @@ function Progress:text()
   local fresh = self.done - self.start_done
   local remaining = self.total - self.done
   local eta = fresh > 0 and elapsed / fresh * remaining or nil
+  -- Most useful first: a narrow terminal cuts the end of the line.
   local parts = { string.format("%s %d/%d runs", self.label, math.floor(self.done + 1e-9), self.total) }
-  if self.best then parts[#parts + 1] = "best " .. self.best end
-  parts[#parts + 1] = "elapsed " .. duration(elapsed)
   if remaining > 0 then parts[#parts + 1] = "ETA " .. (eta and duration(eta) or "?") end
+  parts[#parts + 1] = "elapsed " .. duration(elapsed)
+  if self.best then parts[#parts + 1] = "best " .. self.best end
   return table.concat(parts, "  ")
 end
 
@@ -53,6 +55,9 @@ function Progress:update(done, best)
   if best then self.best = best end
   local now = clock()
   if self.tty then
+    -- Redraw at most 10 times a second (and always at the end).
+    if now - self.last_print < 0.1 and self.done < self.total then return end
+    self.last_print = now
     local line = bar(self.total > 0 and self.done / self.total or 1, 20) .. " " .. self:text()
     if #line > self.width - 1 then line = line:sub(1, self.width - 1) end
     self.out:write("\r", line, string.rep(" ", math.max(0, (self.last_len or 0) - #line)))
@@ -72,6 +77,20 @@ end
 -- Ends the line on a terminal.
 function Progress:finish()
   if self.tty and self.last_len then self.out:write("\n") self.out:flush() end
+  self.last_len = nil
+  if Progress.active == self then Progress.active = nil end
+end
+
+-- Prints a message without tearing the progress line: on a terminal the line is cleared first
+-- and redrawn by the next update.
+function Progress.say(text)
+  local p = Progress.active
+  if p and p.tty and p.last_len then
+    p.out:write("\r", string.rep(" ", p.last_len), "\r")
+    p.last_len = nil
+    p.last_print = -math.huge
+  end
+  print(text)
 end
 
 return Progress

@@ -108,7 +108,7 @@ function sink:write(...) for _, s in ipairs({ ... }) do self.text = self.text ..
 function sink:flush() end
 local pr = Progress.new { total = 10, label = "x", tty = false, every = 0, out = sink, already = 2 }
 pr:update(4, "0.001 (L4 W6)")
-assert(sink.text:find("x 4/10 runs  best 0.001 %(L4 W6%)") and sink.text:find("ETA"), "progress line: " .. sink.text)
+assert(sink.text:find("x 4/10 runs  ETA %S+  elapsed %S+  best 0.001 %(L4 W6%)"), "progress line: " .. sink.text)
 sink.text = ""
 local prt = Progress.new { total = 10, label = "x", tty = true, out = sink }
 prt:update(5)
