@@ -1,0 +1,88 @@
+-- Training throughput: sample-steps per second (one sample through forward, backward and its
+-- share of the Adam step) for the thesis' architectures, with 1 .. 360 networks per job.
+--
+--   shadenet bench/train_throughput.lua [backend] [counts] [epochs]
+--     backend: cpu | gl | all (default: every backend in this build)
+--     counts:  networks per job, comma separated (default 1,2,8,32,360)
+--     epochs:  epochs per job (default 1)
+--
+-- Synthetic data: 64,000 samples of 6 inputs -> 3 outputs, split 80/20 (51,200 training rows),
+-- tanh networks, batch 8, Adam. Wall time includes the per-epoch validation pass. "cpu s" is
+-- the process CPU time of the job (all threads), "steps/cpu-s" the sample-steps per second of
+-- CPU time; "load" the 1-minute load average before the job: other work on the machine slows
+-- the wall-clock figures, hardly the CPU-time ones.
+local sn = require "shadenet"
+
+local want = arg[1] or "all"
+local counts = {}
+for n in (arg[2] or "1,2,8,32,360"):gmatch("%d+") do counts[#counts + 1] = tonumber(n) end
+local epochs = tonumber(arg[3] or "1")
+
+local function status(field)
+  local f = io.open("/proc/self/status")
+  if not f then return 0 end
+  local text = f:read("*a")
+  f:close()
+  return tonumber(text:match(field .. ":%s*(%d+)")) or 0
+end
+local function loadavg()
+  local f = io.open("/proc/loadavg")
+  if not f then return "?" end
+  local l = f:read("*l")
+  f:close()
+  return l:match("^(%S+)")
+end
+
+-- 64k samples of a smooth function (a stand-in for a lighting model), written straight into
+-- float buffers (no Lua tables: they would dominate the peak memory).
+local rows = 64000
+local bx = sn.buffer { type = "float32", size = rows * 6 }
+local by = sn.buffer { type = "float32", size = rows * 3 }
+local px, py = bx:ffi(), by:ffi()
+for i = 0, rows - 1 do
+  for k = 1, 6 do px[i * 6 + k - 1] = math.sin(i * (k + 0.37) * 0.0173 + k) end
+  local x1, x2, x3, x4, x5, x6 = px[i * 6], px[i * 6 + 1], px[i * 6 + 2], px[i * 6 + 3], px[i * 6 + 4], px[i * 6 + 5]
+  py[i * 3] = 0.5 + 0.4 * x1 * x4
+  py[i * 3 + 1] = 0.5 + 0.3 * math.sin(x2 + x5)
+  py[i * 3 + 2] = 0.3 + 0.2 * x3 - 0.1 * x6
+end
+local data = sn.dataset { x = bx, inputs = 6, y = by, outputs = 3, split = 0.8, seed = 1 }
+bx:release()
+by:release()
+
+local archs = { {4, 6}, {8, 8}, {8, 12}, {12, 12} }
+local backends = {}
+for _, b in ipairs(sn.backends()) do
+  if want == "all" or want == b then backends[#backends + 1] = b end
+end
+assert(#backends > 0, "backend '" .. want .. "' is not in this build (have: " .. table.concat(sn.backends(), ", ") .. ")")
+
+local ntrain = data:counts()
+print(("dataset: %d samples (%d training), %d epoch(s), batch 8, tanh"):format(rows, ntrain, epochs))
+print(("%-7s %-6s %5s %14s %12s %8s %8s %14s %6s %9s"):format("backend", "arch", "nets", "total steps/s",
+  "per net", "wall s", "cpu s", "steps/cpu-s", "load", "peak MiB"))
+for _, backend in ipairs(backends) do
+  for _, a in ipairs(archs) do
+    local hidden = {}
+    for i = 1, a[1] do hidden[i] = a[2] end
+    for _, count in ipairs(counts) do
+      local nets = {}
+      for s = 1, count do
+        nets[s] = sn.mlp { inputs = 6, hidden = hidden, outputs = 3, activation = "tanh", seed = s }
+      end
+      local load = loadavg()
+      local c0 = os.clock()
+      local runs = sn.train { nets = nets, data = data, epochs = epochs, batch = 8, backend = backend,
+                              adam = { lr = 2.5e-4, beta1 = 0.8, beta2 = 0.9 } }
+      local cpu = os.clock() - c0
+      local steps = 0
+      for _, r in ipairs(runs) do steps = steps + r.steps * 8 end
+      local wall = runs[1].wall_time
+      print(("%-7s %-6s %5d %14.0f %12.0f %8.2f %8.2f %14.0f %6s %9.1f"):format(backend, a[1] .. "x" .. a[2],
+        count, steps / wall, steps / wall / count, wall, cpu, steps / cpu, load, status("VmHWM") / 1024))
+      nets, runs = nil, nil
+      collectgarbage()
+    end
+  end
+end
+print(("peak resident memory (VmHWM): %.1f MiB"):format(status("VmHWM") / 1024))
