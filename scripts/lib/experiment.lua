@@ -37,6 +37,7 @@ function exp.start(name, args, o)
     name = name, opts = opts, quick = opts.quick, R = R, dir = R.dir, args = list,
     backend = opts.backend or o.backend or "auto",
     t0 = sn.clock(), timings = {}, datasets = {}, scenes = {}, sweeps = {}, baselines = {},
+    load_at_start = results.load_average(),
   }, E)
   local shard = opts.shard and string.format(" shard %d/%d%s", opts.shard.index, opts.shard.count,
                                              opts.shard.from and " (" .. opts.shard.from .. ")" or "") or ""
@@ -473,6 +474,7 @@ function E:finish(o)
     summary = o.summary,
     sweeps = self.sweeps,
     timings = self.timings,
+    load_average = { at_start = self.load_at_start, at_end = results.load_average() },
     interrupted = self.interrupted or nil,
     files = self.R.written,
   }

@@ -196,6 +196,16 @@ function Results:table(t)
   return self:path(file .. ".md")
 end
 
+-- The 1, 5 and 15 minute load averages (timings on a shared machine need them to be read).
+function results.load_average()
+  local f = io.open("/proc/loadavg")
+  if not f then return nil end
+  local line = f:read("*l") or ""
+  f:close()
+  local a, b, c = line:match("^(%S+) (%S+) (%S+)")
+  return a and { tonumber(a), tonumber(b), tonumber(c) } or nil
+end
+
 -- What every run.json carries besides the script's own configuration.
 function results.environment()
   local info = sn.gl_info()
@@ -218,6 +228,7 @@ function results.environment()
     f:close()
   end
   return {
+    load_average = results.load_average(),
     shadenet = sn.version,
     luajit = jit and jit.version or _VERSION,
     gl = { renderer = info.renderer, version = info.version, vendor = info.vendor, software = info.software },
