@@ -18,7 +18,8 @@ class Camera;
 // Attribute names a G-buffer (and so a network input) can hold:
 //   "normal"         world-space unit normal (3)
 //   "view"           world-space unit direction from the surface towards the eye (3)
-//   "position"       object-space position, as stored in the mesh file (3)
+//   "position"       object-space position: the Mesh's vertex position before the draw's model
+//                    matrix (the loader has already applied the file's node transforms) (3)
 //   "world_position" world-space position (3)
 //   "uv"             texture coordinates (2)
 //   "base_color"     the mesh's base-colour texture at uv, as stored (3; for textured models)
