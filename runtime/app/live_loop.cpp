@@ -13,6 +13,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <regex>
 #include <set>
 #include <sstream>
 
@@ -35,7 +36,16 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-std::string first_line(const std::string& s) { return s.substr(0, s.find('\n')); }
+// The line of an error message to show in a title: the first that names a file:line (a GLSL
+// error's second line), else the first.
+std::string headline(const std::string& s) {
+  std::istringstream in(s);
+  std::string line;
+  static const std::regex where(R"([^\s:]+:\d+:)");
+  while (std::getline(in, line))
+    if (std::regex_search(line, where)) return line;
+  return s.substr(0, s.find('\n'));
+}
 
 std::string read_all(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -182,8 +192,9 @@ bool Loop::call(const char* fn, int nargs, int nresults, std::string* error) {
 
 void Loop::report(const std::string& message) {
   if (message == last_reported_) return;
-  last_reported_ = message;
   if (!message.empty()) fprintf(stderr, "[live] error: %s\n", message.c_str());
+  else fprintf(stderr, "[live] fixed: the error is gone\n");
+  last_reported_ = message;
   fflush(stderr);
 }
 
@@ -193,7 +204,7 @@ void Loop::set_status() {
   report(err);
   char ms[32] = "";
   if (frame_ms_ > 0) snprintf(ms, sizeof ms, " · %.1f ms", frame_ms_);
-  std::string title = (err.empty() ? "" : "ERROR " + first_line(err) + " | ") + (title_.empty() ? "shadenet" : title_) + ms;
+  std::string title = (err.empty() ? "" : "ERROR " + headline(err) + " | ") + (title_.empty() ? "shadenet" : title_) + ms;
   if (title != shown_title_) ctx_.set_title(title), shown_title_ = title;
   lua_pushstring(L_, title.c_str());
   lua_pushstring(L_, err.c_str());
@@ -309,9 +320,40 @@ void Loop::sync_view(bool force_reset) {
 }
 
 void Loop::take_requests() {
-  if (!call("_take_requests", 0, 2)) return;
+  if (!call("_take_requests", 0, 3)) return;
   if (lua_toboolean(L_, 1)) quit_ = true;
   if (lua_toboolean(L_, 2)) dirty_ = true;
+  if (lua_istable(L_, 3)) {  // sn.live.set_view{...}: as if the keys and mouse had done it
+    ViewState& v = input_.view();
+    auto vec = [&](const char* key, std::array<double, 3>& out) {
+      lua_getfield(L_, 3, key);
+      bool has = lua_istable(L_, -1);
+      for (int i = 0; has && i < 3; ++i) {
+        lua_rawgeti(L_, -1, i + 1);
+        out[size_t(i)] = lua_tonumber(L_, -1);
+        lua_pop(L_, 1);
+      }
+      lua_pop(L_, 1);
+      return has;
+    };
+    lua_getfield(L_, 3, "mode");
+    if (const char* m = lua_tostring(L_, -1)) parse_mode(m, v.mode);
+    lua_pop(L_, 1);
+    std::array<double, 3> eye{}, target{}, light{};
+    if (vec("eye", eye) && vec("target", target)) {
+      v.camera = Orbit::from(target, eye);
+      lua_getfield(L_, 3, "fov");
+      v.fov = lua_tonumber(L_, -1);
+      lua_pop(L_, 1);
+      v.camera_moved = true;
+    }
+    if (vec("light", light)) {
+      v.light = Orbit::from({0, 0, 0}, light);
+      v.light.distance = 1;
+      v.light_moved = true;
+    }
+    dirty_ = true;
+  }
   lua_settop(L_, 0);
 }
 
@@ -373,7 +415,9 @@ void Loop::redraw() {
     return set_status();
   }
   frame_error_.clear();
-  shader_error_ = fallback_errors_.empty() ? "" : fallback_errors_.front();
+  // A frame that did not build the broken program proves nothing: the error stays until a run
+  // after the next save (every shader save re-runs the script) builds without one.
+  if (!fallback_errors_.empty()) shader_error_ = fallback_errors_.front();
   auto& target = lua::check<gl::RenderTarget>(L_, 1, "Target");
   title_ = lua_tostring(L_, 2) ? lua_tostring(L_, 2) : "";
   gl::finish();

@@ -19,7 +19,7 @@ local S = {
   view = nil,       -- the last view the loop rendered ({mode, camera, light, width, height})
   frames = 0,       -- frames rendered by the loop
   requests = {},    -- actions asked of the loop from Lua (quit)
-  out = {},         -- cached output targets of the loop, by "layout WxH"
+  out = {},         -- the loop's targets, reused between frames (by "what WxH")
 }
 
 local MODES = { "network", "truth", "error", "side" }
@@ -65,7 +65,12 @@ end
 
 -- Networks (and tables holding them) are snapshotted when made; every re-run starts from the
 -- snapshot, so the script's edits apply to the trained weights and deleting an edit undoes it.
-live.restorers = {}
+live.restorers = {
+  Mlp = {  -- the weights and biases in the shared flat layout; counters stay as they are
+    snapshot = function(net) return net:params() end,
+    restore = function(net, params) net:set_params(params) end,
+  },
+}
 
 local function type_of(v)
   local mt = getmetatable(v)
@@ -152,8 +157,8 @@ end
 ---------------------------------------------------------------------------------------------
 -- sn.live.show / sn.live.render
 
-local SHOW_KEYS = { "network", "truth", "camera", "light", "mode", "title", "val_mse", "error_scale", "colormap",
-                    "size" }
+local SHOW_KEYS = { "network", "truth", "scene", "camera", "light", "mode", "title", "val_mse", "error_scale",
+                    "colormap", "size" }
 
 local function strict(t, valid, what, level)
   if type(t) ~= "table" then error(("%s expects a table of options, got %s"):format(what, type(t)), level + 1) end
@@ -194,19 +199,41 @@ local function is_camera(v)
   return type(v) == "userdata" and getmetatable(v) == debug.getregistry().Camera
 end
 
--- sn.live.show{ network = function(view) -> Target, truth = function(view) -> Target,
+local function type_is(v, name)
+  return type(v) == "userdata" and getmetatable(v) == debug.getregistry()[name]
+end
+
+-- What `network` / `truth` may be: a function of the view, or with a `scene`, a network (Mlp)
+-- or a lighting model (sn.lighting.*) that scene:render shades from the view's camera and light.
+local function drawer(spec, key)
+  local x = spec[key]
+  if x == nil or type(x) == "function" then return x end
+  local kind = key == "network" and "Mlp" or "Lighting"
+  if not type_is(x, kind) then
+    error(("sn.live.show: '%s' must be a function(view) returning a Target or Image, or %s, got %s"):format(
+      key, key == "network" and "a network (sn.mlp)" or "a lighting model (sn.lighting.*)", tostring(x)), 3)
+  end
+  if not spec.scene then
+    error(("sn.live.show: '%s' is %s; give the scene it is rendered in: scene = sn.scene{...}"):format(
+      key, tostring(x)), 3)
+  end
+  local scene = spec.scene
+  return function(view)
+    return scene:render(x, { camera = view.camera, light = view.light, size = { view.width, view.height } })
+  end
+end
+
+-- sn.live.show{ network = net | function(view), truth = model | function(view), scene = scene,
 --               camera = Camera, light = {dir = {x,y,z}}, mode = "network", title = "...",
 --               val_mse = number | function() -> number, error_scale = 0.25,
 --               colormap = "inferno", size = {w, h} }
 function live.show(spec)
   strict(spec, SHOW_KEYS, "sn.live.show", 2)
   if spec.network == nil and spec.truth == nil then
-    error("sn.live.show: give at least one of 'network' or 'truth' (functions of the view returning a Target)", 2)
+    error("sn.live.show: give at least one of 'network' or 'truth'", 2)
   end
-  for _, k in ipairs({ "network", "truth" }) do
-    if spec[k] ~= nil and type(spec[k]) ~= "function" then
-      error(("sn.live.show: '%s' must be a function(view) returning a Target, got %s"):format(k, type(spec[k])), 2)
-    end
+  if spec.scene ~= nil and not type_is(spec.scene, "Scene") then
+    error("sn.live.show: 'scene' must be a Scene (sn.scene{...}), got " .. tostring(spec.scene), 2)
   end
   if spec.camera ~= nil and not is_camera(spec.camera) then
     error("sn.live.show: 'camera' must be a Camera (sn.camera{...}), got " .. type(spec.camera), 2)
@@ -226,9 +253,30 @@ function live.show(spec)
   if spec.val_mse ~= nil and type(spec.val_mse) ~= "number" and type(spec.val_mse) ~= "function" then
     error("sn.live.show: 'val_mse' must be a number or a function returning one", 2)
   end
-  local copy = {}
+  local copy = { draw = {} }
   for k, v in pairs(spec) do copy[k] = v end
+  copy.draw.network, copy.draw.truth = drawer(spec, "network"), drawer(spec, "truth")
   copy.mode = copy.mode or (copy.network and "network" or "truth")
+  local scene = spec.scene
+  if scene then  -- the scene's first view, light and size unless the show says otherwise
+    copy.camera = copy.camera or scene:views()[1]
+    if not copy.light then
+      local l = scene:light()
+      copy.light = { dir = { l.dir[1], l.dir[2], l.dir[3] } }
+    end
+    if not copy.size then
+      local w, h = scene:size()
+      copy.default_size = { w, h }
+    end
+  end
+  local net = spec.network
+  if type_is(net, "Mlp") then
+    copy.title = copy.title or tostring(net)
+    copy.val_mse = copy.val_mse or function()
+      local b = net:best()
+      return b and b.val_mse
+    end
+  end
   if S.running then S.pending = copy else S.spec = copy end
 end
 
@@ -239,25 +287,30 @@ local function current_spec(what)
   return spec
 end
 
-local function check_target(t, what)
-  if type(t) ~= "userdata" or getmetatable(t) ~= debug.getregistry().Target then
-    error(("%s must return a Target, got %s"):format(what, type(t) == "userdata" and tostring(t) or type(t)), 0)
+-- A drawer's result as a Target: Images (scene:render) are uploaded, into `cache` when given.
+local function as_target(t, what, cache, key)
+  if type_is(t, "Target") then return t end
+  if type_is(t, "Image") then
+    local into = cache and cache[key]
+    local out = sn.live_upload(t, into)
+    if cache then cache[key] = out end
+    return out
   end
-  return t
+  error(("%s must return a Target or an Image, got %s"):format(what, type(t) == "userdata" and tostring(t) or type(t)), 0)
 end
 
-local function draw(spec, which, view)
-  local f = spec[which]
+local function draw(spec, which, view, cache)
+  local f = spec.draw[which]
   if not f then
-    local has = spec.network and "network" or "truth"
+    local has = spec.draw.network and "network" or "truth"
     error(("mode '%s' needs '%s' in sn.live.show{...} (this view has only '%s')"):format(view.mode, which, has), 0)
   end
-  return check_target(f(view), "sn.live.show's '" .. which .. "' function")
+  return as_target(f(view), "sn.live.show's '" .. which .. "'", cache, which .. " " .. view.width .. "x" .. view.height)
 end
 
 -- The view a mode renders, with every default filled in.
 local function resolve_view(spec, o)
-  local size = spec.size
+  local size = spec.size or spec.default_size
   local w, h = o.width or (size and size[1]) or 640, o.height or (size and size[2]) or 480
   return {
     mode = o.mode or spec.mode,
@@ -273,20 +326,24 @@ local function panel_size(w, h)
   return pw, math.max(1, math.floor(pw * h / w + 0.5))
 end
 
-local function render(spec, view, into)
+-- `cache` (the loop's) keeps GPU targets between frames; headless renders get fresh ones.
+local function render(spec, view, cache)
   local mode = view.mode
-  if mode == "network" then return draw(spec, "network", view) end
-  if mode == "truth" then return draw(spec, "truth", view) end
+  if mode == "network" then return draw(spec, "network", view, cache) end
+  if mode == "truth" then return draw(spec, "truth", view, cache) end
   local v = view
   if mode == "side" then
     v = {}
     for k, x in pairs(view) do v[k] = x end
     v.width, v.height = panel_size(view.width, view.height)
   end
-  local n, t = draw(spec, "network", v), draw(spec, "truth", v)
-  return sn.live_compose { network = n, truth = t, layout = mode == "side" and "side" or "error",
-                           scale = view.error_scale or spec.error_scale or 0.25, colormap = spec.colormap,
-                           into = into }
+  local n, t = draw(spec, "network", v, cache), draw(spec, "truth", v, cache)
+  local key = mode .. " " .. view.width .. "x" .. view.height
+  local out = sn.live_compose { network = n, truth = t, layout = mode == "side" and "side" or "error",
+                                scale = view.error_scale or spec.error_scale or 0.25, colormap = spec.colormap,
+                                into = cache and cache[key] }
+  if cache then cache[key] = out end
+  return out
 end
 
 -- sn.live.render{ mode = "network" | "truth" | "error" | "side", camera = Camera,
@@ -337,18 +394,35 @@ function live.status()
 end
 
 local function vec_code(v)
-  return ("{%.9g, %.9g, %.9g}"):format(v[1], v[2], v[3])
+  return ("{%.17g, %.17g, %.17g}"):format(v[1], v[2], v[3])
 end
 
--- sn.live.view_code() -> a line of Lua that renders the current view headless (the P key prints it)
-function live.view_code()
+-- sn.live.set_view{ mode = "error", camera = Camera, light = {dir = {x,y,z}} }: what the
+-- window's keys and mouse do, from code (the console): the loop takes it before its next frame.
+function live.set_view(o)
+  strict(o, { "mode", "camera", "light" }, "sn.live.set_view", 2)
+  if o.mode ~= nil and not is_mode(o.mode) then
+    error(("sn.live.set_view: unknown mode '%s' (valid: %s)"):format(tostring(o.mode), table.concat(MODES, ", ")), 2)
+  end
+  if o.camera ~= nil and not is_camera(o.camera) then error("sn.live.set_view: 'camera' must be a Camera", 2) end
+  if o.light ~= nil then check_light(o.light, "sn.live.set_view: light", 2) end
+  local r = S.requests.view or {}
+  r.mode = o.mode or r.mode
+  if o.camera then r.eye, r.target, r.fov = o.camera:eye(), o.camera:target(), o.camera:fov() end
+  if o.light then r.light = o.light.dir end
+  S.requests.view = r
+end
+
+-- sn.live.view_code([path]) -> a line of Lua that renders the current view headless and saves
+-- it to `path` (default "view.png"); the P key prints it. Numbers are exact (%.17g).
+function live.view_code(path)
   local v = S.view
   if not v then return "-- nothing rendered yet" end
   local c = v.camera
-  local cam = ("sn.camera { eye = %s, target = %s, fov = %.9g%s }"):format(vec_code(c:eye()), vec_code(c:target()),
-    c:fov(), c:aspect() and (", aspect = %.9g"):format(c:aspect()) or "")
+  local cam = ("sn.camera { eye = %s, target = %s, fov = %.17g%s }"):format(vec_code(c:eye()), vec_code(c:target()),
+    c:fov(), c:aspect() and (", aspect = %.17g"):format(c:aspect()) or "")
   return ("sn.live.render { mode = %q, camera = %s, light = { dir = %s }, width = %d, height = %d }"
-          .. ":read():save(\"view.png\")"):format(v.mode, cam, vec_code(v.light.dir), v.width, v.height)
+          .. ":read():save(%q)"):format(v.mode, cam, vec_code(v.light.dir), v.width, v.height, path or "view.png")
 end
 
 ---------------------------------------------------------------------------------------------
@@ -520,9 +594,9 @@ function live._frame(v)
   if not spec.size then o.width, o.height = v.width, v.height end
   local view = resolve_view(spec, o)
   view.error_scale = (spec.error_scale or 0.25) * (v.error_scale_factor or 1)
-  local key = view.mode .. " " .. view.width .. "x" .. view.height
-  local target = render(spec, view, S.out[key])
-  if view.mode == "error" or view.mode == "side" then S.out[key] = target end
+  local size = view.width .. "x" .. view.height
+  if S.out_size ~= size then S.out, S.out_size = {}, size end  -- a resized window frees the old targets
+  local target = render(spec, view, S.out)
   S.view, S.frames = view, S.frames + 1
   local parts = { spec.title or "shadenet", view.mode }
   if view.mode == "error" or view.mode == "side" then
@@ -536,7 +610,7 @@ end
 function live._take_requests()
   local r = S.requests
   S.requests = {}
-  return r.quit == true, r.redraw == true
+  return r.quit == true, r.redraw == true, r.view
 end
 
 -- Console lines see the globals and the script's top-level locals of its last good run;

@@ -1,8 +1,12 @@
 // sn.live_compose{...}: the live view's error heatmap and side-by-side panel on the GPU
-// (runtime/live/compose.h). The Lua side (shadenet.live.lua) calls it for sn.live.render.
+// (runtime/live/compose.h), and sn.live_upload(image) for views rendered to Images. The Lua
+// side (shadenet.live.lua) calls them for sn.live.render.
+#include <epoxy/gl.h>
+
 #include <filesystem>
 
 #include "gl/render_target.h"
+#include "io/image.h"
 #include "live/compose.h"
 #include "lua/binding.h"
 #include "lua/module.h"
@@ -43,6 +47,34 @@ int w_compose(lua_State* L) {
   return 1;
 }
 
+// sn.live_upload(image [, into]) -> Target holding the image (rows top first, as Image keeps
+// them) in attachment 1, for views whose renders come back as Images (scene:render). RGB gets
+// alpha 1, one channel is grey. `into` is reused when it has the image's size.
+int w_upload(lua_State* L) {
+  const io::Image& img = check<io::Image>(L, 1, "Image");
+  if (img.channels != 1 && img.channels != 3 && img.channels != 4)
+    throw Error("sn.live_upload: an image of 1, 3 or 4 channels expected, got " + std::to_string(img.channels));
+  std::vector<float> rgba(size_t(img.width) * img.height * 4);
+  for (int y = 0; y < img.height; ++y)  // GL rows start at the bottom
+    for (int x = 0; x < img.width; ++x) {
+      float* o = &rgba[(size_t(img.height - 1 - y) * img.width + x) * 4];
+      if (img.channels == 1) o[0] = o[1] = o[2] = img.at(x, y, 0), o[3] = 1;
+      else
+        for (int c = 0; c < 4; ++c) o[c] = c < img.channels ? img.at(x, y, c) : 1.f;
+    }
+  std::shared_ptr<gl::RenderTarget> out;
+  if (!lua_isnoneornil(L, 2)) {
+    auto& into = check_box<gl::RenderTarget>(L, 2, "Target");
+    if (into->width() == img.width && into->height() == img.height) out = into;
+  }
+  bool reused = out != nullptr;
+  if (!out) out = std::make_shared<gl::RenderTarget>(img.width, img.height);
+  glTextureSubImage2D(out->color_texture(0), 0, 0, 0, img.width, img.height, GL_RGBA, GL_FLOAT, rgba.data());
+  if (reused) lua_pushvalue(L, 2);
+  else push(L, std::move(out), "Target");
+  return 1;
+}
+
 // sn.live_absolute(path) -> the absolute, normalised path (for messages naming saved files)
 int w_absolute(lua_State* L) {
   std::string p = check_string(L, 1, "path");
@@ -55,6 +87,8 @@ int w_absolute(lua_State* L) {
 void open_live(lua_State* L) {
   lua_pushcfunction(L, wrap<w_compose>);
   lua_setfield(L, -2, "live_compose");
+  lua_pushcfunction(L, wrap<w_upload>);
+  lua_setfield(L, -2, "live_upload");
   lua_pushcfunction(L, wrap<w_absolute>);
   lua_setfield(L, -2, "live_absolute");
 }

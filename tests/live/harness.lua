@@ -1,0 +1,162 @@
+-- Drives a live session from a test: starts `shadenet [--window] --watch scenario.lua` with the
+-- loop's test hooks (SHADENET_LIVE_SNAPSHOT: one EXR per redrawn frame; SHADENET_LIVE_EXIT_AFTER:
+-- a time limit), feeds its console through a pipe, rewrites its files and waits for its frames.
+-- The window tests run under xvfb-run, so a child started with `window = true` opens its window
+-- on the same display.
+local sn = require "shadenet"
+local ffi = require "ffi"
+pcall(ffi.cdef, "int usleep(unsigned int usec);")
+
+local H = {}
+
+function H.sleep(s) ffi.C.usleep(math.floor(s * 1e6)) end
+
+function H.exists(path)
+  local f = io.open(path, "rb")
+  if f then f:close() end
+  return f ~= nil
+end
+
+function H.read(path)
+  local f = assert(io.open(path, "rb"), "cannot read " .. path)
+  local s = f:read("*a")
+  f:close()
+  return s
+end
+
+-- Saves the way most editors do: a new file renamed over the old one.
+function H.write(path, text)
+  local f = assert(io.open(path .. ".tmp", "wb"))
+  f:write(text)
+  f:close()
+  assert(os.rename(path .. ".tmp", path))
+end
+
+-- Saves in place (truncate and write), the other way editors save.
+function H.write_in_place(path, text)
+  local f = assert(io.open(path, "wb"))
+  f:write(text)
+  f:close()
+end
+
+-- The shadenet binary running this test.
+H.shadenet = arg and arg[-1] or "shadenet"
+
+local Session = {}
+Session.__index = Session
+
+-- H.start{ dir = "out/live_tests/x", script = path, window = true, size = "160x120",
+--          limit = 30 (seconds: the child's SHADENET_LIVE_EXIT_AFTER), args = {...} } -> session
+function H.start(o)
+  os.execute(("rm -rf %q %q %q && mkdir -p %q"):format(o.dir .. "/frames", o.dir .. "/pid", o.dir .. "/log.txt",
+                                                       o.dir .. "/frames"))
+  local s = setmetatable({ dir = o.dir, log_path = o.dir .. "/log.txt", started = sn.clock() }, Session)
+  local cmd = ("echo $$ > %q; exec env SHADENET_LIVE_SNAPSHOT=%q SHADENET_LIVE_EXIT_AFTER=%d %q %s --size %s --watch %q %s > %q 2>&1")
+    :format(o.dir .. "/pid", o.dir .. "/frames/frame-%d.exr", o.limit or 30, H.shadenet,
+            o.window == false and "" or "--window", o.size or "160x120", o.script,
+            table.concat(o.args or {}, " "), s.log_path)
+  s.pipe = assert(io.popen("sh -c '" .. cmd:gsub("'", "'\\''") .. "'", "w"))
+  for _ = 1, 250 do
+    s.pid = H.exists(o.dir .. "/pid") and tonumber(H.read(o.dir .. "/pid"))
+    if s.pid then break end
+    H.sleep(0.02)
+  end
+  assert(s.pid, "the live session did not start")
+  return s
+end
+
+function Session:log() return H.exists(self.log_path) and H.read(self.log_path) or "" end
+
+function Session:fail(msg)
+  error(("%s\n--- session log (%s) ---\n%s"):format(msg, self.log_path, self:log()), 2)
+end
+
+-- One console line, as typed.
+function Session:send(line)
+  self.pipe:write(line, "\n")
+  self.pipe:flush()
+end
+
+function Session:frame_path(n) return ("%s/frames/frame-%d.exr"):format(self.dir, n) end
+
+-- The number of the newest frame saved so far (0 = none).
+function Session:frames()
+  local n = self.seen or 0
+  while H.exists(self:frame_path(n + 1)) do n = n + 1 end
+  self.seen = n
+  return n
+end
+
+-- Waits until frame n exists; returns the seconds waited. Fails after `timeout`.
+function Session:wait_frame(n, timeout)
+  local t0 = sn.clock()
+  while self:frames() < n do
+    if sn.clock() - t0 > (timeout or 20) then self:fail(("frame %d did not come within %gs"):format(n, timeout or 20)) end
+    H.sleep(0.02)
+  end
+  return sn.clock() - t0
+end
+
+-- Waits until every console line sent so far has run and drawn its frame; returns the number
+-- of the newest frame. (A line that runs without error redraws once, after the lines read with it.)
+function Session:settle()
+  self.marks = (self.marks or 0) + 1
+  self:send(('print("SETTLE %d " .. sn.live.frames())'):format(self.marks))
+  local before = tonumber(self:wait_log(("SETTLE %d (%%d+)"):format(self.marks)))
+  self:wait_frame(before + 1)
+  return before + 1
+end
+
+-- Waits until the log matches a Lua pattern; returns the captures (or the match).
+function Session:wait_log(pattern, timeout)
+  local t0 = sn.clock()
+  while true do
+    local r = { self:log():match(pattern) }
+    if #r > 0 then return unpack(r) end
+    if sn.clock() - t0 > (timeout or 20) then self:fail(("the log never matched %q"):format(pattern)) end
+    H.sleep(0.02)
+  end
+end
+
+function Session:image(n) return sn.image.load(self:frame_path(n)) end
+
+-- CPU seconds (user + system) the session's process has used so far.
+function Session:cpu_seconds()
+  local stat = H.read(("/proc/%d/stat"):format(self.pid))
+  local after = stat:match("%) (.*)$")  -- the command name may hold spaces; fields follow its ')'
+  local fields = {}
+  for f in after:gmatch("%S+") do fields[#fields + 1] = f end
+  local ticks = tonumber(fields[12]) + tonumber(fields[13])  -- utime, stime (fields 14, 15 of stat)
+  local p = io.popen("getconf CLK_TCK")
+  local hz = tonumber(p:read("*l")) or 100
+  p:close()
+  return ticks / hz
+end
+
+-- Ends the session through its console and waits for the process to exit.
+function Session:stop()
+  self:send("sn.live.quit()")
+  self.pipe:close()  -- waits for the process (LuaJIT does not report its status)
+  return not H.exists(("/proc/%d/stat"):format(self.pid))
+end
+
+-- Images equal in every channel of every pixel.
+function H.same(a, b)
+  local w, h = a:size()
+  local w2, h2 = b:size()
+  if w ~= w2 or h ~= h2 then return false end
+  return sn.image.mse(a, b) == 0
+end
+
+-- Runs a script headless (EGL, no window), as a researcher reproducing a figure would; the
+-- script must print `marker` when it succeeded. Returns its output.
+function H.run_headless(script, marker)
+  local cmd = ("%q %q 2>&1"):format(H.shadenet, script)
+  local p = io.popen(cmd)
+  local out = p:read("*a")
+  p:close()
+  assert(out:find(marker, 1, true), "headless run failed: " .. cmd .. "\n" .. out)
+  return out
+end
+
+return H

@@ -1,0 +1,51 @@
+-- Headless parity: for every view mode, a moved camera and a moved light, the frame the window
+-- showed is bit for bit the image sn.live.render makes headless (EGL, no display) from the view
+-- the window reports (sn.live.view_code).
+local sn = require "shadenet"
+package.path = "tests/live/?.lua;" .. package.path
+local H = require "harness"
+
+local dir = "out/live_tests/parity"
+os.execute(("mkdir -p %q && cp tests/live/tint.frag %q/"):format(dir, dir))
+local script = dir .. "/scenario.lua"
+H.write(script, H.read("tests/live/scenario.lua"))
+
+local s = H.start { dir = dir, script = script, size = "180x120" }
+s:wait_frame(1)
+local cases = {
+  { "network", "sn.live.set_view{ mode = 'network' }" },
+  { "truth", "sn.live.set_view{ mode = 'truth' }" },
+  { "error", "sn.live.set_view{ mode = 'error' }" },
+  { "side", "sn.live.set_view{ mode = 'side' }" },
+  { "orbit", "sn.live.set_view{ mode = 'error', camera = sn.camera { eye = { -2, 1.2, 1.5 }, fov = 40 } }" },
+  { "light", "sn.live.set_view{ mode = 'truth', light = { dir = { -0.6, 0.2, 0.7 } } }" },
+}
+local code, frames = { "local sn = require 'shadenet'", ("dofile(%q)"):format(script) }, {}
+for i, c in ipairs(cases) do
+  s:send(c[2])
+  frames[i] = s:settle()
+  s:send(('print("VIEW %d " .. sn.live.view_code(%q))'):format(i, dir .. "/headless_" .. c[1] .. ".exr"))
+  code[#code + 1] = s:wait_log(("VIEW %d ([^\n]+)"):format(i))
+end
+s:stop()
+code[#code + 1] = "print('HEADLESS OK')"
+H.write(dir .. "/headless.lua", table.concat(code, "\n") .. "\n")
+H.run_headless(dir .. "/headless.lua", "HEADLESS OK")
+
+local sizes = {}
+for i, c in ipairs(cases) do
+  local shown, headless = s:image(frames[i]), sn.image.load(dir .. "/headless_" .. c[1] .. ".exr")
+  assert(H.same(shown, headless), c[1] .. ": the window's frame differs from the headless render")
+  local w, h = shown:size()
+  sizes[#sizes + 1] = ("%s %dx%d"):format(c[1], w, h)
+end
+-- The views really differ from each other (a parity test of identical pictures proves little).
+for i = 1, #cases do
+  for j = i + 1, #cases do
+    local a, b = s:image(frames[i]), s:image(frames[j])
+    local wa, ha = a:size()
+    local wb, hb = b:size()
+    assert(wa ~= wb or ha ~= hb or not H.same(a, b), cases[i][1] .. " and " .. cases[j][1] .. " look the same")
+  end
+end
+print("parity: " .. table.concat(sizes, ", ") .. " equal headless")
