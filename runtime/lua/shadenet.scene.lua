@@ -10,22 +10,35 @@ local function type_name(x)
   return (type(mt) == "table" and mt.__name) or type(x)
 end
 
--- scene:render(model_or_net [, { view = 1 }]) -> Image (RGBA float, alpha = coverage)
+-- scene:render(model_or_net [, { view = 1, camera = Camera, light = {dir, color}, size = {w, h} }])
+--   -> Image (RGBA float, alpha = coverage)
 --   a "Lighting" model: the ground truth over the view's G-buffer (sn.render_truth);
 --   an "Mlp": the network's own fragment pass over the attributes it reads (net:render).
+-- `camera` replaces the scene's view (live mode's orbit), `light` the scene's light for the
+-- ground truth (a network shows what it learned), `size` the scene's image size.
+local RENDER_KEYS = { view = true, camera = true, light = true, size = true }
 function Scene.render(scene, what, options)
   options = options or {}
   if type(options) ~= "table" then
     error("scene:render: options table expected as argument 2, got " .. type(options), 2)
   end
   for k in pairs(options) do
-    if k ~= "view" then error("scene:render: unknown option '" .. tostring(k) .. "' (valid: view)", 2) end
+    if not RENDER_KEYS[k] then
+      error("scene:render: unknown option '" .. tostring(k) .. "' (valid: camera, light, size, view)", 2)
+    end
   end
-  local view = options.view or 1
+  if options.view ~= nil and options.camera ~= nil then error("scene:render: give 'view' or 'camera', not both", 2) end
+  local where = { view = options.camera == nil and (options.view or 1) or options.view, camera = options.camera,
+                  size = options.size }
   local kind = type_name(what)
   if kind == "Lighting" then
-    local g = scene:gbuffer { view = view, attributes = what:attributes() }
-    return sn.render_truth(g, what, scene:light())
+    where.attributes = what:attributes()
+    local g = scene:gbuffer(where)
+    local light = scene:light()
+    if options.light then
+      light = { dir = options.light.dir or light.dir, color = options.light.color or light.color }
+    end
+    return sn.render_truth(g, what, light)
   elseif kind == "Mlp" then
     local inputs = what:inputs()
     if #inputs == 0 then
@@ -33,7 +46,8 @@ function Scene.render(scene, what, options)
             .. "scene:dataset (or give it input names) first", 2)
     end
     if not what.render then error("scene:render: this build cannot render networks (net:render is missing)", 2) end
-    local g = scene:gbuffer { view = view, attributes = inputs }
+    where.attributes = inputs
+    local g = scene:gbuffer(where)
     return what:render(g)
   end
   error("scene:render: a lighting model (sn.lighting.*) or a network (sn.mlp) expected, got " .. kind, 2)

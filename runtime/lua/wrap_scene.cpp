@@ -128,10 +128,12 @@ int view_index(const Options& o, const LuaScene& s) {
   return int(v - 1);
 }
 
-// scene:gbuffer{ view = 1, attributes = {"normal", "view"} } -> GBuffer
+// scene:gbuffer{ view = 1, attributes = {"normal", "view"}, camera = Camera (instead of a view:
+//                live mode's orbit), size = {w, h} (default: the scene's) } -> GBuffer
 int w_gbuffer(lua_State* L) {
   LuaScene& s = self(L);
-  Options o(L, 2, "scene:gbuffer", {"view", "attributes"});
+  Options o(L, 2, "scene:gbuffer", {"view", "attributes", "camera", "size"});
+  if (o.has("view") && o.has("camera")) throw Error("scene:gbuffer: give 'view' or 'camera', not both");
   int view = view_index(o, s);
   std::vector<std::string> attributes = {"normal", "view"};
   if (o.has("attributes")) {
@@ -139,7 +141,21 @@ int w_gbuffer(lua_State* L) {
     attributes = string_list(L, a, o.where("attributes"));
     lua_pop(L, 1);
   }
-  push(L, std::make_shared<scene::GBuffer>(s.scene.gbuffer(view, attributes)), kGBufferType);
+  int w = s.scene.width, h = s.scene.height;
+  if (o.has("size")) {
+    auto v = o.numbers("size", 2);
+    if (v[0] < 1 || v[1] < 1 || v[0] > 16384 || v[1] > 16384 || v[0] != std::floor(v[0]) || v[1] != std::floor(v[1]))
+      throw Error(o.where("size") + ": two whole numbers in 1..16384 expected");
+    w = int(v[0]), h = int(v[1]);
+  }
+  const scene::Camera* camera = &s.scene.views[size_t(view)];
+  if (o.has("camera")) {
+    int c = o.push("camera");
+    if (!test_type(L, c, "Camera")) throw Error(o.where("camera") + ": Camera expected, got " + type_name_at(L, c));
+    camera = &check<scene::Camera>(L, c, "Camera");  // stays on the stack, alive, until we return
+  }
+  push(L, std::make_shared<scene::GBuffer>(scene::render_gbuffer(s.scene.mesh_list(), *camera, w, h, attributes)),
+       kGBufferType);
   return 1;
 }
 
