@@ -159,4 +159,61 @@ function H.run_headless(script, marker)
   return out
 end
 
+-- Real input for the window (X11's XTest, as a user's mouse and keyboard): H.x11() -> input
+-- with :move(x, y), :key("3"), :drag(button, x0, y0, x1, y1); coordinates on the screen.
+-- Without a window manager a new window sits at the screen's top-left corner.
+function H.x11()
+  pcall(ffi.cdef, [[
+    typedef struct _XDisplay Display;
+    Display* XOpenDisplay(const char* name);
+    int XCloseDisplay(Display* d);
+    int XSync(Display* d, int discard);
+    unsigned long XStringToKeysym(const char* name);
+    unsigned char XKeysymToKeycode(Display* d, unsigned long keysym);
+    int XTestFakeKeyEvent(Display* d, unsigned int keycode, int is_press, unsigned long delay);
+    int XTestFakeButtonEvent(Display* d, unsigned int button, int is_press, unsigned long delay);
+    int XTestFakeMotionEvent(Display* d, int screen, int x, int y, unsigned long delay);
+  ]])
+  local X11, Xtst = ffi.load("X11"), ffi.load("Xtst.so.6")
+  local d = X11.XOpenDisplay(nil)
+  assert(d ~= nil, "no X display (run under xvfb-run)")
+  local input = {}
+  function input:move(x, y)
+    Xtst.XTestFakeMotionEvent(d, -1, x, y, 0)
+    X11.XSync(d, 0)
+  end
+  function input:key(name)
+    local code = X11.XKeysymToKeycode(d, X11.XStringToKeysym(name))
+    assert(code ~= 0, "no key " .. name)
+    Xtst.XTestFakeKeyEvent(d, code, 1, 0)
+    Xtst.XTestFakeKeyEvent(d, code, 0, 0)
+    X11.XSync(d, 0)
+  end
+  function input:drag(button, x0, y0, x1, y1, steps)
+    self:move(x0, y0)
+    Xtst.XTestFakeButtonEvent(d, button, 1, 0)
+    X11.XSync(d, 0)
+    steps = steps or 8
+    for i = 1, steps do
+      H.sleep(0.01)
+      self:move(math.floor(x0 + (x1 - x0) * i / steps), math.floor(y0 + (y1 - y0) * i / steps))
+    end
+    Xtst.XTestFakeButtonEvent(d, button, 0, 0)
+    X11.XSync(d, 0)
+  end
+  function input:close() X11.XCloseDisplay(d) end
+  return input
+end
+
+-- The title of the session's window as X knows it (xwininfo), or nil.
+function H.window_title(match)
+  local p = io.popen("xwininfo -root -tree 2>/dev/null")
+  local tree = p:read("*a")
+  p:close()
+  for title in tree:gmatch('"([^"\n]*)"') do
+    if title:find(match, 1, true) then return title end
+  end
+  return nil
+end
+
 return H
