@@ -40,6 +40,9 @@ H.write(script, (template:gsub("%-%- EDITS\n", "net.layers[1].weight[1][1] = = 0
 local where = s:wait_log("%[live%] error: ([^\n]*scenario%.lua:%d+):")
 assert(where:match(":(%d+)$") == tostring(edit_line), "syntax error reported at " .. where .. ", expected line " .. edit_line)
 assert(status_error():find("scenario.lua:" .. edit_line .. ":", 1, true), "the status shows the syntax error")
+local title = H.window_title("ERROR ")
+assert(title and title:find("scenario.lua:" .. edit_line .. ": unexpected symbol", 1, true),
+       "the window's title shows the error: " .. tostring(title))
 assert_still_good("syntax error")
 
 -- 2. Runtime error after a weight edit: the edit is undone, the last good weights stay.
@@ -59,6 +62,8 @@ local msg = s:wait_log("%[live%] error: (GLSL compile error[^\n]*)")
 local frag_line = s:wait_log("(tint%.frag:%d+): error")
 assert(frag_line == "tint.frag:8", "shader error at " .. frag_line .. ", expected tint.frag:8 (the broken statement)")
 assert(status_error():find("tint.frag", 1, true), "the status names the shader")
+title = H.window_title("ERROR ")
+assert(title and title:find("tint.frag:8: error", 1, true), "the title shows the shader's file:line: " .. tostring(title))
 assert_still_good("broken shader")
 s:send("sn.live.set_view{ mode = 'side' }")  -- new views still render with the last good program
 local side = s:settle()

@@ -52,6 +52,14 @@ local shot = sn.image.load(path)
 assert(sn.image.mse(shot, s:image(s:frames()), { channels = 3 }) < 1e-4, "the screenshot is the view shown")
 os.remove(path)
 
+-- R: an orbit recorded as 36 frames of the current view.
+x11:key("r")
+local count, rec = s:wait_log("%[live%] recorded (%d+) frames of an orbit in (/[^\n]+)")
+assert(tonumber(count) == 36 and H.exists(rec .. "/frame-0036.png"), "36 orbit frames in " .. rec)
+assert(sn.image.mse(sn.image.load(rec .. "/frame-0001.png"), sn.image.load(rec .. "/frame-0019.png")) > 1e-4,
+       "the orbit's frames differ")
+os.execute(("rm -r %q"):format(rec))
+
 -- Esc closes the session.
 x11:key("Escape")
 s.pipe:close()
