@@ -144,4 +144,15 @@ s:send("tint[3] = 0.05")  -- the script's local, from the console
 n = s:settle()
 assert(math.abs(s:image(n):get(2, 2)[3] - 0.05) < 1e-6, "the console's edit is shown")
 s:stop()
-print("live headless: keep, restore, every view, heatmap = CPU heatmap, recordings, --watch with a module")
+-- 6. Every example of docs/lua-api/live.md runs, each in a fresh process (they declare views).
+local doc = H.read("docs/lua-api/live.md")
+local count = 0
+for body in doc:gmatch("```lua\n(.-)\n```") do
+  count = count + 1
+  local path = ("out/live_tests/headless/doc_%d.lua"):format(count)
+  H.write(path, body .. "\nprint('DOC EXAMPLE OK')\n")
+  H.run_headless(path, "DOC EXAMPLE OK")
+end
+assert(count >= 8, "docs/lua-api/live.md has " .. count .. " examples")
+print("live headless: keep, restore, every view, heatmap = CPU heatmap, recordings, --watch with a module, " ..
+      count .. " doc examples")
