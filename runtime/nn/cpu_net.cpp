@@ -26,7 +26,9 @@ constexpr int kLanes = 8;
 std::size_t round8(std::size_t n) { return (n + 7) & ~std::size_t(7); }
 std::size_t round16(std::size_t n) { return (n + 15) & ~std::size_t(15); }
 
-SN_INLINE v8 splat(float x) { return v8{x, x, x, x, x, x, x, x}; }
+// A broadcast; written as a shuffle because GCC turned the 8-element constructor into insert
+// chains and `v8{} + x` into an extra add (x + 0 is not x for -0).
+SN_INLINE v8 splat(float x) { return __builtin_shuffle(v8{x}, v8i{}); }
 SN_INLINE float hsum(const v8& v) { return ((v[0] + v[4]) + (v[1] + v[5])) + ((v[2] + v[6]) + (v[3] + v[7])); }
 
 struct Avx2 {};
