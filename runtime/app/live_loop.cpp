@@ -1,6 +1,7 @@
 #include "app/live_loop.h"
 
 #include <GLFW/glfw3.h>
+#include <unistd.h>
 
 #include <array>
 #include <chrono>
@@ -498,7 +499,12 @@ int Loop::run() {
       fprintf(stderr, "shadenet: %s\n", e.what());
       return 1;
     }
-    stdin_ = std::make_unique<StdinReader>(wake);
+    // A terminal this process does not own (started with `&`) would stop it on the first read.
+    if (isatty(0) && tcgetpgrp(0) != getpgrp())
+      fprintf(stderr, "[live] console off: started in the background of a terminal (run in the foreground to type "
+                      "Lua lines)\n");
+    else
+      stdin_ = std::make_unique<StdinReader>(wake);
     console_ = std::make_unique<Console>(L_, [this](lua_State*) {
       if (!call("_console_env", 0, 1)) return false;
       if (lua_istable(L_, -1)) return true;
@@ -527,7 +533,13 @@ int Loop::run() {
     // Headless there is nothing to show unless a snapshot file is asked for.
     if (dirty_ && !quit_ && (ctx_.windowed() || !snapshot_.empty())) {
       dirty_ = false;
-      redraw();
+      try {
+        redraw();
+      } catch (const std::exception& e) {  // a frame that fails in C++ is reported like one that fails in Lua
+        lua_settop(L_, 0);
+        frame_error_ = e.what();
+        set_status();
+      }
       if (prompt_after_frame_ && console_) console_->prompt(), prompt_after_frame_ = false;
     }
     dirty_ = false;

@@ -48,4 +48,14 @@ for i = 1, #cases do
     assert(wa ~= wb or ha ~= hb or not H.same(a, b), cases[i][1] .. " and " .. cases[j][1] .. " look the same")
   end
 end
-print("parity: " .. table.concat(sizes, ", ") .. " equal headless")
+-- Without --watch, a --window script that declared a view keeps its window open on it (no
+-- reloads, no console): its first frame is the live session's first frame.
+local vdir = dir .. "/view_only"
+os.execute(("rm -rf %q && mkdir -p %q"):format(vdir, vdir))
+local p = io.popen(("SHADENET_LIVE_SNAPSHOT=%q SHADENET_LIVE_EXIT_AFTER=1 %q --window --size 180x120 %q 2>&1 < /dev/null")
+                   :format(vdir .. "/frame-%d.exr", H.shadenet, script))
+local out = p:read("*a")
+p:close()
+assert(H.exists(vdir .. "/frame-1.exr"), "the view-only window drew no frame:\n" .. out)
+assert(H.same(sn.image.load(vdir .. "/frame-1.exr"), s:image(1)), "the view-only window shows the same first frame")
+print("parity: " .. table.concat(sizes, ", ") .. " equal headless; --window without --watch shows the view")
