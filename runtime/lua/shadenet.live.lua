@@ -380,6 +380,10 @@ end
 -- sn.live.frames() -> how many frames the loop has rendered
 function live.frames() return S.frames end
 
+-- sn.live.active() -> true while `shadenet --watch` runs the script (false in a plain run), so a
+-- script can do headless-only work (saving figures) when nobody watches.
+function live.active() return S.active == true end
+
 -- sn.live.quit(): ends the live loop after the current line or reload.
 function live.quit() S.requests.quit = true end
 
@@ -530,6 +534,7 @@ live.record = sn.record
 -- Before each (re)run of the watched script: its modules load afresh, kept networks go back
 -- to their snapshot, and sn.live.show calls collect in `pending`.
 function live._begin_run()
+  S.active = true
   for name in pairs(S.modules) do package.loaded[name] = nil end
   S.modules = {}
   S.files_before, S.files = S.files, {}
