@@ -3,6 +3,7 @@
 // side (shadenet.live.lua) calls them for sn.live.render.
 #include <epoxy/gl.h>
 
+#include <algorithm>
 #include <filesystem>
 
 #include "gl/render_target.h"
@@ -54,14 +55,21 @@ int w_upload(lua_State* L) {
   const io::Image& img = check<io::Image>(L, 1, "Image");
   if (img.channels != 1 && img.channels != 3 && img.channels != 4)
     throw Error("sn.live_upload: an image of 1, 3 or 4 channels expected, got " + std::to_string(img.channels));
-  std::vector<float> rgba(size_t(img.width) * img.height * 4);
-  for (int y = 0; y < img.height; ++y)  // GL rows start at the bottom
-    for (int x = 0; x < img.width; ++x) {
-      float* o = &rgba[(size_t(img.height - 1 - y) * img.width + x) * 4];
-      if (img.channels == 1) o[0] = o[1] = o[2] = img.at(x, y, 0), o[3] = 1;
-      else
-        for (int c = 0; c < 4; ++c) o[c] = c < img.channels ? img.at(x, y, c) : 1.f;
+  const size_t row = size_t(img.width) * 4;
+  std::vector<float> rgba(row * img.height);
+  for (int y = 0; y < img.height; ++y) {  // GL rows start at the bottom
+    float* o = &rgba[size_t(img.height - 1 - y) * row];
+    const float* in = &img.pixels[size_t(y) * img.width * img.channels];
+    if (img.channels == 4) {
+      std::copy(in, in + row, o);
+      continue;
     }
+    for (int x = 0; x < img.width; ++x, o += 4, in += img.channels) {
+      if (img.channels == 1) o[0] = o[1] = o[2] = in[0];
+      else o[0] = in[0], o[1] = in[1], o[2] = in[2];
+      o[3] = 1;
+    }
+  }
   std::shared_ptr<gl::RenderTarget> out;
   if (!lua_isnoneornil(L, 2)) {
     auto& into = check_box<gl::RenderTarget>(L, 2, "Target");
