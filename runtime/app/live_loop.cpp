@@ -540,8 +540,8 @@ int Loop::run() {
         frame_error_ = e.what();
         set_status();
       }
-      if (prompt_after_frame_ && console_) console_->prompt(), prompt_after_frame_ = false;
     }
+    if (prompt_after_frame_ && console_) console_->prompt(), prompt_after_frame_ = false;
     dirty_ = false;
     if (quit_) break;
     double timeout = 3600;
