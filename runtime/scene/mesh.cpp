@@ -475,6 +475,7 @@ int add_accessor(tinygltf::Model& m, int view, int component_type, int type, siz
 Mesh load_mesh(const std::string& path) {
   std::vector<unsigned char> bytes = read_whole_file(path);
   if (bytes.empty()) throw FileError(path, "is empty");
+  if (bytes.size() > UINT32_MAX) throw FileError(path, "is larger than 4 GiB, which tinygltf cannot read");
   tinygltf::TinyGLTF gltf;
   gltf.SetImageLoader(keep_image_bytes, nullptr);
   tinygltf::Model model;
