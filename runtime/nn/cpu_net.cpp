@@ -372,33 +372,49 @@ SN_INLINE void forward_impl(const View& V, const float* x, std::size_t count, fl
 }
 
 template <Activation H>
-void counts_impl(const View& V, const float* x, std::size_t count, std::vector<std::vector<uint32_t>>& counts) {
+SN_INLINE void counts_impl(const View& V, const float* x, std::size_t count,
+                           std::vector<std::vector<uint32_t>>& counts) {
   const Layout& S = V.S;
-  counts.assign(std::size_t(S.L - 1), {});
-  for (int l = 1; l < S.L; ++l) counts[l - 1].assign(std::size_t(S.in[l]), 0);
+  std::size_t units = 0;
+  for (int l = 1; l < S.L; ++l) units += std::size_t(S.in[l]);
+  // Per unit and lane: -(number of samples that hit). Plain ints moved with memcpy: heap
+  // memory from std::vector is only 16-byte aligned, and GCC stores vectors with aligned moves.
+  std::vector<int32_t> hits(units * kLanes, 0);
   for (std::size_t first = 0; first < count; first += kLanes) {
     const int n = count - first < std::size_t(kLanes) ? int(count - first) : kLanes;
     gather_inputs(V, x, nullptr, first, n);
     forward_block<H>(V);
+    const v8i valid = lane_mask(n);
+    std::size_t u = 0;
     for (int l = 1; l < S.L; ++l) {
-      const float* a = reinterpret_cast<const float*>(V.act(l));
-      for (int i = 0; i < S.in[l]; ++i)
-        for (int s = 0; s < n; ++s) {
-          const float v = a[i * kLanes + s];
-          bool hit = false;
-          if constexpr (H == Activation::tanh) hit = std::fabs(v) > 0.99f;
-          else if constexpr (H == Activation::sigmoid) hit = v < 0.01f || v > 0.99f;
-          else hit = v > 0.0f;
-          counts[l - 1][i] += hit;
-        }
+      const v8* a = V.act(l);
+      for (int i = 0; i < S.in[l]; ++i, ++u) {
+        v8i hit;
+        if constexpr (H == Activation::tanh) hit = (a[i] > 0.99f) | (a[i] < -0.99f);
+        else if constexpr (H == Activation::sigmoid) hit = (a[i] < 0.01f) | (a[i] > 0.99f);
+        else hit = a[i] > 0.0f;
+        v8i h;
+        std::memcpy(&h, &hits[u * kLanes], sizeof h);
+        h += hit & valid;  // comparisons give -1 per true lane
+        std::memcpy(&hits[u * kLanes], &h, sizeof h);
+      }
     }
   }
+  counts.assign(std::size_t(S.L - 1), {});
+  std::size_t u = 0;
+  for (int l = 1; l < S.L; ++l)
+    for (int i = 0; i < S.in[l]; ++i, ++u) {
+      int64_t total = 0;
+      for (int s = 0; s < kLanes; ++s) total -= hits[u * kLanes + s];
+      counts[l - 1].push_back(uint32_t(total));
+    }
 }
 
 // The entry points per instruction set; everything above inlines into them.
 using StepFn = bool (*)(const View&, const float*, const float*, const uint32_t*, int, const AdamStep&, double*);
 using MseFn = double (*)(const View&, const float*, const float*, std::size_t);
 using ForwardFn = void (*)(const View&, const float*, std::size_t, float*);
+using CountsFn = void (*)(const View&, const float*, std::size_t, std::vector<std::vector<uint32_t>>&);
 
 template <Activation H>
 __attribute__((target("avx2,fma"))) bool step_avx2(const View& V, const float* x, const float* y,
@@ -414,6 +430,15 @@ __attribute__((target("avx2,fma"))) void forward_avx2(const View& V, const float
   forward_impl<H>(V, x, n, out);
 }
 template <Activation H>
+__attribute__((target("avx2,fma"))) void counts_avx2(const View& V, const float* x, std::size_t n,
+                                                     std::vector<std::vector<uint32_t>>& counts) {
+  counts_impl<H>(V, x, n, counts);
+}
+template <Activation H>
+void counts_sse2(const View& V, const float* x, std::size_t n, std::vector<std::vector<uint32_t>>& counts) {
+  counts_impl<H>(V, x, n, counts);
+}
+template <Activation H>
 bool step_sse2(const View& V, const float* x, const float* y, const uint32_t* rows, int batch, const AdamStep& c,
                double* l) {
   return step_impl<Sse2, H>(V, x, y, rows, batch, c, l);
@@ -423,12 +448,13 @@ struct Kernels {
   StepFn step;
   MseFn mse;
   ForwardFn forward;
+  CountsFn counts;
 };
 
 template <Activation H>
 Kernels kernels_for(bool avx2) {
-  if (avx2) return {step_avx2<H>, mse_avx2<H>, forward_avx2<H>};
-  return {step_sse2<H>, mse_impl<H>, forward_impl<H>};
+  if (avx2) return {step_avx2<H>, mse_avx2<H>, forward_avx2<H>, counts_avx2<H>};
+  return {step_sse2<H>, mse_impl<H>, forward_impl<H>, counts_sse2<H>};
 }
 
 bool cpu_has_avx2() {
@@ -534,13 +560,7 @@ void CpuNet::forward(const float* x, std::size_t count, float* out) {
 
 std::vector<std::vector<uint32_t>> CpuNet::unit_counts(const float* x, std::size_t count) {
   std::vector<std::vector<uint32_t>> counts;
-  const View V{*layout_, arena_, cur_};
-  switch (layout_->hidden) {
-    case Activation::sigmoid: counts_impl<Activation::sigmoid>(V, x, count, counts); break;
-    case Activation::relu: counts_impl<Activation::relu>(V, x, count, counts); break;
-    case Activation::leaky_relu: counts_impl<Activation::leaky_relu>(V, x, count, counts); break;
-    default: counts_impl<Activation::tanh>(V, x, count, counts); break;
-  }
+  kernels(layout_->hidden).counts(View{*layout_, arena_, cur_}, x, count, counts);
   return counts;
 }
 
