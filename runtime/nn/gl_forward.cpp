@@ -15,7 +15,7 @@ namespace sn::nn {
 
 namespace {
 
-// What the shader needs after its sentinel loop: the workgroup reduction (log2 of 64) and a margin.
+// What the shader needs after its sentinel loop: the workgroup's sum (at most 8 rows) and a margin.
 constexpr int kEvalSentinel = 16;
 // GL guarantees at least 65,535 workgroups along x.
 constexpr std::size_t kMaxGroupsPerDispatch = 65535;
@@ -35,8 +35,12 @@ void need(const gl::Buffer& b, std::size_t floats, const char* what) {
 void check_params(const MlpSpec& spec, const GlParams& p) {
   if (!p.buffer) throw std::invalid_argument("gl forward: no parameter buffer");
   if (p.nets < 1) throw std::invalid_argument("gl forward: at least one network");
-  if (p.nets > 1 && p.stride < spec.param_count()) throw std::invalid_argument("gl forward: parameter stride too small");
-  need(*p.buffer, p.offset + std::size_t(p.nets - 1) * p.stride + spec.param_count(), "parameter");
+  const std::size_t pq = padded_chunks(spec);
+  if (p.buffer->type() != gl::ElemType::vec4) throw std::invalid_argument("gl forward: parameters must be a vec4 buffer");
+  if (p.nets > 1 && p.stride < pq) throw std::invalid_argument("gl forward: parameter stride too small");
+  if (p.buffer->count() < p.offset + std::size_t(p.nets - 1) * p.stride + pq)
+    throw std::invalid_argument("gl forward: parameter buffer holds " + std::to_string(p.buffer->count()) +
+                                " vec4s, needs " + std::to_string(p.offset + std::size_t(p.nets - 1) * p.stride + pq));
 }
 
 // Runs mlp_eval.comp over all rows in dispatches of at most kMaxGroupsPerDispatch workgroups.
@@ -44,9 +48,10 @@ void run_eval(const MlpSpec& spec, bool loss, const GlParams& p, const gl::Buffe
               gl::Buffer* out, gl::Buffer* partial, std::size_t rows) {
   gl::ProgramDesc desc;
   desc.compute = "mlp_eval.comp";
-  desc.defines = eval_defines(spec, loss, std::size_t(gl::current().info().max_shared_memory));
+  const int local = eval_local_size(spec, std::size_t(gl::current().info().max_shared_memory));
+  desc.defines = eval_defines(spec, loss, local);
   auto program = gl::get_program(desc);
-  const std::size_t groups = (rows + kEvalLocalSize - 1) / kEvalLocalSize;
+  const std::size_t groups = (rows + std::size_t(local) - 1) / std::size_t(local);
   gl::Buffer cut(gl::ElemType::uint32, std::size_t(p.nets));
   gl::Buffer& dummy = dummy_buffer();
   const gl::Buffer* bind[6] = {&x, y ? y : &dummy, p.buffer, out ? out : &dummy, partial ? partial : &dummy, &cut};
@@ -86,7 +91,8 @@ std::vector<double> gl_squared_errors(const MlpSpec& spec, const GlParams& p, co
   if (rows == 0) return sums;
   need(x, rows * std::size_t(spec.inputs), "input");
   need(y, rows * std::size_t(spec.outputs), "target");
-  const std::size_t groups = (rows + kEvalLocalSize - 1) / kEvalLocalSize;
+  const int local = eval_local_size(spec, std::size_t(gl::current().info().max_shared_memory));
+  const std::size_t groups = (rows + std::size_t(local) - 1) / std::size_t(local);
   gl::Buffer partial(gl::ElemType::uint32, 2 * groups * std::size_t(p.nets));  // doubles
   run_eval(spec, true, p, x, &y, nullptr, &partial, rows);
   std::vector<double> part(groups * std::size_t(p.nets));
@@ -98,8 +104,9 @@ std::vector<double> gl_squared_errors(const MlpSpec& spec, const GlParams& p, co
 
 std::shared_ptr<gl::Buffer> gl_forward(const Mlp& net, const gl::Buffer& x, std::size_t rows) {
   if (net.params.size() != net.spec.param_count()) throw std::invalid_argument("network has no parameters");
-  gl::Buffer params(gl::ElemType::float32, net.params.size());
-  params.upload(net.params.data(), 0, net.params.size());
+  std::vector<float> padded = pack_padded(net.spec, net.params.data());
+  gl::Buffer params(gl::ElemType::vec4, padded.size() / 4);
+  params.upload(padded.data(), 0, padded.size());
   auto out = std::make_shared<gl::Buffer>(gl::ElemType::float32, std::max<std::size_t>(1, rows * net.spec.outputs));
   gl_forward(net.spec, GlParams{&params, 0, 0, 1}, x, rows, *out);
   return out;

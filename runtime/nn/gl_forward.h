@@ -11,8 +11,8 @@
 
 namespace sn::nn {
 
-// `nets` networks of one architecture whose parameters lie in a float buffer: network n's flat
-// parameters start at `offset + n * stride` floats.
+// `nets` networks of one architecture whose parameters lie in a vec4 buffer in the padded layout
+// (nn/mlp_shader.h): network n's start at vec4 `offset + n * stride`.
 struct GlParams {
   const gl::Buffer* buffer = nullptr;
   std::size_t offset = 0, stride = 0;

@@ -1,5 +1,6 @@
 #include "nn/mlp_shader.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace sn::nn {
@@ -17,41 +18,120 @@ std::string float_literal(double v) {
   return s;
 }
 
-std::string layer_row(const MlpSpec& s, int l) {
-  return "X(" + num(l) + ", " + num(s.width(l)) + ", " + num(s.width(l + 1)) + ", " + num(s.weight_offset(l)) + ", " +
-         num(s.bias_offset(l)) + ", " + num(unit_offset(s, l)) + ", " + num(unit_offset(s, l + 1)) + ")";
+// Loops over a layer's input vec4s are unrolled up to this many; longer ones stay loops: the
+// unrolled code of a wide layer (every access a loop over the SIMD lanes on llvmpipe) takes
+// LLVM minutes to compile.
+constexpr int kUnrollInputChunks = 4;
+
+// Consecutive layers of equal shape share one copy of the layer code, a loop over them: the
+// shader's size (and LLVM's compile time, superlinear in it) no longer grows with depth. The
+// first and the last layer are runs of their own (backpropagation skips the first; the last has
+// the output activation).
+struct Run {
+  int first, count;
+};
+std::vector<Run> layer_runs(const MlpSpec& s) {
+  std::vector<Run> runs;
+  for (int l = 0; l < s.layers(); ++l) {
+    bool joins = !runs.empty() && l != 1 && l != s.layers() - 1 && s.width(l) == s.width(l + 1) &&
+                 s.width(runs.back().first) == s.width(l) && s.width(runs.back().first + 1) == s.width(l + 1);
+    if (joins)
+      ++runs.back().count;
+    else
+      runs.push_back({l, 1});
+  }
+  return runs;
+}
+
+std::string run_row(const MlpSpec& s, const Run& r) {
+  const int in = s.width(r.first), out = s.width(r.first + 1);
+  const std::string q = chunks4(in) <= kUnrollInputChunks ? num(chunks4(in)) : "(" + num(chunks4(in)) + " + u_zero)";
+  return "X(" + num(r.first) + ", " + num(r.count) + ", " + num(in) + ", " + num(out) + ", " + num(chunks4(in)) + ", " +
+         num(chunks4(out)) + ", " + num(padded_weight_chunk(s, r.first)) + ", " + num(unit_chunk(s, r.first)) + ", " + q +
+         ")";
 }
 
 }  // namespace
 
-std::size_t unit_offset(const MlpSpec& spec, int i) {
+std::size_t padded_weight_chunk(const MlpSpec& s, int layer) {
   std::size_t off = 0;
-  for (int k = 0; k < i; ++k) off += std::size_t(spec.width(k));
+  for (int l = 0; l < layer; ++l) off += std::size_t(s.width(l + 1)) * chunks4(s.width(l)) + chunks4(s.width(l + 1));
   return off;
 }
 
-std::size_t unit_count(const MlpSpec& spec) { return unit_offset(spec, spec.layers() + 1); }
+std::size_t padded_bias_chunk(const MlpSpec& s, int layer) {
+  return padded_weight_chunk(s, layer) + std::size_t(s.width(layer + 1)) * chunks4(s.width(layer));
+}
+
+std::size_t padded_chunks(const MlpSpec& s) { return padded_weight_chunk(s, s.layers()); }
+
+std::size_t unit_chunk(const MlpSpec& s, int i) {
+  std::size_t off = 0;
+  for (int k = 0; k < i; ++k) off += std::size_t(chunks4(s.width(k)));
+  return off;
+}
+
+std::size_t unit_chunks(const MlpSpec& s) { return unit_chunk(s, s.layers() + 1); }
+
+void pack_padded(const MlpSpec& s, const float* flat, float* padded) {
+  std::fill(padded, padded + 4 * padded_chunks(s), 0.f);
+  for (int l = 0; l < s.layers(); ++l) {
+    const int in = s.width(l), out = s.width(l + 1), row = 4 * chunks4(in);
+    const float* w = flat + s.weight_offset(l);
+    float* pw = padded + 4 * padded_weight_chunk(s, l);
+    for (int j = 0; j < out; ++j)
+      for (int i = 0; i < in; ++i) pw[j * row + i] = w[j * in + i];
+    const float* b = flat + s.bias_offset(l);
+    float* pb = padded + 4 * padded_bias_chunk(s, l);
+    for (int j = 0; j < out; ++j) pb[j] = b[j];
+  }
+}
+
+std::vector<float> pack_padded(const MlpSpec& s, const float* flat) {
+  std::vector<float> p(4 * padded_chunks(s));
+  pack_padded(s, flat, p.data());
+  return p;
+}
+
+void unpack_padded(const MlpSpec& s, const float* padded, float* flat) {
+  for (int l = 0; l < s.layers(); ++l) {
+    const int in = s.width(l), out = s.width(l + 1), row = 4 * chunks4(in);
+    float* w = flat + s.weight_offset(l);
+    const float* pw = padded + 4 * padded_weight_chunk(s, l);
+    for (int j = 0; j < out; ++j)
+      for (int i = 0; i < in; ++i) w[j * in + i] = pw[j * row + i];
+    float* b = flat + s.bias_offset(l);
+    const float* pb = padded + 4 * padded_bias_chunk(s, l);
+    for (int j = 0; j < out; ++j) b[j] = pb[j];
+  }
+}
 
 gl::Defines mlp_defines(const MlpSpec& s) {
   gl::Defines d;
   d["MLP_IN"] = num(s.inputs);
   d["MLP_OUT"] = num(s.outputs);
+  d["MLP_IN4"] = num(chunks4(s.inputs));
+  d["MLP_OUT4"] = num(chunks4(s.outputs));
   d["MLP_LAYERS"] = num(s.layers());
   d["MLP_PARAMS"] = num(s.param_count());
-  d["MLP_UNITS"] = num(unit_count(s));
+  d["MLP_PQ"] = num(padded_chunks(s));
+  d["MLP_UQ"] = num(unit_chunks(s));
+  d["MLP_OUT_UQ"] = num(unit_chunk(s, s.layers()));
   d["MLP_MAX_WIDTH"] = num(s.max_width());
   d["MLP_ACT"] = num(int(s.activation));
   d["MLP_OUT_ACT"] = num(int(s.output_activation));
   d["MLP_SLOPE"] = float_literal(s.slope);
   d["MLP_COLOR"] = num(int(s.color));
-  std::string fwd, rev, hidden_rev;
-  for (int l = 0; l < s.layers(); ++l) fwd += (l ? " " : "") + layer_row(s, l);
-  for (int l = s.layers() - 1; l >= 0; --l) rev += (rev.empty() ? "" : " ") + layer_row(s, l);
-  for (int l = s.layers() - 1; l >= 1; --l) hidden_rev += (hidden_rev.empty() ? "" : " ") + layer_row(s, l);
-  d["MLP_LAYER_TABLE(X)"] = fwd;
-  d["MLP_LAYER_TABLE_REVERSED(X)"] = rev;
-  // Layers whose inputs are hidden units (all but the first): the ones backpropagation passes through.
-  d["MLP_INNER_LAYER_TABLE_REVERSED(X)"] = hidden_rev;
+  const std::vector<Run> runs = layer_runs(s);
+  std::string fwd, rev, inner_rev;
+  for (std::size_t i = 0; i < runs.size(); ++i) fwd += (i ? " " : "") + run_row(s, runs[i]);
+  for (std::size_t i = runs.size(); i-- > 0;) {
+    rev += (rev.empty() ? "" : " ") + run_row(s, runs[i]);
+    if (runs[i].first > 0) inner_rev += (inner_rev.empty() ? "" : " ") + run_row(s, runs[i]);
+  }
+  d["MLP_RUN_TABLE(X)"] = fwd;
+  d["MLP_RUN_TABLE_REVERSED(X)"] = rev;
+  d["MLP_INNER_RUN_TABLE_REVERSED(X)"] = inner_rev;
   return d;
 }
 
@@ -70,19 +150,20 @@ std::string TrainLayout::describe() const {
 }
 
 TrainLayout plan_train_layout(const MlpSpec& spec, int batch, std::size_t max_shared) {
-  const std::size_t P = spec.param_count(), U = unit_count(spec), B = std::size_t(batch);
-  const std::size_t params = 4 * P, moments = 8 * P;
-  const std::size_t units = 4 * B * ((U - std::size_t(spec.outputs)) + (U - std::size_t(spec.inputs)));
+  const std::size_t PQ = padded_chunks(spec), B = std::size_t(batch);
+  // Per sample: the units of every block, the deltas of every block but the inputs.
+  const std::size_t UQ = unit_chunks(spec);
+  const std::size_t units_q = B * (UQ + (UQ - std::size_t(chunks4(spec.inputs))));
   const std::size_t fixed = 16 + 8 * B + 64;  // flags, the loss reduction, a margin for the compiler's padding
   TrainLayout t;
   auto total = [&] {
-    return fixed + (t.params_shared ? params : 0) + (t.moments_shared ? moments : 0) + (t.units_shared ? units : 0);
+    return fixed + 16 * ((t.params_shared ? PQ : 0) + (t.moments_shared ? 2 * PQ : 0) + (t.units_shared ? units_q : 0));
   };
   if (total() > max_shared) t.moments_shared = false;
   if (total() > max_shared) t.units_shared = false;
   if (total() > max_shared) t.params_shared = false;
   t.shared_bytes = total();
-  t.scratch_floats = (t.params_shared ? 0 : P) + (t.moments_shared ? 0 : 2 * P) + (t.units_shared ? 0 : units / 4);
+  t.scratch_vec4s = (t.params_shared ? 0 : PQ) + (t.moments_shared ? 0 : 2 * PQ) + (t.units_shared ? 0 : units_q);
   return t;
 }
 
@@ -92,16 +173,20 @@ gl::Defines train_defines(const MlpSpec& spec, int batch, const TrainLayout& t) 
   d["MLP_PARAMS_SHARED"] = t.params_shared ? "1" : "0";
   d["MLP_MOMENTS_SHARED"] = t.moments_shared ? "1" : "0";
   d["MLP_UNITS_SHARED"] = t.units_shared ? "1" : "0";
-  d["MLP_SCRATCH"] = num(t.scratch_floats);
+  d["MLP_SCRATCH"] = num(t.scratch_vec4s);
   return d;
 }
 
-gl::Defines eval_defines(const MlpSpec& spec, bool loss_mode, std::size_t max_shared) {
+int eval_local_size(const MlpSpec& spec, std::size_t max_shared) {
+  int n = 8;
+  while (n > 1 && std::size_t(n) * (16 * unit_chunks(spec) + 8) + 64 > max_shared) n /= 2;
+  return n;
+}
+
+gl::Defines eval_defines(const MlpSpec& spec, bool loss_mode, int local_size) {
   gl::Defines d = mlp_defines(spec);
-  const std::size_t need = 4 * spec.param_count() + 8 * kEvalLocalSize + 64;
-  d["MLP_EVAL_SHARED_WEIGHTS"] = need <= max_shared ? "1" : "0";
   d["MLP_EVAL_LOSS"] = loss_mode ? "1" : "0";
-  d["MLP_EVAL_LOCAL_SIZE"] = num(kEvalLocalSize);
+  d["MLP_EVAL_LOCAL_SIZE"] = num(std::size_t(local_size));
   return d;
 }
 

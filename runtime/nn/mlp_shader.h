@@ -1,46 +1,73 @@
 // How one network architecture becomes GLSL: the #defines that specialise the shared mlp shaders
 // (shaders/include/mlp/*.glsl, mlp_train.comp, mlp_eval.comp, mlp_shade.frag) to its widths,
-// depth, activations and colour space. Layers are listed as an X-macro with literal widths and
-// offsets, so every per-layer loop has a constant trip count the GLSL compiler can unroll, and
-// the program cache (keyed by the preprocessed source) holds one program per architecture.
+// depth, activations and colour space, and the parameter layout those shaders read.
+//
+// The shaders read parameters as vec4s: on llvmpipe every storage-buffer or shared-memory access
+// costs a loop over the SIMD lanes whatever its width, so four floats per access is four times
+// cheaper. Their layout ("padded") is the flat layout of nn/mlp_spec.h with every weight row and
+// every layer's bias vector padded with zeros to whole vec4s; pack_padded / unpack_padded convert.
+// Units (one sample's activations of every layer, inputs first) are padded the same way.
+//
+// Layers are listed as an X-macro of runs (consecutive layers of one shape share their code, a
+// loop over the run), with literal widths and offsets: the loops inside a layer have constant
+// trip counts the compiler can unroll, the shader's size does not grow with depth, and the
+// program cache (keyed by the preprocessed source) holds one program per architecture.
 #pragma once
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include "gl/shader_source.h"
 #include "nn/mlp_spec.h"
 
 namespace sn::nn {
 
-// Units are every layer's activations of one sample laid end to end: inputs first, outputs last.
-// unit_offset(i) is where layer width i (0 = inputs .. layers() = outputs) starts.
-std::size_t unit_offset(const MlpSpec& spec, int i);
-std::size_t unit_count(const MlpSpec& spec);
+inline int chunks4(int n) { return (n + 3) / 4; }
+
+// vec4 offsets in the padded parameter layout.
+std::size_t padded_weight_chunk(const MlpSpec& spec, int layer);  // rows of chunks4(in) vec4s
+std::size_t padded_bias_chunk(const MlpSpec& spec, int layer);    // chunks4(out) vec4s
+std::size_t padded_chunks(const MlpSpec& spec);                   // vec4s of one network
+// Where width block i (0 = inputs .. layers() = outputs) starts among a sample's unit vec4s.
+std::size_t unit_chunk(const MlpSpec& spec, int i);
+std::size_t unit_chunks(const MlpSpec& spec);
+
+// flat (spec.param_count() floats) -> padded (4 * padded_chunks() floats, zeros in the pads).
+std::vector<float> pack_padded(const MlpSpec& spec, const float* flat);
+void pack_padded(const MlpSpec& spec, const float* flat, float* padded);
+// padded -> flat (`flat` holds spec.param_count() floats).
+void unpack_padded(const MlpSpec& spec, const float* padded, float* flat);
 
 // Architecture defines shared by every mlp shader:
-//   MLP_IN, MLP_OUT, MLP_LAYERS, MLP_PARAMS, MLP_UNITS, MLP_MAX_WIDTH, MLP_ACT, MLP_OUT_ACT,
-//   MLP_SLOPE, MLP_COLOR, and MLP_LAYER_TABLE(X) / MLP_LAYER_TABLE_REVERSED(X) expanding to
-//   X(layer, in, out, weight_offset, bias_offset, unit_in, unit_out) per layer, and
-//   MLP_INNER_LAYER_TABLE_REVERSED(X) (layers 1.., last first: those backpropagation passes).
+//   MLP_IN, MLP_OUT, MLP_LAYERS, MLP_PARAMS (flat floats), MLP_PQ (padded vec4s), MLP_UQ (unit
+//   vec4s), MLP_IN4, MLP_OUT4, MLP_OUT_UQ (first vec4 of the outputs), MLP_MAX_WIDTH, MLP_ACT,
+//   MLP_OUT_ACT, MLP_SLOPE, MLP_COLOR, and MLP_RUN_TABLE(X) / MLP_RUN_TABLE_REVERSED(X)
+//   expanding to X(first_layer, count, in, out, in4, out4, weight_chunk, unit_in, q) per run of
+//   equal layers: layer first_layer + k has its weights at vec4 weight_chunk + k*(out*in4 + out4),
+//   its biases out*in4 vec4s later, its input units at vec4 unit_in + k*in4 and its outputs in4
+//   vec4s after them; q bounds loops over the input vec4s: in4, or `(in4 + u_zero)` to keep a wide
+//   layer's loop rolled (shaders declare `uniform int u_zero`). MLP_INNER_RUN_TABLE_REVERSED(X)
+//   lists the runs backpropagation passes through (all but the first layer's), last first.
 gl::Defines mlp_defines(const MlpSpec& spec);
 
 // Where the fused training kernel keeps each array: shared memory when it fits, else a per-network
 // scratch region of a storage buffer. Moments are the first to move out (touched once per step),
-// then the per-sample activations and deltas, then the weights (read twice per sample).
+// then the minibatch's activations and deltas, then the parameters.
 struct TrainLayout {
   bool params_shared = true, moments_shared = true, units_shared = true;
   std::size_t shared_bytes = 0;   // what the kernel declares
-  std::size_t scratch_floats = 0;  // per network, for the arrays not in shared memory
-  std::string describe() const;   // e.g. "params+moments+units in shared memory (31.7 KiB)"
+  std::size_t scratch_vec4s = 0;  // per network, for the arrays not in shared memory
+  std::string describe() const;   // e.g. "params+moments+units in shared memory (31.3 KiB)"
 };
 TrainLayout plan_train_layout(const MlpSpec& spec, int batch, std::size_t max_shared_bytes);
 
 // mlp_defines plus the kernel's batch and layout (the cache key of its program).
 gl::Defines train_defines(const MlpSpec& spec, int batch, const TrainLayout& layout);
 
-// mlp_defines plus whether mlp_eval.comp stages the weights in shared memory, and its mode:
-// "loss" (sums of squared errors per workgroup) or "output" (the outputs per row).
-gl::Defines eval_defines(const MlpSpec& spec, bool loss_mode, std::size_t max_shared_bytes);
-constexpr int kEvalLocalSize = 64;
+// mlp_defines plus mlp_eval.comp's mode: "loss" (sums of squared errors per workgroup) or
+// "output" (the outputs per row).
+// Rows per workgroup: 8 (one SIMD vector of llvmpipe) unless their units do not fit in shared memory.
+int eval_local_size(const MlpSpec& spec, std::size_t max_shared_bytes);
+gl::Defines eval_defines(const MlpSpec& spec, bool loss_mode, int local_size);
 
 }  // namespace sn::nn

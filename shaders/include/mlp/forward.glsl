@@ -1,23 +1,31 @@
-// The forward pass of one sample, layer by layer from MLP_LAYER_TABLE (literal widths, so every
-// loop has a constant trip count the compiler can unroll). The including shader declares
-// `float u[MLP_UNITS]` (inputs in u[0..MLP_IN), filled by it; outputs end up in
-// u[MLP_OUT_UNIT..]) and defines MLP_W(p), parameter p of the flat layout (nn/mlp_spec.h). It
-// may define MLP_ON_UNIT(k, a) to see each unit as it is computed.
+// The forward pass of one sample on the padded vec4 layout (runtime/nn/mlp_shader.h), run by run
+// from MLP_RUN_TABLE. The including shader defines
+//   MLP_P4(k)              parameter vec4 k of the network,
+//   MLP_UNIT(l, u)         lvalue: unit vec4 u of this sample, layer l being computed (units of
+//                          every layer laid end to end; inputs at 0..MLP_IN4 filled by the
+//                          shader, outputs end at MLP_OUT_UQ..MLP_UQ with 0 in the padding),
+//   MLP_ROLLED(n)          the bound of a loop that should stay a loop: `((n) + u_zero)` (code
+//                          size, compile time), or `(n)` to let the compiler unroll it.
+// Rows past the layer's width (the padding of its last output vec4) repeat its last row and are
+// masked to 0, so every row loop runs over whole vec4s.
 #include "mlp/activation.glsl"
 
-#ifndef MLP_ON_UNIT
-#define MLP_ON_UNIT(k, a)
-#endif
-
-#define MLP_OUT_UNIT (MLP_UNITS - MLP_OUT)
-
-#define MLP_FORWARD_LAYER(L, IN, OUT, WOFF, BOFF, UIN, UOUT)          \
-  for (int j = 0; j < OUT; ++j) {                                     \
-    float z = MLP_W(BOFF + j);                                        \
-    for (int i = 0; i < IN; ++i) z += MLP_W(WOFF + j * IN + i) * u[UIN + i]; \
-    float a = mlp_activate(MLP_LAYER_ACT(L), z);                      \
-    u[UOUT + j] = a;                                                  \
-    MLP_ON_UNIT(UOUT + j, a)                                          \
+#define MLP_FORWARD_RUN(L0, COUNT, IN, OUT, IN4, OUT4, WQ0, UI0, QN)                             \
+  for (int k_ = 0; k_ < MLP_ROLLED(COUNT); ++k_) {                                               \
+    const int l_ = L0 + k_, wq_ = WQ0 + k_ * (OUT * IN4 + OUT4), bq_ = wq_ + OUT * IN4;          \
+    const int ui_ = UI0 + k_ * IN4, uo_ = ui_ + IN4;                                             \
+    vec4 ain[IN4];                                                                               \
+    for (int q = 0; q < QN; ++q) ain[q] = MLP_UNIT(l_, ui_ + q);                                 \
+    for (int jq = 0; jq < MLP_ROLLED(OUT4); ++jq) {                                              \
+      vec4 z = MLP_P4(bq_ + jq);                                                                 \
+      for (int c = 0; c < 4; ++c) {                                                              \
+        int j = min(4 * jq + c, OUT - 1);                                                        \
+        float s = 0.0;                                                                           \
+        for (int q = 0; q < QN; ++q) s += dot(MLP_P4(wq_ + j * IN4 + q), ain[q]);                \
+        z[c] += s;                                                                               \
+      }                                                                                          \
+      MLP_UNIT(l_, uo_ + jq) = mix(vec4(0.0), mlp_activate(MLP_LAYER_ACT(L0), z), mlp_live(jq, OUT)); \
+    }                                                                                            \
   }
 
-#define MLP_FORWARD() MLP_LAYER_TABLE(MLP_FORWARD_LAYER)
+#define MLP_FORWARD() MLP_RUN_TABLE(MLP_FORWARD_RUN)

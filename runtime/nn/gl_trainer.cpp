@@ -1,0 +1,357 @@
+#include "nn/gl_trainer.h"
+
+#include <epoxy/gl.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <memory>
+#include <stdexcept>
+
+#include "gl/buffer.h"
+#include "gl/context.h"
+#include "gl/program.h"
+#include "nn/gl_forward.h"
+#include "nn/mlp_shader.h"
+#include "nn/shuffle.h"
+
+namespace sn::nn {
+
+namespace {
+
+// Mirrors NetControl in shaders/mlp_train.comp (std430).
+struct GlControl {
+  int32_t limit = 0, done = 0, status = 0, remaining = 0;
+  uint32_t first_row = 0;
+  uint32_t t0 = 0;
+  double loss_sum = 0;
+};
+static_assert(sizeof(GlControl) == 32, "GlControl must match the shader's std430 layout");
+constexpr std::size_t kControlWords = sizeof(GlControl) / 4;
+
+enum Status { kOk = 0, kStopped = 1, kLate = 2, kCut = 3 };
+
+// A probe run's sentinel bound: far above any loop budget, so it counts what is left.
+constexpr int kProbeSentinel = 1 << 22;
+
+struct NetRun {
+  int index = 0;         // into the job's nets
+  bool active = true;    // false once diverged
+  long long step = 0;    // steps done in the current epoch
+  long long t = 0;       // Adam steps applied in this run
+  double loss_sum = 0;   // this epoch's sum of minibatch squared errors
+  long long stop_at = -1;  // >= 0: the step (0-based) whose update is not finite; stop before it
+};
+
+struct Group {
+  MlpSpec spec;
+  std::vector<NetRun> runs;
+  std::shared_ptr<gl::Program> program;
+  TrainLayout layout;
+  std::unique_ptr<gl::Buffer> state, scratch, control;
+  int sentinel = 0;  // loop iterations the kernel needs after its sentinel loop
+  long long chunk = 0;
+  GlGroupReport report;
+};
+
+struct DataBuffers {
+  std::unique_ptr<gl::Buffer> train_x, train_y, val_x, val_y, order, bias;
+  uint32_t bias_len = 0;
+};
+
+std::unique_ptr<gl::Buffer> upload_floats(const std::vector<float>& v) {
+  auto b = std::make_unique<gl::Buffer>(gl::ElemType::float32, std::max<std::size_t>(1, v.size()));
+  if (!v.empty()) b->upload(v.data(), 0, v.size());
+  return b;
+}
+
+class Job {
+ public:
+  Job(const std::vector<const Mlp*>& nets, const Dataset& data, const TrainConfig& cfg, const GlTrainOptions& opt)
+      : nets_(nets), data_(data), cfg_(cfg), opt_(opt) {
+    rows_ = uint32_t(data.train_count());
+    steps_ = (long long)(rows_ / uint32_t(cfg.batch));
+    results_.resize(nets.size());
+  }
+
+  std::vector<NetResult> run(const Progress& progress, std::vector<GlGroupReport>& report) {
+    upload_data();
+    make_groups();
+    for (int e = 0; e < cfg_.epochs; ++e) {
+      upload_order(uint32_t(e));
+      if (e == 0)
+        for (Group& g : groups_) plan_chunks(g);
+      for (Group& g : groups_) run_epoch(g, e);
+      if (!finish_epoch(e, progress)) break;
+    }
+    for (Group& g : groups_) {
+      for (NetRun& r : g.runs) {
+        NetResult& res = results_[std::size_t(r.index)];
+        res.final_params = download_params(g, std::size_t(&r - g.runs.data()));
+        res.steps = r.t;
+      }
+      g.report.steps_per_dispatch = g.chunk;
+      report.push_back(g.report);
+    }
+    return std::move(results_);
+  }
+
+ private:
+  void upload_data() {
+    for (const Mlp* n : nets_) {
+      if (!n) throw std::invalid_argument("gl trainer: null network");
+      if (n->spec.inputs != data_.inputs || n->spec.outputs != data_.outputs)
+        throw std::invalid_argument("gl trainer: " + n->spec.describe() + " does not match the dataset's " +
+                                    std::to_string(data_.inputs) + " inputs and " + std::to_string(data_.outputs) +
+                                    " outputs");
+    }
+    if (cfg_.batch < 1 || steps_ < 1)
+      throw std::invalid_argument("gl trainer: batch " + std::to_string(cfg_.batch) + " does not fit " +
+                                  std::to_string(rows_) + " training rows");
+    buf_.train_x = upload_floats(data_.train_x);
+    buf_.train_y = upload_floats(data_.train_y);
+    buf_.val_x = upload_floats(data_.val_x);
+    buf_.val_y = upload_floats(data_.val_y);
+    buf_.order = std::make_unique<gl::Buffer>(gl::ElemType::uint32, std::size_t(steps_ * cfg_.batch));
+    upload_bias_corrections();
+  }
+
+  // (1 - beta1^t, 1 - beta2^t) in float for t = 1.. until both round to 1 (they only grow
+  // towards 1), at most the run's steps: from a table, every chunking of the run sees the same.
+  void upload_bias_corrections() {
+    const long long total = steps_ * cfg_.epochs;
+    std::vector<float> bc;
+    for (long long t = 1; t <= total; ++t) {
+      float c1 = float(1.0 - std::pow(cfg_.beta1, double(t))), c2 = float(1.0 - std::pow(cfg_.beta2, double(t)));
+      if (c1 == 1.0f && c2 == 1.0f) break;
+      bc.push_back(c1);
+      bc.push_back(c2);
+    }
+    buf_.bias_len = uint32_t(bc.size() / 2);
+    buf_.bias = upload_floats(bc);
+  }
+
+  // Nets of the same architecture share a program and a dispatch.
+  void make_groups() {
+    const std::size_t max_shared =
+        opt_.max_shared_bytes ? opt_.max_shared_bytes : std::size_t(gl::current().info().max_shared_memory);
+    for (std::size_t i = 0; i < nets_.size(); ++i) {
+      Group* g = nullptr;
+      for (Group& x : groups_)
+        if (x.spec.same_shape(nets_[i]->spec)) g = &x;
+      if (!g) {
+        groups_.emplace_back();
+        g = &groups_.back();
+        g->spec = nets_[i]->spec;
+      }
+      NetRun r;
+      r.index = int(i);
+      g->runs.push_back(r);
+    }
+    for (Group& g : groups_) {
+      const std::size_t P = g.spec.param_count(), PQ = padded_chunks(g.spec), n = g.runs.size();
+      g.layout = plan_train_layout(g.spec, cfg_.batch, max_shared);
+      gl::ProgramDesc desc;
+      desc.compute = "mlp_train.comp";
+      desc.defines = train_defines(g.spec, cfg_.batch, g.layout);
+      g.program = gl::get_program(desc);
+      g.state = std::make_unique<gl::Buffer>(gl::ElemType::vec4, 3 * PQ * n);  // params, m = 0, v = 0
+      for (std::size_t k = 0; k < n; ++k) {
+        const Mlp& net = *nets_[std::size_t(g.runs[k].index)];
+        if (net.params.size() != P) throw std::invalid_argument("gl trainer: " + net.spec.describe() + " has no parameters");
+        auto padded = pack_padded(g.spec, net.params.data());
+        g.state->upload(padded.data(), 4 * 3 * PQ * k, padded.size());
+      }
+      g.scratch = std::make_unique<gl::Buffer>(gl::ElemType::vec4, std::max<std::size_t>(1, g.layout.scratch_vec4s * n));
+      g.control = std::make_unique<gl::Buffer>(gl::ElemType::uint32, kControlWords * n);
+      // After the sentinel: the commit loop over the parameters, the loss sum, a margin.
+      g.sentinel = int((PQ + std::size_t(cfg_.batch) - 1) / std::size_t(cfg_.batch)) + cfg_.batch + 8;
+      g.report.arch = g.spec.describe();
+      g.report.nets = int(n);
+      g.report.layout = g.layout.describe();
+      gl::Program& p = *g.program;
+      p.set_uniform("u_beta1", {cfg_.beta1});
+      p.set_uniform("u_beta2", {cfg_.beta2});
+      p.set_uniform("u_eps", {cfg_.eps});
+      p.set_uniform("u_bias_len", {double(buf_.bias_len)});
+    }
+  }
+
+  void upload_order(uint32_t epoch) {
+    EpochShuffle perm(cfg_.seed, epoch, rows_);
+    std::vector<uint32_t> order(std::size_t(steps_ * cfg_.batch));
+    for (std::size_t k = 0; k < order.size(); ++k) order[k] = perm(uint32_t(k));
+    buf_.order->upload(order.data(), 0, order.size());
+  }
+
+  void dispatch(Group& g, const std::vector<GlControl>& ctl, bool probe, std::vector<GlControl>& result) {
+    g.control->upload(ctl.data(), 0, ctl.size() * kControlWords);
+    const gl::Buffer* bind[7] = {buf_.train_x.get(), buf_.train_y.get(), buf_.order.get(), g.state.get(),
+                                 g.scratch.get(),    g.control.get(),    buf_.bias.get()};
+    for (unsigned i = 0; i < 7; ++i) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, i, bind[i]->id());
+    gl::Program& p = *g.program;
+    p.set_uniform("u_lr", {probe ? 0.0 : cfg_.lr});
+    p.set_uniform("u_probe", {probe ? 1.0 : 0.0});
+    p.set_uniform("u_sentinel", {double(probe ? kProbeSentinel : g.sentinel)});
+    gl::dispatch(p, unsigned(ctl.size()));
+    result.resize(ctl.size());
+    g.control->download(result.data(), 0, ctl.size() * kControlWords);
+  }
+
+  // Two probe dispatches of the first network (1 and 2 steps, learning rate 0, nothing
+  // committed) count the loop budget left after them; the difference is one step's cost.
+  void plan_chunks(Group& g) {
+    auto remaining_after = [&](int steps) {
+      std::vector<GlControl> ctl(g.runs.size()), out;
+      ctl[0].limit = steps;
+      dispatch(g, ctl, true, out);
+      return (long long)out[0].remaining;
+    };
+    const long long r1 = remaining_after(1), r2 = remaining_after(2);
+    const long long cost = r1 - r2;
+    g.report.loop_budget = r1;
+    g.report.loop_cost_per_step = r1 >= kProbeSentinel ? 0 : cost;
+    if (r1 >= kProbeSentinel) {
+      g.chunk = steps_;  // no limiter: one dispatch per epoch
+    } else {
+      const long long margin = 16 + r1 / 50;
+      if (r1 < g.sentinel + margin || cost <= 0)
+        throw std::runtime_error(g.spec.describe() + ": one training step needs more loop iterations than this GL " +
+                                 "driver runs per shader invocation (" + gl::current().info().renderer +
+                                 " stops at 65,535); train it with backend = \"cpu\"");
+      g.chunk = std::min(steps_, 1 + (r1 - g.sentinel - margin) / cost);
+    }
+    if (opt_.steps_per_dispatch > 0) g.chunk = std::min(steps_, opt_.steps_per_dispatch);
+  }
+
+  void diverge(NetRun& r, int epoch) {
+    r.active = false;
+    results_[std::size_t(r.index)].diverged = Divergence{epoch + 1, r.stop_at + 1};
+  }
+
+  void run_epoch(Group& g, int e) {
+    std::vector<GlControl> ctl(g.runs.size()), out;
+    for (;;) {
+      bool any = false;
+      for (std::size_t k = 0; k < g.runs.size(); ++k) {
+        NetRun& r = g.runs[k];
+        ctl[k] = GlControl{};
+        if (r.active && r.stop_at >= 0 && r.step == r.stop_at) diverge(r, e);
+        if (!r.active || r.step >= steps_) continue;
+        const long long end = r.stop_at >= 0 ? r.stop_at : steps_;
+        ctl[k].limit = int32_t(std::min(g.chunk, end - r.step));
+        ctl[k].first_row = uint32_t(r.step * cfg_.batch);
+        ctl[k].loss_sum = r.loss_sum;
+        ctl[k].t0 = uint32_t(r.t);
+        any = true;
+      }
+      if (!any) return;
+      dispatch(g, ctl, false, out);
+      ++g.report.dispatches;
+      bool cut = false, cut_at_one = false;
+      for (std::size_t k = 0; k < g.runs.size(); ++k) {
+        if (ctl[k].limit <= 0) continue;
+        NetRun& r = g.runs[k];
+        const GlControl& c = out[k];
+        switch (c.status) {
+          case kOk:
+            if (c.done != ctl[k].limit)
+              throw std::logic_error("gl trainer: the kernel finished " + std::to_string(c.done) + " of " +
+                                     std::to_string(ctl[k].limit) + " steps and gave no reason");
+            [[fallthrough]];
+          case kStopped:
+            r.step += c.done;
+            r.t += c.done;
+            r.loss_sum = c.loss_sum;
+            if (c.status == kStopped) {
+              r.stop_at = r.step;
+              diverge(r, e);
+            }
+            break;
+          case kLate:  // nothing committed: re-run up to the step before the bad one
+            r.stop_at = r.step + c.done - 1;
+            ++g.report.divergence_reruns;
+            break;
+          case kCut:
+            cut = true;
+            cut_at_one = cut_at_one || ctl[k].limit == 1;
+            break;
+          default:
+            throw std::logic_error("gl trainer: unknown kernel status " + std::to_string(c.status));
+        }
+      }
+      if (cut) {
+        ++g.report.cut_dispatches;
+        if (cut_at_one)
+          throw std::runtime_error(g.spec.describe() + ": one training step needs more loop iterations than this GL " +
+                                   "driver runs per shader invocation; train it with backend = \"cpu\"");
+        g.chunk = std::max(1LL, g.chunk / 2);
+      }
+    }
+  }
+
+  std::vector<float> download_params(const Group& g, std::size_t k) {
+    const std::size_t PQ = padded_chunks(g.spec);
+    std::vector<float> padded(4 * PQ), p(g.spec.param_count());
+    g.state->download(padded.data(), 4 * 3 * PQ * k, padded.size());
+    unpack_padded(g.spec, padded.data(), p.data());
+    return p;
+  }
+
+  // Validation of every net that finished epoch e; returns false when none is left to train.
+  bool finish_epoch(int e, const Progress& progress) {
+    bool any_active = false;
+    const std::size_t val_rows = data_.val_count();
+    for (Group& g : groups_) {
+      const std::size_t PQ = padded_chunks(g.spec);
+      std::vector<double> sums(g.runs.size(), 0.0);
+      if (val_rows)
+        sums = gl_squared_errors(g.spec, GlParams{g.state.get(), 0, 3 * PQ, int(g.runs.size())}, *buf_.val_x,
+                                 *buf_.val_y, val_rows);
+      for (std::size_t k = 0; k < g.runs.size(); ++k) {
+        NetRun& r = g.runs[k];
+        if (!r.active) continue;
+        any_active = true;
+        const double denom = double(steps_) * cfg_.batch * g.spec.outputs;
+        const double train = r.loss_sum / denom;
+        const double val = val_rows ? sums[k] / (double(val_rows) * g.spec.outputs) : 0.0;
+        std::vector<float> params = download_params(g, k);
+        results_[std::size_t(r.index)].end_epoch(train, val, params.data(), params.size());
+        r.step = 0;
+        r.loss_sum = 0;
+        if (progress) progress(ProgressEvent{r.index, e + 1, train, val});
+      }
+    }
+    return any_active;
+  }
+
+  const std::vector<const Mlp*>& nets_;
+  const Dataset& data_;
+  const TrainConfig& cfg_;
+  const GlTrainOptions& opt_;
+  uint32_t rows_ = 0;
+  long long steps_ = 0;
+  DataBuffers buf_;
+  std::vector<Group> groups_;
+  std::vector<NetResult> results_;
+};
+
+}  // namespace
+
+std::string GlTrainer::device() const {
+  const auto& i = gl::current().info();
+  return i.renderer + " (OpenGL " + i.version + ")";
+}
+
+std::vector<NetResult> GlTrainer::train(const std::vector<const Mlp*>& nets, const Dataset& data,
+                                        const TrainConfig& cfg, const Progress& progress) {
+  report_.clear();
+  if (nets.empty()) return {};
+  Job job(nets, data, cfg, options_);
+  return job.run(progress, report_);
+}
+
+std::unique_ptr<Backend> make_gl_backend() { return std::make_unique<GlTrainer>(); }
+
+}  // namespace sn::nn

@@ -1,0 +1,276 @@
+// The gl training backend (nn/gl_trainer.h, shaders/mlp_train.comp) against the double-precision
+// oracle and the cpu backend: one Adam step, whole curves, determinism, llvmpipe's loop limit,
+// divergence, grouping by architecture and the storage-buffer fallbacks.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "gl/context.h"
+#include "nn/cpu_trainer.h"
+#include "nn/gl_trainer.h"
+#include "nn/oracle.h"
+
+using namespace sn::nn;
+
+namespace {
+
+MlpSpec spec_of(std::vector<int> hidden, Activation act = Activation::tanh) {
+  MlpSpec s;
+  s.inputs = 6;
+  s.hidden = std::move(hidden);
+  s.outputs = 3;
+  s.activation = act;
+  return s;
+}
+
+// A Phong-like target of (normal, view): diffuse + a highlight, per colour channel.
+Dataset phong_like(std::size_t train, std::size_t val, uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::normal_distribution<float> g(0.f, 1.f);
+  auto unit = [&](float* v) {
+    float n = 0;
+    for (int i = 0; i < 3; ++i) v[i] = g(rng), n += v[i] * v[i];
+    for (int i = 0; i < 3; ++i) v[i] /= std::sqrt(n);
+  };
+  const float l[3] = {0.48f, 0.64f, 0.6f};
+  Dataset d;
+  d.inputs = 6;
+  d.outputs = 3;
+  auto fill = [&](std::vector<float>& x, std::vector<float>& y, std::size_t n) {
+    x.resize(n * 6);
+    y.resize(n * 3);
+    for (std::size_t r = 0; r < n; ++r) {
+      float* nv = &x[r * 6];
+      unit(nv);
+      unit(nv + 3);
+      float ndl = nv[0] * l[0] + nv[1] * l[1] + nv[2] * l[2];
+      float rv = 0;  // reflect(-l, n) . v
+      for (int i = 0; i < 3; ++i) rv += (2 * ndl * nv[i] - l[i]) * nv[3 + i];
+      float diff = std::max(ndl, 0.f), spec = std::pow(std::max(rv, 0.f), 8.f);
+      y[r * 3 + 0] = 0.1f + 0.7f * diff + 0.4f * spec;
+      y[r * 3 + 1] = 0.1f + 0.5f * diff + 0.4f * spec;
+      y[r * 3 + 2] = 0.05f + 0.3f * diff + 0.4f * spec;
+    }
+  };
+  fill(d.train_x, d.train_y, train);
+  fill(d.val_x, d.val_y, val);
+  d.input_names = {"normal", "view"};
+  return d;
+}
+
+double max_abs_diff(const std::vector<float>& a, const std::vector<float>& b) {
+  EXPECT_EQ(a.size(), b.size());
+  double m = 0;
+  for (std::size_t i = 0; i < a.size() && i < b.size(); ++i) m = std::max(m, std::abs(double(a[i]) - double(b[i])));
+  return m;
+}
+
+}  // namespace
+
+TEST(GlTrainer, OneAdamStepMatchesOracleWithin1e5) {
+  sn::gl::current();
+  for (Activation act : {Activation::tanh, Activation::sigmoid, Activation::relu, Activation::leaky_relu}) {
+    MlpSpec spec = spec_of({12, 12, 12}, act);
+    Mlp net(spec, Init::xavier, 7);
+    Dataset data = phong_like(8, 16, 1);  // 8 rows, batch 8: one step per epoch
+    TrainConfig cfg;
+    cfg.epochs = 1;
+    cfg.batch = 8;
+    cfg.lr = 1e-2;  // a step large enough to see in every parameter
+    GlTrainer gl;
+    auto r = gl.train({&net}, data, cfg, nullptr);
+    auto o = oracle::train(spec, net.params, data, cfg);
+    ASSERT_EQ(r.size(), 1u);
+    EXPECT_EQ(r[0].steps, 1);
+    EXPECT_LE(max_abs_diff(r[0].final_params, o.final_params), 1e-5) << activation_name(act);
+    EXPECT_GT(max_abs_diff(r[0].final_params, net.params), 5e-3) << "the step changed nothing";
+    EXPECT_NEAR(r[0].train_mse[0], o.train_mse[0], 1e-6 * o.train_mse[0]);
+    EXPECT_NEAR(r[0].val_mse[0], o.val_mse[0], 1e-5 * o.val_mse[0]);
+  }
+}
+
+// Two epochs of 64 steps: the same curve as the oracle and the cpu backend. Float rounding
+// differs between the three (fused multiply-adds, tanh approximations, summation order), and
+// Adam's normalised steps let it grow, so curves are compared to 1% relative per epoch.
+TEST(GlTrainer, TwoEpochCurvesMatchOracleAndCpu) {
+  sn::gl::current();
+  MlpSpec spec = spec_of({8, 8, 8, 8});
+  Mlp net(spec, Init::xavier, 3);
+  Dataset data = phong_like(512, 128, 2);
+  TrainConfig cfg;
+  cfg.epochs = 2;
+  cfg.lr = 5e-3;
+  cfg.seed = 11;
+  GlTrainer gl;
+  auto g = gl.train({&net}, data, cfg, nullptr)[0];
+  auto c = make_cpu_backend(1)->train({&net}, data, cfg, nullptr)[0];
+  auto o = oracle::train(spec, net.params, data, cfg);
+  ASSERT_EQ(g.train_mse.size(), 2u);
+  ASSERT_EQ(c.train_mse.size(), 2u);
+  EXPECT_EQ(g.steps, 2 * 64);
+  for (int e = 0; e < 2; ++e) {
+    EXPECT_NEAR(g.train_mse[e], o.train_mse[e], 0.01 * o.train_mse[e]) << "epoch " << e + 1;
+    EXPECT_NEAR(g.val_mse[e], o.val_mse[e], 0.01 * o.val_mse[e]) << "epoch " << e + 1;
+    EXPECT_NEAR(g.train_mse[e], c.train_mse[e], 0.01 * c.train_mse[e]) << "epoch " << e + 1;
+    EXPECT_NEAR(g.val_mse[e], c.val_mse[e], 0.01 * c.val_mse[e]) << "epoch " << e + 1;
+  }
+  // It learned: the second epoch's validation error is well below the untrained one.
+  std::vector<double> p0(net.params.begin(), net.params.end());
+  double untrained = oracle::mse(spec, p0, data.val_x.data(), data.val_y.data(), data.val_count());
+  EXPECT_LT(g.val_mse[1], 0.5 * untrained);
+  EXPECT_GE(g.best_epoch, 1);
+  EXPECT_EQ(g.best_params.size(), spec.param_count());
+}
+
+TEST(GlTrainer, SameSeedTwiceIsIdenticalAnotherSeedIsNot) {
+  sn::gl::current();
+  MlpSpec spec = spec_of({6, 6, 6, 6});
+  Mlp a(spec, Init::xavier, 1), b(spec, Init::xavier, 2);
+  Dataset data = phong_like(400, 50, 3);
+  TrainConfig cfg;
+  cfg.epochs = 2;
+  cfg.seed = 5;
+  GlTrainer gl;
+  auto r1 = gl.train({&a, &b}, data, cfg, nullptr);
+  auto r2 = gl.train({&a, &b}, data, cfg, nullptr);
+  for (int n = 0; n < 2; ++n) {
+    EXPECT_EQ(r1[n].final_params, r2[n].final_params);
+    EXPECT_EQ(r1[n].train_mse, r2[n].train_mse);
+    EXPECT_EQ(r1[n].val_mse, r2[n].val_mse);
+  }
+  cfg.seed = 6;
+  auto r3 = gl.train({&a, &b}, data, cfg, nullptr);
+  EXPECT_NE(r1[0].final_params, r3[0].final_params);
+}
+
+// llvmpipe ends every loop of an invocation after 65,535 iterations: a run far longer than one
+// dispatch can hold must still apply every step it was asked for.
+TEST(GlTrainer, LongRunSplitsIntoDispatchesAndTrainsAsFarAsAsked) {
+  sn::gl::current();
+  MlpSpec spec = spec_of(std::vector<int>(12, 12));
+  Mlp net(spec, Init::xavier, 9);
+  Dataset data = phong_like(4096, 64, 4);  // 512 steps per epoch
+  TrainConfig cfg;
+  cfg.epochs = 3;
+  GlTrainer gl;
+  auto r = gl.train({&net}, data, cfg, nullptr)[0];
+  EXPECT_EQ(r.steps, 3 * 512);
+  EXPECT_EQ(r.train_mse.size(), 3u);
+  ASSERT_EQ(gl.report().size(), 1u);
+  const GlGroupReport& rep = gl.report()[0];
+  if (sn::gl::current().info().software) {
+    EXPECT_GT(rep.loop_cost_per_step, 0);
+    EXPECT_LT(rep.steps_per_dispatch * rep.loop_cost_per_step, 65535);
+    EXPECT_GE(rep.dispatches, 3 * ((512 + rep.steps_per_dispatch - 1) / rep.steps_per_dispatch));
+  }
+  EXPECT_EQ(rep.cut_dispatches, 0);
+  // The same run in dispatches far too long for the limiter: each is cut short, committed
+  // nowhere, and re-run at half the size until it fits; the result is the same to the bit.
+  GlTrainer greedy(GlTrainOptions{1 << 20, 0});
+  auto g = greedy.train({&net}, data, cfg, nullptr)[0];
+  EXPECT_EQ(g.steps, 3 * 512);
+  if (sn::gl::current().info().software) EXPECT_GT(greedy.report()[0].cut_dispatches, 0);
+  EXPECT_EQ(g.final_params, r.final_params);
+  for (int e = 0; e < 3; ++e) EXPECT_NEAR(g.train_mse[e], r.train_mse[e], 1e-12 * r.train_mse[e]);
+}
+
+// Two nets in one dispatch under a learning rate far too large: the ReLU net's activations
+// overflow float within a few steps while its neighbour (its ReLUs dead from the start, so only
+// the output bias moves) stays finite. The diverged net stops at the same step as on the cpu
+// backend (both float; the double oracle would overflow later) with its last finite parameters;
+// the neighbour trains exactly as it does alone.
+TEST(GlTrainer, DivergedNetIsFlaggedAndItsNeighbourIsUndisturbed) {
+  sn::gl::current();
+  MlpSpec spec = spec_of({16, 16, 16, 16, 16, 16}, Activation::relu);
+  Mlp wild(spec, Init::he, 4), calm(spec, Init::he, 5);
+  for (int l = 0; l < spec.layers() - 1; ++l)
+    for (int j = 0; j < spec.width(l + 1); ++j) calm.biases(l)[j] = -100.f;  // every ReLU dead
+  Dataset data = phong_like(256, 32, 5);
+  TrainConfig cfg;
+  cfg.epochs = 1;
+  cfg.lr = 1e15;
+  GlTrainer gl;
+  auto r = gl.train({&wild, &calm}, data, cfg, nullptr);
+  auto c = make_cpu_backend(1)->train({&wild}, data, cfg, nullptr)[0];
+  ASSERT_TRUE(c.diverged.has_value());
+  ASSERT_TRUE(r[0].diverged.has_value());
+  EXPECT_EQ(r[0].diverged->epoch, c.diverged->epoch);
+  EXPECT_EQ(r[0].diverged->step, c.diverged->step);
+  EXPECT_GT(r[0].diverged->step, 1);  // it did train before it diverged
+  EXPECT_EQ(r[0].steps, c.diverged->step - 1);
+  ASSERT_EQ(r[0].final_params.size(), c.final_params.size());
+  for (std::size_t i = 0; i < c.final_params.size(); ++i) {
+    ASSERT_TRUE(std::isfinite(r[0].final_params[i]));
+    ASSERT_NEAR(r[0].final_params[i], c.final_params[i], 1e-5 * std::max(1.f, std::abs(c.final_params[i]))) << i;
+  }
+  EXPECT_TRUE(r[0].train_mse.empty());  // its epoch did not finish
+  EXPECT_FALSE(r[1].diverged.has_value());
+  EXPECT_EQ(r[1].steps, 32);
+  ASSERT_EQ(r[1].val_mse.size(), 1u);
+  EXPECT_TRUE(std::isfinite(r[1].val_mse[0]));
+  auto alone = gl.train({&calm}, data, cfg, nullptr)[0];
+  EXPECT_EQ(r[1].final_params, alone.final_params);
+  EXPECT_EQ(r[1].val_mse, alone.val_mse);
+}
+
+// A learning rate that is infinite in float makes the very first update non-finite while the
+// loss is fine: nothing is committed, the net stops before step 1 with its initial parameters.
+TEST(GlTrainer, NonFiniteUpdateLeavesTheLastFiniteParameters) {
+  sn::gl::current();
+  MlpSpec spec = spec_of({8, 8});
+  Mlp net(spec, Init::xavier, 1);
+  Dataset data = phong_like(64, 8, 6);
+  TrainConfig cfg;
+  cfg.epochs = 2;
+  cfg.lr = 1e39;
+  GlTrainer gl;
+  auto r = gl.train({&net}, data, cfg, nullptr)[0];
+  auto o = oracle::train(spec, net.params, data, cfg);
+  ASSERT_TRUE(o.diverged.has_value());
+  ASSERT_TRUE(r.diverged.has_value());
+  EXPECT_EQ(r.diverged->epoch, 1);
+  EXPECT_EQ(r.diverged->step, 1);
+  EXPECT_EQ(r.final_params, net.params);
+  EXPECT_EQ(r.steps, 0);
+  EXPECT_GE(gl.report()[0].divergence_reruns, 1);
+}
+
+TEST(GlTrainer, ArchitecturesTrainAsSeparateGroupsLikeAlone) {
+  sn::gl::current();
+  Mlp a(spec_of({6, 6}), Init::xavier, 1), b(spec_of({10, 10, 10}), Init::xavier, 2), c(spec_of({6, 6}), Init::xavier, 3);
+  Dataset data = phong_like(200, 40, 7);
+  TrainConfig cfg;
+  cfg.epochs = 2;
+  GlTrainer gl;
+  auto r = gl.train({&a, &b, &c}, data, cfg, nullptr);
+  ASSERT_EQ(gl.report().size(), 2u);
+  EXPECT_EQ(gl.report()[0].nets, 2);
+  EXPECT_EQ(gl.report()[1].nets, 1);
+  auto rb = gl.train({&b}, data, cfg, nullptr)[0];
+  auto rc = gl.train({&c}, data, cfg, nullptr)[0];
+  EXPECT_EQ(r[1].final_params, rb.final_params);
+  EXPECT_EQ(r[2].final_params, rc.final_params);
+  EXPECT_EQ(r[2].val_mse, rc.val_mse);
+}
+
+// The layouts for networks too large for shared memory keep arrays in a storage buffer: same
+// arithmetic, so the same parameters.
+TEST(GlTrainer, StorageBufferLayoutsTrainLikeSharedMemory) {
+  sn::gl::current();
+  MlpSpec spec = spec_of({10, 10, 10});
+  Mlp net(spec, Init::xavier, 8);
+  Dataset data = phong_like(160, 16, 8);
+  TrainConfig cfg;
+  cfg.epochs = 2;
+  GlTrainer shared;
+  auto s = shared.train({&net}, data, cfg, nullptr)[0];
+  EXPECT_EQ(shared.report()[0].layout.find("storage buffer"), std::string::npos) << shared.report()[0].layout;
+  for (std::size_t limit : {std::size_t(3000), std::size_t(1200), std::size_t(64)}) {
+    GlTrainer small(GlTrainOptions{0, limit});
+    auto r = small.train({&net}, data, cfg, nullptr)[0];
+    EXPECT_NE(small.report()[0].layout.find("storage buffer"), std::string::npos) << small.report()[0].layout;
+    EXPECT_LE(max_abs_diff(r.final_params, s.final_params), 1e-6) << small.report()[0].layout;
+    EXPECT_EQ(r.steps, s.steps);
+  }
+}
