@@ -24,7 +24,7 @@ shared vec4 sh_u[MLP_EVAL_LOCAL_SIZE * MLP_UQ];  // each row's units
 
 uint pbase, lane;
 #define MLP_P4(k) params[pbase + uint(k)]
-#define MLP_UNIT(l, u) sh_u[lane * uint(MLP_UQ) + uint(u)]
+#define MLP_UNIT(b, u0, k) sh_u[lane * uint(MLP_UQ) + uint((u0) + (k))]
 #define MLP_ROLLED(n) ((n) + u_zero)
 #include "mlp/forward.glsl"
 
@@ -44,7 +44,7 @@ void main() {
     vec4 x = vec4(0.0);
     for (int c = 0; c < 4; ++c)
       if (4 * q + c < MLP_IN) x[c] = xs[r * uint(MLP_IN) + uint(4 * q + c)];
-    MLP_UNIT(0, q) = x;
+    MLP_UNIT(0, 0, q) = x;
   }
   MLP_FORWARD()
 
@@ -56,7 +56,7 @@ void main() {
 #if MLP_EVAL_LOSS
   double se = 0.0lf;
   for (int o = 0; o < MLP_OUT; ++o) {
-    float e = MLP_UNIT(0, MLP_OUT_UQ + o / 4)[o % 4] - ys[r * uint(MLP_OUT) + uint(o)];
+    float e = MLP_UNIT(MLP_LAYERS, MLP_OUT_UQ, o / 4)[o % 4] - ys[r * uint(MLP_OUT) + uint(o)];
     se += double(e * e);
   }
   sh_sum[lane] = live ? se : 0.0lf;
@@ -69,6 +69,6 @@ void main() {
 #else
   if (live)
     for (int o = 0; o < MLP_OUT; ++o)
-      outs[(net * u_rows + row) * uint(MLP_OUT) + uint(o)] = MLP_UNIT(0, MLP_OUT_UQ + o / 4)[o % 4];
+      outs[(net * u_rows + row) * uint(MLP_OUT) + uint(o)] = MLP_UNIT(MLP_LAYERS, MLP_OUT_UQ, o / 4)[o % 4];
 #endif
 }

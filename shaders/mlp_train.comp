@@ -102,7 +102,7 @@ void adam_at(int k, vec4 g, bvec4 live) {
 }
 
 #define MLP_P4(k) P4(k)
-#define MLP_UNIT(l, u) A4(lane, u)
+#define MLP_UNIT(b, u0, k) A4(lane, (u0) + (k))
 #include "mlp/forward.glsl"
 
 // This sample's deltas of a layer's inputs from those of its outputs (not for the first layer):

@@ -33,6 +33,7 @@ int open_core(lua_State* L) {
   open_draw(L);
   open_live(L);
   open_mlp(L);
+  open_mlp_gl(L);
   open_dataset(L);
   open_train(L);
   open_lighting(L);

@@ -22,6 +22,7 @@ void open_draw(lua_State* L);
 void open_context(lua_State* L);
 void open_live(lua_State* L);
 void open_mlp(lua_State* L);
+void open_mlp_gl(lua_State* L);  // after open_mlp: net:forward, net:render, the "gl" backend
 void open_dataset(lua_State* L);
 void open_train(lua_State* L);
 void open_lighting(lua_State* L);  // sn.lighting.*, sn.color.*

@@ -1,9 +1,9 @@
 // The forward pass of one sample on the padded vec4 layout (runtime/nn/mlp_shader.h), run by run
 // from MLP_RUN_TABLE. The including shader defines
 //   MLP_P4(k)              parameter vec4 k of the network,
-//   MLP_UNIT(l, u)         lvalue: unit vec4 u of this sample, layer l being computed (units of
-//                          every layer laid end to end; inputs at 0..MLP_IN4 filled by the
-//                          shader, outputs end at MLP_OUT_UQ..MLP_UQ with 0 in the padding),
+//   MLP_UNIT(b, u0, k)     lvalue: vec4 k of this sample's width block b (0 = inputs .. MLP_LAYERS
+//                          = outputs), which starts at unit vec4 u0 when the blocks are laid end
+//                          to end (inputs filled by the shader; the outputs' padding ends 0),
 //   MLP_ROLLED(n)          the bound of a loop that should stay a loop: `((n) + u_zero)` (code
 //                          size, compile time), or `(n)` to let the compiler unroll it.
 // Rows past the layer's width (the padding of its last output vec4) repeat its last row and are
@@ -15,7 +15,7 @@
     const int l_ = L0 + k_, wq_ = WQ0 + k_ * (OUT * IN4 + OUT4), bq_ = wq_ + OUT * IN4;          \
     const int ui_ = UI0 + k_ * IN4, uo_ = ui_ + IN4;                                             \
     vec4 ain[IN4];                                                                               \
-    for (int q = 0; q < QN; ++q) ain[q] = MLP_UNIT(l_, ui_ + q);                                 \
+    for (int q = 0; q < QN; ++q) ain[q] = MLP_UNIT(l_, ui_, q);                                 \
     for (int jq = 0; jq < MLP_ROLLED(OUT4); ++jq) {                                              \
       vec4 z = MLP_P4(bq_ + jq);                                                                 \
       for (int c = 0; c < 4; ++c) {                                                              \
@@ -24,7 +24,7 @@
         for (int q = 0; q < QN; ++q) s += dot(MLP_P4(wq_ + j * IN4 + q), ain[q]);                \
         z[c] += s;                                                                               \
       }                                                                                          \
-      MLP_UNIT(l_, uo_ + jq) = mix(vec4(0.0), mlp_activate(MLP_LAYER_ACT(L0), z), mlp_live(jq, OUT)); \
+      MLP_UNIT(l_ + 1, uo_, jq) = mix(vec4(0.0), mlp_activate(MLP_LAYER_ACT(L0), z), mlp_live(jq, OUT)); \
     }                                                                                            \
   }
 

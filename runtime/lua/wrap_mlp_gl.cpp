@@ -1,0 +1,151 @@
+// The GPU side of the "Mlp" type: net:forward(samples) in a compute shader and net:render(gbuffer)
+// in a fragment shader, added to the methods open_mlp defined; and the "gl" training backend,
+// registered for sn.train.
+#include <cmath>
+
+#include "gl/buffer.h"
+#include "io/image.h"
+#include "lua/binding.h"
+#include "lua/module.h"
+#include "nn/dataset.h"
+#include "nn/gl_forward.h"
+#include "nn/mlp_render.h"
+#include "nn/trainer.h"
+#include "scene/gbuffer.h"
+
+namespace sn::lua {
+
+namespace {
+
+constexpr const char* kType = "Mlp";
+using nn::Mlp;
+
+// One sample (a table of numbers) or many (a table of such tables) -> rows x inputs floats.
+std::vector<float> rows_from_table(lua_State* L, int idx, int inputs, bool* nested) {
+  const int n = int(lua_objlen(L, idx));
+  if (n == 0) throw Error("net:forward: the table holds no samples");
+  lua_rawgeti(L, idx, 1);
+  *nested = lua_istable(L, -1);
+  lua_pop(L, 1);
+  std::vector<float> x;
+  auto read_row = [&](int t, const std::string& what) {
+    auto v = check_numbers(L, t, what.c_str(), inputs);
+    for (double d : v) {
+      if (!std::isfinite(d)) throw Error(what + ": values must be finite");
+      x.push_back(float(d));
+    }
+  };
+  if (!*nested) {
+    read_row(idx, "net:forward sample");
+  } else {
+    for (int r = 1; r <= n; ++r) {
+      lua_rawgeti(L, idx, r);
+      read_row(lua_gettop(L), "net:forward sample " + std::to_string(r));
+      lua_pop(L, 1);
+    }
+  }
+  return x;
+}
+
+void push_row(lua_State* L, const float* y, int n) {
+  lua_createtable(L, n, 0);
+  for (int i = 0; i < n; ++i) {
+    lua_pushnumber(L, y[i]);
+    lua_rawseti(L, -2, i + 1);
+  }
+}
+
+// net:forward(x) evaluates the network in a compute shader:
+//   x a float32 Buffer of rows x inputs numbers -> a float32 Buffer of rows x outputs;
+//   x a Dataset [, "val" (default) | "train"]   -> a float32 Buffer of that set's outputs;
+//   x a table of inputs numbers (one sample)    -> a table of outputs numbers;
+//   x a table of such tables                    -> a table of tables.
+int w_forward(lua_State* L) {
+  auto net = check_shared<Mlp>(L, 1, kType);
+  const int in = net->spec.inputs, out = net->spec.outputs;
+  if (test_type(L, 2, "Buffer")) {
+    gl::Buffer& x = check<gl::Buffer>(L, 2, "Buffer");
+    if (!gl::elem_info(x.type()).is_float) throw Error("net:forward: the buffer must hold floats, got " + std::string(gl::elem_info(x.type()).name));
+    if (x.components() % std::size_t(in))
+      throw Error("net:forward: the buffer's " + std::to_string(x.components()) + " numbers are not whole rows of " +
+                  std::to_string(in) + " inputs");
+    push(L, nn::gl_forward(*net, x, x.components() / std::size_t(in)), "Buffer");
+    return 1;
+  }
+  if (test_type(L, 2, "Dataset")) {
+    const nn::Dataset& d = check<nn::Dataset>(L, 2, "Dataset");
+    const bool train = lua_isnoneornil(L, 3)
+                           ? false
+                           : check_choice(check_string(L, 3, "net:forward set"), {"val", "train"}, "dataset set") == 1;
+    if (d.inputs != in)
+      throw Error("net:forward: the dataset has " + std::to_string(d.inputs) + " inputs, " + net->spec.describe() +
+                  " takes " + std::to_string(in));
+    const std::vector<float>& x = train ? d.train_x : d.val_x;
+    if (x.empty()) throw Error(std::string("net:forward: the dataset's ") + (train ? "train" : "val") + " set is empty");
+    gl::Buffer xb(gl::ElemType::float32, x.size());
+    xb.upload(x.data(), 0, x.size());
+    push(L, nn::gl_forward(*net, xb, x.size() / std::size_t(in)), "Buffer");
+    return 1;
+  }
+  if (lua_istable(L, 2)) {
+    bool nested = false;
+    auto x = rows_from_table(L, 2, in, &nested);
+    auto y = nn::gl_forward(*net, x);
+    if (!nested) {
+      push_row(L, y.data(), out);
+    } else {
+      const int rows = int(x.size() / std::size_t(in));
+      lua_createtable(L, rows, 0);
+      for (int r = 0; r < rows; ++r) {
+        push_row(L, y.data() + std::size_t(r) * std::size_t(out), out);
+        lua_rawseti(L, -2, r + 1);
+      }
+    }
+    return 1;
+  }
+  throw Error("net:forward: a Buffer, a Dataset or a table of samples expected, got " + type_name_at(L, 2));
+}
+
+// net:render(gbuffer [, { frames = 1 }]) -> Image (RGBA float): the network as the lighting model
+// of every covered pixel, reading the G-buffer attributes named by net:inputs(); alpha =
+// coverage. `frames` draws it that many times first (for timing; the image is the last).
+int w_render(lua_State* L) {
+  auto net = check_shared<Mlp>(L, 1, kType);
+  const scene::GBuffer& g = check<scene::GBuffer>(L, 2, "GBuffer");
+  int frames = 1;
+  if (!lua_isnoneornil(L, 3)) {
+    Options o(L, 3, "net:render", {"frames"});
+    long long f = o.integer("frames", 1);
+    if (f < 1 || f > 100000) throw Error("net:render option 'frames' must be 1..100000, got " + std::to_string(f));
+    frames = int(f);
+  }
+  gl::RenderTarget out(g.width, g.height, 1);
+  nn::draw_mlp(net, g, out, frames);
+  push(L, std::make_shared<io::Image>(out.read(0)), "Image");
+  return 1;
+}
+
+// sn.mlp_weight_uploads() -> parameter uploads by net:render so far (an unchanged network is not
+// uploaded again).
+int w_weight_uploads(lua_State* L) {
+  lua_pushinteger(L, lua_Integer(nn::mlp_weight_uploads()));
+  return 1;
+}
+
+}  // namespace
+
+void open_mlp_gl(lua_State* L) {
+  nn::register_backend("gl", nn::make_gl_backend);
+  luaL_getmetatable(L, kType);
+  if (!lua_istable(L, -1)) luaL_error(L, "internal: open_mlp_gl must run after open_mlp");
+  lua_getfield(L, -1, "__methods");
+  lua_pushcfunction(L, wrap<w_forward>);
+  lua_setfield(L, -2, "forward");
+  lua_pushcfunction(L, wrap<w_render>);
+  lua_setfield(L, -2, "render");
+  lua_pop(L, 2);
+  lua_pushcfunction(L, wrap<w_weight_uploads>);
+  lua_setfield(L, -2, "mlp_weight_uploads");
+}
+
+}  // namespace sn::lua

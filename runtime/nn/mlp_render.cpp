@@ -1,0 +1,146 @@
+#include "nn/mlp_render.h"
+
+#include <epoxy/gl.h>
+
+#include <algorithm>
+#include <iterator>
+#include <map>
+#include <stdexcept>
+#include <string>
+
+#include "gl/buffer.h"
+#include "gl/program.h"
+#include "nn/mlp_shader.h"
+
+namespace sn::nn {
+
+namespace {
+
+// A network's parameters on the GPU, tied to the object (weakly: a freed network's entry is
+// dropped, and a new network at the same address is not mistaken for it).
+struct Uploaded {
+  std::weak_ptr<const Mlp> owner;
+  uint64_t version = 0;
+  std::shared_ptr<gl::Buffer> params;
+};
+std::map<const Mlp*, Uploaded>& uploads() {
+  static std::map<const Mlp*, Uploaded> m;
+  return m;
+}
+std::size_t g_uploads = 0;
+bool g_ubo_allowed = true;
+
+const char* kSwizzle = "xyzw";
+
+// GLSL that fills h[0][0..in4) from the attachments: attribute a's components in order.
+std::string gather_inputs(const std::vector<std::string>& names) {
+  std::vector<std::string> comps;
+  std::string code;
+  for (std::size_t a = 0; a < names.size(); ++a) {
+    code += "vec4 g" + std::to_string(a) + " = texelFetch(u_attr[" + std::to_string(a) + "], p, 0); ";
+    const int w = scene::attribute_width(names[a]);
+    for (int c = 0; c < w; ++c) comps.push_back("g" + std::to_string(a) + "." + kSwizzle[c]);
+  }
+  while (comps.size() % 4) comps.push_back("0.0");
+  for (std::size_t q = 0; q < comps.size() / 4; ++q)
+    code += "h[0][" + std::to_string(q) + "] = vec4(" + comps[4 * q] + ", " + comps[4 * q + 1] + ", " +
+            comps[4 * q + 2] + ", " + comps[4 * q + 3] + "); ";
+  return code;
+}
+
+void check_net(const Mlp& net, const scene::GBuffer& g) {
+  const std::string what = net.spec.describe();
+  if (net.spec.outputs != 3)
+    throw std::invalid_argument(what + ": rendering needs a network with 3 outputs (a colour), this one has " +
+                                std::to_string(net.spec.outputs));
+  if (net.input_names.empty())
+    throw std::invalid_argument(what + ": the network does not name the G-buffer attributes it reads; train it on a "
+                                "scene dataset or give it input names first");
+  int width = 0;
+  for (const auto& a : net.input_names) {
+    width += scene::attribute_width(a);
+    bool held = false;
+    for (const auto& h : g.attributes) held = held || h == a;
+    if (!held) (void)g.attachment(a);  // throws listing what the G-buffer holds
+  }
+  if (width != net.spec.inputs)
+    throw std::invalid_argument(what + ": its input attributes give " + std::to_string(width) + " numbers, it takes " +
+                                std::to_string(net.spec.inputs));
+  if (int(net.input_names.size()) > gl::RenderTarget::kMaxAttachments)
+    throw std::invalid_argument(what + ": reads more attributes than a G-buffer holds");
+}
+
+bool fits_uniform_buffer(const MlpSpec& spec) {
+  GLint max = 0;
+  glGetIntegerv(GL_MAX_UNIFORM_BLOCK_SIZE, &max);
+  return g_ubo_allowed && padded_chunks(spec) * 16 <= std::size_t(max);
+}
+
+gl::Buffer& params_of(const std::shared_ptr<const Mlp>& net) {
+  auto& m = uploads();
+  for (auto it = m.begin(); it != m.end();) it = it->second.owner.expired() ? m.erase(it) : std::next(it);
+  Uploaded& u = m[net.get()];
+  if (u.owner.expired() || u.owner.lock() != net) u = Uploaded{net, 0, nullptr};
+  const std::size_t pq = padded_chunks(net->spec);
+  if (!u.params || u.params->count() != pq) u.params = std::make_shared<gl::Buffer>(gl::ElemType::vec4, pq), u.version = 0;
+  if (u.version != net->version) {
+    auto padded = pack_padded(net->spec, net->params.data());
+    u.params->upload(padded.data(), 0, padded.size());
+    u.version = net->version;
+    ++g_uploads;
+  }
+  return *u.params;
+}
+
+}  // namespace
+
+void draw_mlp(const std::shared_ptr<const Mlp>& net, const scene::GBuffer& g, gl::RenderTarget& out, int frames) {
+  if (!net) throw std::invalid_argument("draw_mlp: no network");
+  check_net(*net, g);
+  if (out.width() != g.width || out.height() != g.height)
+    throw std::invalid_argument("draw_mlp: target size differs from the G-buffer's");
+  const bool ubo = fits_uniform_buffer(net->spec);
+  gl::ProgramDesc desc;
+  desc.vertex = "fullscreen.vert";
+  desc.fragment = "mlp_shade.frag";
+  desc.defines = mlp_defines(net->spec);
+  desc.defines["MLP_ATTRS"] = std::to_string(net->input_names.size());
+  desc.defines["MLP_GATHER_INPUTS"] = gather_inputs(net->input_names);
+  desc.defines["MLP_WEIGHTS_UBO"] = ubo ? "1" : "0";
+  desc.defines["MLP_MAX_WIDTH4"] = std::to_string(chunks4(net->spec.max_width()));
+  auto prog = gl::get_program(desc);
+  std::vector<double> units;
+  for (std::size_t a = 0; a < net->input_names.size(); ++a) {
+    glBindTextureUnit(GLuint(a), g.target->color_texture(g.attachment(net->input_names[a])));
+    units.push_back(double(a));
+  }
+  prog->set_uniform("u_attr", units);
+  gl::Buffer& params = params_of(net);
+  glBindBufferBase(ubo ? GL_UNIFORM_BUFFER : GL_SHADER_STORAGE_BUFFER, 0, params.id());
+  out.bind();
+  glDisable(GL_DEPTH_TEST);
+  static GLuint vao = 0;  // core profile draws need a VAO, even one without buffers
+  if (!vao || !glIsVertexArray(vao)) glCreateVertexArrays(1, &vao);
+  glUseProgram(prog->id());
+  glBindVertexArray(vao);
+  for (int f = 0; f < std::max(1, frames); ++f) {
+    out.clear({0, 0, 0, 0});
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  }
+  glBindVertexArray(0);
+  glEnable(GL_DEPTH_TEST);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+io::Image render_mlp(const std::shared_ptr<const Mlp>& net, const scene::GBuffer& g) {
+  if (!net) throw std::invalid_argument("render_mlp: no network");
+  check_net(*net, g);
+  gl::RenderTarget out(g.width, g.height, 1);
+  draw_mlp(net, g, out);
+  return out.read(0);
+}
+
+std::size_t mlp_weight_uploads() { return g_uploads; }
+void set_mlp_weights_in_uniform_buffer(bool allowed) { g_ubo_allowed = allowed; }
+
+}  // namespace sn::nn

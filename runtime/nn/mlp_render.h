@@ -1,0 +1,31 @@
+// Fragment-shader inference: a network as the lighting model of every covered pixel of a
+// G-buffer (shaders/mlp_shade.frag over shaders/fullscreen.vert). The shader is specialised per
+// architecture and input attributes and cached; the parameters live in a GPU buffer per network
+// that is re-uploaded only when the network's version() changed, so a weight edit shows in the
+// next render with no recompile.
+#pragma once
+#include <cstddef>
+#include <memory>
+
+#include "gl/render_target.h"
+#include "io/image.h"
+#include "nn/mlp.h"
+#include "scene/gbuffer.h"
+
+namespace sn::nn {
+
+// Draws `net` over `g` into attachment 0 of `out` (same size as g): RGB from the network, alpha
+// = coverage, uncovered pixels left as cleared (0, 0, 0, 0). `frames` > 1 draws it that many
+// times (for timing). Throws before any GPU work when the network does not read a colour (3
+// outputs), does not name its inputs, or reads attributes the G-buffer lacks.
+void draw_mlp(const std::shared_ptr<const Mlp>& net, const scene::GBuffer& g, gl::RenderTarget& out, int frames = 1);
+// The same into a new image.
+io::Image render_mlp(const std::shared_ptr<const Mlp>& net, const scene::GBuffer& g);
+
+// Parameter uploads so far (tests: an unchanged network is not re-uploaded).
+std::size_t mlp_weight_uploads();
+// Whether draw_mlp reads the parameters from a uniform buffer (true where they fit) or a storage
+// buffer; tests and benchmarks can force the storage buffer.
+void set_mlp_weights_in_uniform_buffer(bool allowed);
+
+}  // namespace sn::nn

@@ -1,0 +1,113 @@
+-- net:render(gbuffer): the fragment-shader network equals a double-precision forward pass (written
+-- here in Lua from net:params()) at the G-buffer's covered pixels, in every colour space, with the
+-- output taken back to RGB (sn.color.decode, the CPU twin); a weight edit shows in the next render
+-- with one upload and no new program; bad networks are clear errors.
+local sn = require "shadenet"
+
+local function act(kind, slope, z)
+  if kind == "tanh" then return math.tanh(z)
+  elseif kind == "sigmoid" then return 1 / (1 + math.exp(-z))
+  elseif kind == "relu" then return z > 0 and z or 0
+  elseif kind == "leaky_relu" then return z > 0 and z or slope * z end
+  return z
+end
+
+-- The flat layout: per layer, weights [out][in] then biases [out].
+local function forward(net, x)
+  local s, p = net:spec(), net:params()
+  local widths = { s.inputs }
+  for _, w in ipairs(s.hidden) do widths[#widths + 1] = w end
+  widths[#widths + 1] = s.outputs
+  local a, off = x, 0
+  for l = 1, #widths - 1 do
+    local nin, nout = widths[l], widths[l + 1]
+    local kind = l == #widths - 1 and s.output_activation or s.activation
+    local b, out = off + nin * nout, {}
+    for j = 1, nout do
+      local z = p[b + j]
+      for i = 1, nin do z = z + p[off + (j - 1) * nin + i] * a[i] end
+      out[j] = act(kind, s.slope, z)
+    end
+    a, off = out, b + nout
+  end
+  return a
+end
+
+local scene = sn.scene { mesh = "meshes/test_blob.glb", size = { 64, 48 }, views = { count = 2, elevation = 15 } }
+local g = scene:gbuffer { view = 1, attributes = { "view", "normal" } }  -- attachment order differs from the net's
+local normals, views = g:read("normal"), g:read("view")
+local w, h = g:size()
+
+local function check(net, label)
+  local img = net:render(g)
+  local checked, worst = 0, 0
+  for y = 1, h do
+    for x = 1, w do
+      local n, c = normals:get(x, y), img:get(x, y)
+      if n[4] < 0.5 then
+        assert(c[1] == 0 and c[2] == 0 and c[3] == 0 and c[4] == 0, label .. ": background left transparent black")
+      else
+        assert(c[4] == 1, label .. ": alpha = coverage")
+        if (x + y) % 2 == 0 then
+          local v = views:get(x, y)
+          local out = forward(net, { n[1], n[2], n[3], v[1], v[2], v[3] })
+          local rgb = sn.color.decode(net:spec().color, out)
+          for k = 1, 3 do worst = math.max(worst, math.abs(c[k] - rgb[k])) end
+          checked = checked + 1
+        end
+      end
+    end
+  end
+  assert(checked > 150, label .. ": checked " .. checked)
+  -- float against double; hsv and cie pass through the colour conversion too
+  assert(worst < 2e-5, ("%s: worst |fragment - double twin| = %g"):format(label, worst))
+  return img, worst
+end
+
+for _, case in ipairs {
+  { activation = "tanh", color = "rgb", hidden = { 8, 8, 8, 8 } },
+  { activation = "leaky_relu", color = "hsv", hidden = { 12, 12 }, slope = 0.2 },
+  { activation = "sigmoid", color = "cie", hidden = { 13, 13, 6, 6 } },
+  { activation = "relu", color = "cie_xyz", hidden = { 20, 5 } },
+} do
+  local net = sn.mlp { inputs = 6, hidden = case.hidden, outputs = 3, activation = case.activation,
+                       slope = case.slope, color = case.color, seed = 7, input_names = { "normal", "view" } }
+  -- Outputs near the middle of each colour space's range, so the decoded colours are ordinary.
+  local L = #net.layers
+  local bias = case.color == "cie" and { 0.5, 0.5, 0.5 } or { 0.4, 0.5, 0.6 }
+  if case.color == "cie_xyz" then bias = { 0.3, 0.3, 0.3 } end
+  net.layers[L].bias = bias
+  local _, worst = check(net, tostring(net))
+  print(("%-45s worst error %.2g"):format(tostring(net), worst))
+end
+
+-- Weight edits: one upload per version, the same program, a different image that is still right.
+local net = sn.mlp { inputs = 6, hidden = { 8, 8 }, outputs = 3, seed = 3, input_names = { "normal", "view" } }
+local before = check(net, "before the edit")
+local programs, uploads = sn.program_cache_size(), sn.mlp_weight_uploads()
+check(net, "unchanged")
+assert(sn.mlp_weight_uploads() == uploads, "an unchanged network is not uploaded again")
+net.layers[1].weight[2][4] = 1.5
+net.layers[3].bias[1] = 0.8
+local after = check(net, "after the edit")
+assert(sn.mlp_weight_uploads() == uploads + 1, "the edit is uploaded once")
+assert(sn.program_cache_size() == programs, "a weight edit compiles nothing")
+assert(sn.image.mse(before, after) > 1e-3, "the edit shows in the image")
+
+-- Errors name the problem before any GPU work.
+local function fails(pattern, f)
+  local ok, err = pcall(f)
+  assert(not ok, "expected an error matching " .. pattern)
+  assert(tostring(err):find(pattern), "error was: " .. tostring(err))
+end
+fails("3 outputs %(a colour%), this one has 4", function()
+  sn.mlp { inputs = 6, hidden = { 4 }, outputs = 4, input_names = { "normal", "view" } }:render(g)
+end)
+fails("does not name the G%-buffer attributes", function() sn.mlp { inputs = 6, hidden = { 4 } }:render(g) end)
+fails("uv", function() sn.mlp { inputs = 2, hidden = { 4 }, input_names = { "uv" } }:render(g) end)
+fails("give 5 numbers, it takes 6", function()
+  sn.mlp { inputs = 6, hidden = { 4 }, input_names = { "normal", "uv" } }:render(scene:gbuffer { attributes = { "normal", "uv" } })
+end)
+fails("frames' must be 1..100000", function() net:render(g, { frames = 0 }) end)
+fails("unknown option 'frame'", function() net:render(g, { frame = 2 }) end)
+print("ok")
