@@ -100,4 +100,8 @@ local bd = sn.dataset { x = bx, inputs = 6, y = by, outputs = 3, split = 0.75 }
 local n1, n2 = bd:counts()
 assert(n1 == 48 and n2 == 16, "buffer dataset split")
 assert(table.concat(sn.backends(), ","):find("cpu"), "backends lists cpu")
+-- "auto" takes the cpu backend on a software renderer (llvmpipe), gl on a hardware GPU.
+local auto = sn.train { nets = make(), data = data, epochs = 1 }[1]
+local expect = (sn.gl_info().software or not table.concat(sn.backends(), ","):find("gl")) and "cpu" or "gl"
+assert(auto.backend == expect, "auto chose " .. auto.backend .. ", expected " .. expect)
 print("test_mlp_train ok")
