@@ -1,6 +1,7 @@
 #include "nn/trainer.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <mutex>
 #include <stdexcept>
@@ -10,7 +11,8 @@ namespace sn::nn {
 void NetResult::end_epoch(double train, double val, const float* params, std::size_t count) {
   train_mse.push_back(train);
   val_mse.push_back(val);
-  if (best_epoch == 0 || val < best_val_mse) {
+  // A NaN validation MSE never counts as the best (nor blocks a later finite one).
+  if (best_epoch == 0 || val < best_val_mse || (std::isnan(best_val_mse) && !std::isnan(val))) {
     best_val_mse = val;
     best_epoch = int(val_mse.size());
     best_params.assign(params, params + count);

@@ -100,6 +100,21 @@ TEST(Oracle, AdamStepFollowsTheFormula) {
   EXPECT_NEAR(p[0], expect, 1e-15);
 }
 
+TEST(NetResult, BestEpochIsTheFirstMinimumAndNeverNaN) {
+  NetResult r;
+  float p[2] = {1, 2};
+  r.end_epoch(0.5, std::nan(""), p, 2);
+  r.end_epoch(0.4, 0.3, p, 2);
+  p[0] = 7;
+  r.end_epoch(0.3, 0.2, p, 2);
+  r.end_epoch(0.2, 0.2, p + 1, 1);  // a tie: the earlier epoch stays
+  r.end_epoch(0.1, 0.25, p, 2);
+  EXPECT_EQ(r.best_epoch, 3);
+  EXPECT_EQ(r.best_val_mse, 0.2);
+  EXPECT_EQ(r.best_params, (std::vector<float>{7, 2}));
+  EXPECT_EQ(r.val_mse.size(), 5u);
+}
+
 TEST(Shuffle, IsAPermutationForEverySize) {
   for (uint32_t n : {1u, 2u, 3u, 5u, 8u, 63u, 64u, 65u, 1000u, 51319u}) {
     for (uint32_t epoch : {0u, 7u}) {
