@@ -235,7 +235,7 @@ Heatmap heatmap(const Image& diff, const HeatmapStyle& s) {
   // The bar spans the image's rows (less half a text line top and bottom, so its end labels fit).
   int bx = diff.width + gap, top = label_h + line_h / 2, bottom = H - 1 - line_h / 2;
   if (bottom <= top) bottom = top + 1;
-  for (int y = top; y <= bottom; ++y) {
+  for (int y = top; y <= bottom && y < H; ++y) {  // a bar taller than a tiny image is cut
     Color c = colormap(s.map, double(bottom - y) / double(bottom - top));
     for (int x = bx; x < bx + bar_w && x < W; ++x)
       for (int k = 0; k < 3; ++k) h.image.at(x, y, k) = c[k];
