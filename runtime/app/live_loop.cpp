@@ -215,7 +215,6 @@ void Loop::set_status() {
 void Loop::update_watch_set() {
   if (!watcher_) return;
   std::vector<std::string> files = {o_.script};
-  lua_rawgeti(L_, LUA_REGISTRYINDEX, live_ref_);
   if (call("_watched", 0, 1) && lua_istable(L_, -1)) {
     for (int i = 1; i <= int(lua_objlen(L_, -1)); ++i) {
       lua_rawgeti(L_, -1, i);
