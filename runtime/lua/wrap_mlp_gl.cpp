@@ -106,21 +106,25 @@ int w_forward(lua_State* L) {
   throw Error("net:forward: a Buffer, a Dataset or a table of samples expected, got " + type_name_at(L, 2));
 }
 
-// net:render(gbuffer [, { frames = 1 }]) -> Image (RGBA float): the network as the lighting model
-// of every covered pixel, reading the G-buffer attributes named by net:inputs(); alpha =
-// coverage. `frames` draws it that many times first (for timing; the image is the last).
+// net:render(gbuffer [, { frames = 1, weights = "auto" }]) -> Image (RGBA float): the network as
+// the lighting model of every covered pixel, reading the G-buffer attributes named by
+// net:inputs(); alpha = coverage. `frames` draws it that many times first (for timing; the image
+// is the last); `weights = "storage"` reads the parameters from a storage buffer even where a
+// uniform buffer would hold them (for comparison).
 int w_render(lua_State* L) {
   auto net = check_shared<Mlp>(L, 1, kType);
   const scene::GBuffer& g = check<scene::GBuffer>(L, 2, "GBuffer");
   int frames = 1;
+  nn::WeightBuffer weights = nn::WeightBuffer::automatic;
   if (!lua_isnoneornil(L, 3)) {
-    Options o(L, 3, "net:render", {"frames"});
+    Options o(L, 3, "net:render", {"frames", "weights"});
     long long f = o.integer("frames", 1);
     if (f < 1 || f > 100000) throw Error("net:render option 'frames' must be 1..100000, got " + std::to_string(f));
     frames = int(f);
+    if (o.choice("weights", {"auto", "storage"}, 0) == 1) weights = nn::WeightBuffer::storage;
   }
   gl::RenderTarget out(g.width, g.height, 1);
-  nn::draw_mlp(net, g, out, frames);
+  nn::draw_mlp(net, g, out, frames, weights);
   push(L, std::make_shared<io::Image>(out.read(0)), "Image");
   return 1;
 }

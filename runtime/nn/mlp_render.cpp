@@ -28,11 +28,11 @@ std::map<const Mlp*, Uploaded>& uploads() {
   return m;
 }
 std::size_t g_uploads = 0;
-bool g_ubo_allowed = true;
 
 const char* kSwizzle = "xyzw";
 
-// GLSL that fills h[0][0..in4) from the attachments: attribute a's components in order.
+// GLSL that fills the array u0[] of input vec4s from the attachments: attribute a's components
+// in order, zeros after the last input.
 std::string gather_inputs(const std::vector<std::string>& names) {
   std::vector<std::string> comps;
   std::string code;
@@ -42,10 +42,13 @@ std::string gather_inputs(const std::vector<std::string>& names) {
     for (int c = 0; c < w; ++c) comps.push_back("g" + std::to_string(a) + "." + kSwizzle[c]);
   }
   while (comps.size() % 4) comps.push_back("0.0");
-  for (std::size_t q = 0; q < comps.size() / 4; ++q)
-    code += "h[0][" + std::to_string(q) + "] = vec4(" + comps[4 * q] + ", " + comps[4 * q + 1] + ", " +
+  std::string all;
+  for (std::size_t q = 0; q < comps.size() / 4; ++q) {
+    code += "vec4 u0_" + std::to_string(q) + " = vec4(" + comps[4 * q] + ", " + comps[4 * q + 1] + ", " +
             comps[4 * q + 2] + ", " + comps[4 * q + 3] + "); ";
-  return code;
+    all += (q ? ", u0_" : "u0_") + std::to_string(q);
+  }
+  return code + "vec4 u0[" + std::to_string(comps.size() / 4) + "] = vec4[](" + all + "); ";
 }
 
 void check_net(const Mlp& net, const scene::GBuffer& g) {
@@ -73,7 +76,7 @@ void check_net(const Mlp& net, const scene::GBuffer& g) {
 bool fits_uniform_buffer(const MlpSpec& spec) {
   GLint max = 0;
   glGetIntegerv(GL_MAX_UNIFORM_BLOCK_SIZE, &max);
-  return g_ubo_allowed && padded_chunks(spec) * 16 <= std::size_t(max);
+  return padded_chunks(spec) * 16 <= std::size_t(max);
 }
 
 gl::Buffer& params_of(const std::shared_ptr<const Mlp>& net) {
@@ -94,12 +97,13 @@ gl::Buffer& params_of(const std::shared_ptr<const Mlp>& net) {
 
 }  // namespace
 
-void draw_mlp(const std::shared_ptr<const Mlp>& net, const scene::GBuffer& g, gl::RenderTarget& out, int frames) {
+void draw_mlp(const std::shared_ptr<const Mlp>& net, const scene::GBuffer& g, gl::RenderTarget& out, int frames,
+              WeightBuffer weights) {
   if (!net) throw std::invalid_argument("draw_mlp: no network");
   check_net(*net, g);
   if (out.width() != g.width || out.height() != g.height)
     throw std::invalid_argument("draw_mlp: target size differs from the G-buffer's");
-  const bool ubo = fits_uniform_buffer(net->spec);
+  const bool ubo = weights == WeightBuffer::automatic && fits_uniform_buffer(net->spec);
   gl::ProgramDesc desc;
   desc.vertex = "fullscreen.vert";
   desc.fragment = "mlp_shade.frag";
@@ -141,6 +145,5 @@ io::Image render_mlp(const std::shared_ptr<const Mlp>& net, const scene::GBuffer
 }
 
 std::size_t mlp_weight_uploads() { return g_uploads; }
-void set_mlp_weights_in_uniform_buffer(bool allowed) { g_ubo_allowed = allowed; }
 
 }  // namespace sn::nn

@@ -14,18 +14,21 @@
 
 namespace sn::nn {
 
+// Where the fragment shader reads the parameters: a uniform buffer where they fit (llvmpipe reads
+// a uniform buffer at a uniform offset with one scalar load, a storage buffer with a loop over
+// its SIMD lanes), or always a storage buffer.
+enum class WeightBuffer { automatic, storage };
+
 // Draws `net` over `g` into attachment 0 of `out` (same size as g): RGB from the network, alpha
 // = coverage, uncovered pixels left as cleared (0, 0, 0, 0). `frames` > 1 draws it that many
 // times (for timing). Throws before any GPU work when the network does not read a colour (3
 // outputs), does not name its inputs, or reads attributes the G-buffer lacks.
-void draw_mlp(const std::shared_ptr<const Mlp>& net, const scene::GBuffer& g, gl::RenderTarget& out, int frames = 1);
+void draw_mlp(const std::shared_ptr<const Mlp>& net, const scene::GBuffer& g, gl::RenderTarget& out, int frames = 1,
+              WeightBuffer weights = WeightBuffer::automatic);
 // The same into a new image.
 io::Image render_mlp(const std::shared_ptr<const Mlp>& net, const scene::GBuffer& g);
 
 // Parameter uploads so far (tests: an unchanged network is not re-uploaded).
 std::size_t mlp_weight_uploads();
-// Whether draw_mlp reads the parameters from a uniform buffer (true where they fit) or a storage
-// buffer; tests and benchmarks can force the storage buffer.
-void set_mlp_weights_in_uniform_buffer(bool allowed);
 
 }  // namespace sn::nn

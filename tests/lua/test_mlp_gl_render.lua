@@ -93,6 +93,8 @@ local after = check(net, "after the edit")
 assert(sn.mlp_weight_uploads() == uploads + 1, "the edit is uploaded once")
 assert(sn.program_cache_size() == programs, "a weight edit compiles nothing")
 assert(sn.image.mse(before, after) > 1e-3, "the edit shows in the image")
+-- the storage-buffer path (what does not fit a uniform buffer) draws the same image
+assert(sn.image.mse(net:render(g, { weights = "storage", frames = 2 }), after) < 1e-12, "storage-buffer weights")
 
 -- Errors name the problem before any GPU work.
 local function fails(pattern, f)
@@ -110,4 +112,5 @@ fails("give 5 numbers, it takes 6", function()
 end)
 fails("frames' must be 1..100000", function() net:render(g, { frames = 0 }) end)
 fails("unknown option 'frame'", function() net:render(g, { frame = 2 }) end)
+fails("'uniform' %(valid: auto, storage%)", function() net:render(g, { weights = "uniform" }) end)
 print("ok")
