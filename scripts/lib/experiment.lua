@@ -270,6 +270,28 @@ function exp.net_from_record(rec)
   return net
 end
 
+-- Validation MSE in RGB of a network that outputs another colour space: its outputs on the
+-- validation rows of `rgb_data` (a dataset with the same rows and RGB targets) decoded to RGB.
+-- The forward pass runs in a compute shader; only the decoding is a Lua loop.
+function exp.rgb_val_mse(net, rgb_data)
+  local space = net:spec().color
+  local out = net:forward(rgb_data, "val")
+  sn.finish()
+  local p = out:ffi()
+  local _, nval = rgb_data:counts()
+  local k = net:spec().outputs
+  assert(out:size() == nval * k, "net:forward returned " .. out:size() .. " numbers for " .. nval .. " rows")
+  local sum = 0
+  for i = 1, nval do
+    local o = { p[(i - 1) * k], p[(i - 1) * k + 1], p[(i - 1) * k + 2] }
+    local rgb = space == "rgb" and o or sn.color.decode(space, o)
+    local _, y = rgb_data:row("val", i)
+    for c = 1, 3 do sum = sum + (rgb[c] - y[c]) ^ 2 end
+  end
+  out:release()
+  return sum / (3 * nval)
+end
+
 -- Runs that may train in one job: same data, epochs, batch, Adam settings and seed. The seed
 -- is also the job's shuffle seed, so a run's result never depends on which runs it shared a
 -- job with: shards and resumed sweeps give exactly the unsharded numbers.
