@@ -71,6 +71,37 @@ constexpr unsigned kViridis[10] = {0x440154, 0x482878, 0x3e4989, 0x31688e, 0x268
 
 Color hex(unsigned c) { return {((c >> 16) & 255) / 255.f, ((c >> 8) & 255) / 255.f, (c & 255) / 255.f}; }
 
+// OpenImageIO 2.4's render_text draws bytes, not UTF-8 characters ("—" comes out as three
+// boxes), so labels are made ASCII first: the punctuation figures use gets its usual ASCII
+// spelling, anything else becomes '?' (visible, never silently dropped).
+std::string ascii_label(const std::string& text) {
+  struct Sub {
+    const char* utf8;
+    const char* ascii;
+  };
+  static const Sub subs[] = {{"\u2014", "-"},  {"\u2013", "-"},  {"\u2212", "-"},   {"\u00d7", "x"},
+                             {"\u00b0", " deg"}, {"\u2192", "->"}, {"\u2190", "<-"}, {"\u00b5", "u"},
+                             {"\u03bc", "u"},   {"\u2018", "'"},  {"\u2019", "'"},   {"\u201c", "\""},
+                             {"\u201d", "\""},  {"\u2026", "..."}, {"\u00b2", "^2"},  {"\u00e9", "e"}};
+  std::string out;
+  for (std::size_t i = 0; i < text.size();) {
+    unsigned char c = static_cast<unsigned char>(text[i]);
+    if (c < 0x80) {
+      out += char(c);
+      ++i;
+      continue;
+    }
+    std::size_t len = c >= 0xF0 ? 4 : c >= 0xE0 ? 3 : c >= 0xC0 ? 2 : 1;
+    std::string ch = text.substr(i, len);
+    const char* rep = "?";
+    for (const Sub& sub : subs)
+      if (ch == sub.utf8) rep = sub.ascii;
+    out += rep;
+    i += len;
+  }
+  return out;
+}
+
 }  // namespace
 
 const std::string& label_font() {
@@ -86,7 +117,8 @@ const std::string& label_font() {
   return font;
 }
 
-std::array<int, 2> text_size(const std::string& text, float size) {
+std::array<int, 2> text_size(const std::string& utf8, float size) {
+  const std::string text = ascii_label(utf8);
   if (!(size >= 1 && size <= 512)) throw std::runtime_error("text size must be 1..512 pixels, got " + std::to_string(size));
   LineMetrics m = line_metrics(size);
   if (text.empty()) return {0, m.ascent + m.descent};
@@ -94,7 +126,8 @@ std::array<int, 2> text_size(const std::string& text, float size) {
   return {r.defined() ? r.xend - std::min(0, r.xbegin) : 0, m.ascent + m.descent};
 }
 
-void draw_text(Image& img, int x, int y, const std::string& text, const TextStyle& style) {
+void draw_text(Image& img, int x, int y, const std::string& utf8, const TextStyle& style) {
+  const std::string text = ascii_label(utf8);
   if (text.empty()) return;
   auto [w, h] = text_size(text, style.size);
   (void)h;

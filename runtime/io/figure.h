@@ -24,6 +24,8 @@ struct TextStyle {
 const std::string& label_font();
 // Width and height in pixels of `text` drawn at `size` (height = the font's line: ascent + descent).
 std::array<int, 2> text_size(const std::string& text, float size);
+// Labels are UTF-8; OpenImageIO 2.4 draws bytes, so common punctuation (dashes, x, degree,
+// arrows, quotes) is drawn in its ASCII spelling and any other non-ASCII character as '?'.
 // Draws `text` with the top of its line at row y; x per style.align. Writes the first
 // min(3, channels) channels; a 4th (alpha) channel is set to 1 under the glyphs.
 void draw_text(Image& img, int x, int y, const std::string& text, const TextStyle& style = {});

@@ -40,6 +40,15 @@ TEST(Figure, TextStaysInsideItsBox) {
   EXPECT_EQ(outside, 0);
 }
 
+TEST(Figure, UnicodePunctuationIsDrawnAsAscii) {
+  // "Table 4.1 \u2014 8 \u00d7 12" is drawn as "Table 4.1 - 8 x 12": same pixels, no boxes.
+  Image a(300, 30, 1, 0.f), b(300, 30, 1, 0.f);
+  draw_text(a, 2, 2, "Table 4.1 \u2014 8 \u00d7 12", {16, {1, 1, 1}, Align::left});
+  draw_text(b, 2, 2, "Table 4.1 - 8 x 12", {16, {1, 1, 1}, Align::left});
+  EXPECT_EQ(a.pixels, b.pixels);
+  EXPECT_EQ(text_size("\u00e6", 16), text_size("?", 16));  // unknown: a visible '?'
+}
+
 TEST(Figure, CentredTextIsCentred) {
   Image img(201, 40, 1, 0.f);
   draw_text(img, 100, 5, "MMMM", {20, {1, 1, 1}, Align::center});
