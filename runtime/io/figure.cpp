@@ -159,6 +159,9 @@ Image grid(const std::vector<Panel>& panels, const GridStyle& s) {
     captions = captions || !p.caption.empty();
   }
   int pad = s.padding;
+  // A cell is also as wide as the longest caption, so neighbouring captions never overlap.
+  for (const Panel& p : panels)
+    if (!p.caption.empty()) cell_w = std::max(cell_w, text_size(p.caption, s.caption_size)[0] + pad);
   int cap_h = captions ? text_size("Ag", s.caption_size)[1] + pad / 2 : 0;
   int title_h = s.title.empty() ? 0 : text_size(s.title, s.title_size)[1] + pad;
   int label_w = 0;
@@ -181,6 +184,33 @@ Image grid(const std::vector<Panel>& panels, const GridStyle& s) {
     draw_text(out, pad, cy, s.row_labels[size_t(r)], {s.caption_size, s.text, Align::left});
   }
   return out;
+}
+
+Image crop(const Image& img, int x, int y, int w, int h) {
+  if (w < 1 || h < 1 || x < 0 || y < 0 || x + w > img.width || y + h > img.height)
+    throw std::runtime_error("crop: the box (" + std::to_string(x + 1) + ", " + std::to_string(y + 1) + ") size " +
+                             std::to_string(w) + "x" + std::to_string(h) + " is not inside the " +
+                             std::to_string(img.width) + "x" + std::to_string(img.height) + " image");
+  Image out(w, h, img.channels);
+  for (int r = 0; r < h; ++r)
+    std::copy_n(&img.pixels[(size_t(y + r) * img.width + x) * img.channels], size_t(w) * img.channels,
+                &out.pixels[size_t(r) * w * img.channels]);
+  return out;
+}
+
+Box covered_box(const Image& img, int channel) {
+  if (channel < 0 || channel >= img.channels)
+    throw std::runtime_error("covered_box: channel " + std::to_string(channel + 1) + " outside 1.." +
+                             std::to_string(img.channels));
+  int x0 = img.width, y0 = img.height, x1 = -1, y1 = -1;
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x)
+      if (img.at(x, y, channel) > 0.5f) {
+        x0 = std::min(x0, x), x1 = std::max(x1, x);
+        y0 = std::min(y0, y), y1 = std::max(y1, y);
+      }
+  if (x1 < 0) return {};
+  return {x0, y0, x1 - x0 + 1, y1 - y0 + 1};
 }
 
 const char* colormap_name(Colormap c) {

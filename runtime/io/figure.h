@@ -51,6 +51,15 @@ struct GridStyle {
 // 1- and 2-channel panels are shown as grey. The result has 3 channels.
 Image grid(const std::vector<Panel>& panels, const GridStyle& style);
 
+// The part of `img` at (x, y) of size w x h (0-based, top-left); throws when it leaves the image.
+Image crop(const Image& img, int x, int y, int w, int h);
+
+struct Box {
+  int x = 0, y = 0, width = 0, height = 0;  // 0-based, top-left; width 0 = nothing covered
+};
+// The smallest box holding every pixel whose `channel` is > 0.5 (a render's coverage).
+Box covered_box(const Image& img, int channel = 3);
+
 enum class Colormap { inferno, viridis, gray };
 const char* colormap_name(Colormap c);
 Colormap parse_colormap(const std::string& name);  // throws listing the valid names

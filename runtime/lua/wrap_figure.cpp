@@ -1,5 +1,5 @@
-// Figures: sn.image.grid{...}, sn.image.heatmap(diff, {...}), sn.image.text_size(text, size) and
-// img:text(x, y, "label", {...}). Added to the sn.image table and the Image type that
+// Figures: sn.image.grid{...}, sn.image.heatmap(diff, {...}), sn.image.text_size(text, size),
+// sn.image.crop(img, x, y, w, h), sn.image.covered_box(img) and img:text(x, y, "label", {...}). Added to the sn.image table and the Image type that
 // wrap_image.cpp defines, so open_figure runs after open_image.
 #include <cmath>
 
@@ -148,6 +148,29 @@ int w_heatmap(lua_State* L) {
   return 3;
 }
 
+// sn.image.crop(img, x, y, width, height) -> Image: the part at 1-based (x, y), top-left
+int w_crop(lua_State* L) {
+  Image& img = check<Image>(L, 1, kType);
+  long long x = check_integer(L, 2, "sn.image.crop x"), y = check_integer(L, 3, "sn.image.crop y");
+  long long w = check_integer(L, 4, "sn.image.crop width"), h = check_integer(L, 5, "sn.image.crop height");
+  push(L, std::make_shared<Image>(io::crop(img, int(x - 1), int(y - 1), int(w), int(h))), kType);
+  return 1;
+}
+
+// sn.image.covered_box(img [, channel = 4]) -> x, y, width, height (1-based) of the pixels whose
+// channel is > 0.5, or nil when none is
+int w_covered_box(lua_State* L) {
+  Image& img = check<Image>(L, 1, kType);
+  long long c = lua_isnoneornil(L, 2) ? 4 : check_integer(L, 2, "sn.image.covered_box channel");
+  io::Box b = io::covered_box(img, int(c - 1));
+  if (b.width == 0) return 0;
+  lua_pushinteger(L, b.x + 1);
+  lua_pushinteger(L, b.y + 1);
+  lua_pushinteger(L, b.width);
+  lua_pushinteger(L, b.height);
+  return 4;
+}
+
 }  // namespace
 
 void open_figure(lua_State* L) {
@@ -161,8 +184,9 @@ void open_figure(lua_State* L) {
 
   lua_getfield(L, -1, "image");
   if (!lua_istable(L, -1)) luaL_error(L, "internal: open_figure must run after open_image");
-  static const luaL_Reg fns[] = {SN_FN("grid", w_grid), SN_FN("heatmap", w_heatmap),
-                                 SN_FN("text_size", w_text_size), {nullptr, nullptr}};
+  static const luaL_Reg fns[] = {SN_FN("grid", w_grid),           SN_FN("heatmap", w_heatmap),
+                                 SN_FN("text_size", w_text_size), SN_FN("crop", w_crop),
+                                 SN_FN("covered_box", w_covered_box), {nullptr, nullptr}};
   luaL_register(L, nullptr, fns);
   lua_pop(L, 1);
 }

@@ -416,6 +416,20 @@ end
 
 local function blank() return sn.image.new { width = 1, height = 1, channels = 3, fill = 1 } end
 
+-- The box around a render's covered pixels with a margin (a fraction of its size), inside the
+-- image: figures show the mesh, not the empty frame around it.
+function exp.frame(img, margin)
+  local x, y, w, h = sn.image.covered_box(img)
+  local iw, ih = img:size()
+  if not x then return { 1, 1, iw, ih } end
+  local mx, my = math.ceil(w * (margin or 0.05)), math.ceil(h * (margin or 0.05))
+  local x0, y0 = math.max(1, x - mx), math.max(1, y - my)
+  local x1, y1 = math.min(iw, x + w - 1 + mx), math.min(ih, y + h - 1 + my)
+  return { x0, y0, x1 - x0 + 1, y1 - y0 + 1 }
+end
+
+function exp.crop(img, box) return sn.image.crop(img, box[1], box[2], box[3], box[4]) end
+
 -- E:compare{ file = "figures/NAME.png", title = "...", model = "ggx" (the ground truth),
 --            nets = { {net = Mlp, label = "8x12"}, ... },
 --            meshes = { {mesh = path, label = "training mesh", views = {1, 3}}, ... },
@@ -426,16 +440,18 @@ local function blank() return sn.image.new { width = 1, height = 1, channels = 3
 -- of the MSEs beside it; returns the MSE rows.
 function E:compare(o)
   local truth_model = exp.model(o.model)
-  local size = o.size or self:pick({ 160, 120 }, { 320, 240 })
+  local size = o.size or self:pick({ 200, 150 }, { 480, 360 })
   local renders, rows = {}, {}
   local max_err = 0
   for _, m in ipairs(o.meshes) do
     local scene = self:scene { mesh = m.mesh, size = size, views = m.view_count or o.view_count or 8 }
     for _, v in ipairs(m.views or { 1 }) do
-      local truth = self:time("render", scene.render, scene, truth_model, { view = v })
+      local full_truth = self:time("render", scene.render, scene, truth_model, { view = v })
+      local box = exp.frame(full_truth)
+      local truth = exp.crop(full_truth, box)
       local entry = { label = string.format("%s, view %d", m.label, v), truth = truth, nets = {} }
       for k, n in ipairs(o.nets) do
-        local img = self:time("render", scene.render, scene, n.net, { view = v })
+        local img = exp.crop(self:time("render", scene.render, scene, n.net, { view = v }), box)
         local mse = sn.image.mse(truth, img, { channels = 3, mask = truth })
         local diff = sn.image.diff(truth, img)
         local _, mx = sn.image.heatmap(diff, { mask = truth, colorbar = false })

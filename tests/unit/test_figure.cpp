@@ -89,6 +89,9 @@ TEST(Figure, GridRowsAndCaptions) {
   int cap = text_size("Ag", s.caption_size)[1] + s.padding / 2;
   EXPECT_EQ(g.width, s.padding + 2 * (20 + s.padding));
   EXPECT_EQ(g.height, s.padding + 2 * (10 + cap + s.padding));
+  // A caption wider than its panel widens every cell.
+  Image wide = grid({{p, "a much longer caption"}, {p, "b"}}, s);
+  EXPECT_EQ(wide.width, s.padding + 2 * (text_size("a much longer caption", s.caption_size)[0] + s.padding + s.padding));
   s.row_labels = {"one"};
   EXPECT_THROW(grid({{p, "a"}, {p, "b"}, {p, "c"}}, s), std::runtime_error);  // 2 rows, 1 label
 }
@@ -151,4 +154,21 @@ TEST(Figure, HeatmapAutoMaxAndColourBar) {
   EXPECT_TRUE(same(colormap(Colormap::inferno, 1), h.image, bx, top));
   EXPECT_TRUE(same(colormap(Colormap::inferno, 0), h.image, bx, bottom));
   EXPECT_GT(bottom - top, 30);
+}
+
+TEST(Figure, CropAndCoveredBox) {
+  Image img(10, 8, 4, 0.f);
+  for (int y = 2; y <= 5; ++y)
+    for (int x = 3; x <= 6; ++x) img.at(x, y, 3) = 1.f, img.at(x, y, 0) = float(x) + 10.f * float(y);
+  Box b = covered_box(img);
+  EXPECT_EQ(b.x, 3);
+  EXPECT_EQ(b.y, 2);
+  EXPECT_EQ(b.width, 4);
+  EXPECT_EQ(b.height, 4);
+  Image c = crop(img, b.x, b.y, b.width, b.height);
+  EXPECT_EQ(c.width, 4);
+  EXPECT_EQ(c.at(0, 0, 0), 3.f + 20.f);
+  EXPECT_EQ(c.at(3, 3, 0), 6.f + 50.f);
+  EXPECT_THROW(crop(img, 8, 0, 4, 2), std::runtime_error);  // leaves the image
+  EXPECT_EQ(covered_box(Image(3, 3, 4, 0.f)).width, 0);      // nothing covered
 }

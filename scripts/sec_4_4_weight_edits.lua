@@ -1,0 +1,151 @@
+-- Section 4.4 (figures 4.13-4.19): a network fitted to three-colour toon shading (8 hidden layers
+-- x 12, Adam lr 0.00025, batch 8), then edited by hand: the first layer (the normal inputs'
+-- weights rotated, as if the surface -- and so the light -- turned), a middle layer (one unit
+-- switched around) and the last layer (output rows swapped or scaled). Each edit is rendered on
+-- the training mesh and on the test mesh, and measured against the unedited network: how much
+-- the colours changed (chromaticity) and how much the shading pattern changed (luminance
+-- correlation), which is the thesis' observation in numbers: first-layer edits move highlights,
+-- last-layer edits recolour.
+--   shadenet scripts/sec_4_4_weight_edits.lua [--quick] [--shard i/n] [--out DIR] [--backend cpu|gl|auto]
+package.path = (arg and arg[0] and arg[0]:match("^(.*)/[^/]*$") or ".") .. "/?.lua;" .. package.path
+local sn = require "shadenet"
+local exp = require "lib.experiment"
+
+local E = exp.start("sec_4_4_weight_edits", arg)
+local epochs = E:pick(10, exp.epochs)
+local desc = E:data_desc { model = "toon3" }
+local records = E:sweep { exp.run { id = "toon3-8x12", hidden = exp.rep(12, 8), seed = 1, epochs = epochs, data = desc,
+                                    keep_params = true } }
+local rec = records["toon3-8x12"]
+if not rec then return E:finish { records = records } end
+local fitted = exp.net_from_record(rec)
+local L = #fitted.layers  -- weight layers: 8 hidden + output
+
+-- Rotates the first layer's weights on the normal inputs (columns 1..3) so the network sees
+-- every normal turned by `degrees` about `axis` ("x" or "y").
+local function rotate_normals(net, axis, degrees)
+  local a = math.rad(degrees)
+  local c, s = math.cos(a), math.sin(a)
+  local i, j = 1, 3  -- y axis: mixes normal x and z
+  if axis == "x" then i, j = 2, 3 end
+  local w = net.layers[1].weight
+  for r = 1, #w do
+    local wi, wj = w[r][i], w[r][j]
+    w[r][i] = c * wi + s * wj
+    w[r][j] = -s * wi + c * wj
+  end
+end
+local function negate_unit(net, layer, unit)
+  local w = net.layers[layer].weight
+  for c = 1, #w[unit] do w[unit][c] = -w[unit][c] end
+  net.layers[layer].bias[unit] = -net.layers[layer].bias[unit]
+end
+local function scale_unit(net, layer, unit, k)
+  local w = net.layers[layer].weight
+  for c = 1, #w[unit] do w[unit][c] = k * w[unit][c] end
+  net.layers[layer].bias[unit] = k * net.layers[layer].bias[unit]
+end
+local function swap_outputs(net, a, b)
+  local layer = net.layers[L]
+  local ra, rb = layer.weight[a]:table(), layer.weight[b]:table()
+  layer.weight[a], layer.weight[b] = rb, ra
+  local ba, bb = layer.bias[a], layer.bias[b]
+  layer.bias[a], layer.bias[b] = bb, ba
+end
+
+local edits = {
+  { id = "first_rot_y", layer = "first", label = "first layer: normals turned 35° about y",
+    apply = function(n) rotate_normals(n, "y", 35) end },
+  { id = "first_rot_x", layer = "first", label = "first layer: normals turned 25° about x",
+    apply = function(n) rotate_normals(n, "x", 25) end },
+  { id = "middle_negate", layer = "middle", label = string.format("layer %d: unit 1 negated", math.floor(L / 2) + 1),
+    apply = function(n) negate_unit(n, math.floor(L / 2) + 1, 1) end },
+  { id = "middle_scale", layer = "middle", label = string.format("layer %d: unit 2 x 3", math.floor(L / 2) - 1),
+    apply = function(n) scale_unit(n, math.floor(L / 2) - 1, 2, 3) end },
+  { id = "last_swap_rb", layer = "last", label = "last layer: red and blue rows swapped",
+    apply = function(n) swap_outputs(n, 1, 3) end },
+  { id = "last_scale_g", layer = "last", label = "last layer: green row x 0.5",
+    apply = function(n) scale_unit(n, L, 2, 0.5) end },
+}
+for _, e in ipairs(edits) do
+  e.net = fitted:clone()
+  e.apply(e.net)
+end
+
+-- Colour and pattern change of `b` against `a` over the pixels covered in both.
+local function luminance(p) return 0.2126 * p[1] + 0.7152 * p[2] + 0.0722 * p[3] end
+local function change(a, b)
+  local w, h = a:size()
+  local n, chroma, sa, sb, saa, sbb, sab = 0, 0, 0, 0, 0, 0, 0
+  for y = 1, h do
+    for x = 1, w do
+      local p, q = a:get(x, y), b:get(x, y)
+      if p[4] > 0.5 and q[4] > 0.5 then
+        n = n + 1
+        local sp, sq = p[1] + p[2] + p[3] + 1e-6, q[1] + q[2] + q[3] + 1e-6
+        for c = 1, 3 do chroma = chroma + math.abs(p[c] / sp - q[c] / sq) end
+        local la, lb = luminance(p), luminance(q)
+        sa, sb, saa, sbb, sab = sa + la, sb + lb, saa + la * la, sbb + lb * lb, sab + la * lb
+      end
+    end
+  end
+  local cov = sab / n - (sa / n) * (sb / n)
+  local va, vb = saa / n - (sa / n) ^ 2, sbb / n - (sb / n) ^ 2
+  local corr = (va > 0 and vb > 0) and cov / math.sqrt(va * vb) or 1
+  return chroma / n, 1 - corr
+end
+
+local size = E:pick({ 200, 150 }, { 480, 360 })
+local truth_model = exp.model("toon3")
+local meshes = { { mesh = exp.meshes.train, label = "training mesh", view = 1 },
+                 { mesh = exp.meshes.test, label = "test mesh", view = 2 } }
+local panels, row_labels, rows = {}, {}, {}
+for _, m in ipairs(meshes) do
+  local scene = E:scene { mesh = m.mesh, size = size, views = 8 }
+  local full = E:time("render", scene.render, scene, truth_model, { view = m.view })
+  local box = exp.frame(full)
+  local truth = exp.crop(full, box)
+  local base = exp.crop(E:time("render", scene.render, scene, fitted, { view = m.view }), box)
+  panels[#panels + 1] = { image = truth, caption = "toon ground truth" }
+  panels[#panels + 1] = { image = base, caption = string.format("fitted, MSE %.2e", sn.image.mse(truth, base, { channels = 3, mask = truth })) }
+  for k, e in ipairs(edits) do
+    local img = exp.crop(E:time("render", scene.render, scene, e.net, { view = m.view }), box)
+    panels[#panels + 1] = { image = img, caption = string.format("(%s) %s", string.char(96 + k), e.layer) }
+    local chroma, pattern = change(base, img)
+    rows[#rows + 1] = { mesh = m.label, edit = string.char(96 + k), layer = e.layer, description = e.label,
+                        chroma_change = chroma, pattern_change = pattern }
+  end
+  row_labels[#row_labels + 1] = m.label
+end
+E:figure("figures/weight_edits.png", sn.image.grid {
+  panels = panels, columns = #edits + 2, row_labels = row_labels,
+  title = "Section 4.4 — a toon-shading network (8 x 12) edited by hand", caption_size = size[1] >= 300 and 14 or 11 })
+
+E.R:table {
+  title = "Section 4.4 — what each edit changes, against the unedited network",
+  columns = {
+    { key = "mesh", align = "left" }, { key = "edit" }, { key = "layer", align = "left" },
+    { key = "description", align = "left" },
+    { key = "chroma_change", header = "colour change (mean L1 chromaticity)", format = "%.4f" },
+    { key = "pattern_change", header = "pattern change (1 - luminance correlation)", format = "%.4f" },
+  },
+  rows = rows,
+  notes = {
+    string.format("Fitted network: min val MSE %.6f after %d epochs (batch %d, Adam(%g, %g, %g), tanh).",
+                  rec.result.best_val_mse, epochs, exp.batch, exp.adam.lr, exp.adam.beta1, exp.adam.beta2),
+    "Chromaticity = rgb / (r + g + b) per pixel; both measures over pixels covered in both renderings.",
+  },
+}
+-- The edited networks, for a closer look (sn.load).
+for _, e in ipairs(edits) do
+  e.net:save(E.R:path("networks/" .. e.id .. ".mlp"))
+  E.R.written[#E.R.written + 1] = "networks/" .. e.id .. ".mlp"
+end
+fitted:save(E.R:path("networks/fitted.mlp"))
+E.R.written[#E.R.written + 1] = "networks/fitted.mlp"
+E:finish {
+  records = records,
+  config = { model = "toon3", hidden = exp.rep(12, 8), epochs = epochs, batch = exp.batch, adam = exp.adam, data = desc,
+             edits = (function() local t = {} for i, e in ipairs(edits) do t[i] = { id = e.id, label = e.label } end return t end)() },
+  summary = { rows = rows, fitted_val_mse = rec.result.best_val_mse },
+}
