@@ -292,6 +292,31 @@ function exp.rgb_val_mse(net, rgb_data)
   return sum / (3 * nval)
 end
 
+-- Rendering cost of a network over a G-buffer: seconds per frame drawn, and seconds of one
+-- whole call (draw and read-back). net:render's `frames` draws that many frames before reading
+-- the image back, so a call of 1 + n frames less a call of 1 frame is n frames of drawing
+-- alone; n doubles from `frames` until those n frames take at least `min_seconds`, so the
+-- difference stands well above the noise of a shared machine. A warm-up call first compiles
+-- the shader and uploads the weights.
+function exp.render_seconds(net, g, frames, min_seconds)
+  min_seconds = min_seconds or 0.05
+  local function call(n)
+    local t0 = sn.clock()
+    net:render(g, { frames = n })
+    sn.finish()
+    return sn.clock() - t0
+  end
+  call(1)
+  local one = { call(1), call(1), call(1) }
+  table.sort(one)
+  local n = frames
+  while true do
+    local drawing = call(n + 1) - one[2]
+    if drawing >= min_seconds or n >= 65536 then return math.max(drawing, 0) / n, one[2] end
+    n = n * 2
+  end
+end
+
 -- Runs that may train in one job: same data, epochs, batch, Adam settings and seed. The seed
 -- is also the job's shuffle seed, so a run's result never depends on which runs it shared a
 -- job with: shards and resumed sweeps give exactly the unsharded numbers.

@@ -21,11 +21,11 @@ local function run_gnuplot(script, png)
   return out
 end
 
-local styles = { lines = "lines lw 2", linespoints = "linespoints lw 2 pt 7 ps 0.8", points = "points pt 7 ps 1.0" }
+local styles = { lines = "lines lw 2", linespoints = "linespoints lw 2 pt %d ps 0.8", points = "points pt %d ps 1.0" }
 
 -- plot.lines{ path = "DIR/plots/NAME.png", title, xlabel, ylabel, logx, logy, width, height,
 --             key = "top right", series = { {name, x = {...}, y = {...}, style = "lines",
---             labels = {...}}, ... } } -> path of the PNG
+--             color = "#rrggbb", dash = 2, point = 6, labels = {...}}, ... } } -> path of the PNG
 -- Non-finite y values are dropped (gnuplot cannot draw them) and counted in the returned
 -- second value, so a diverged curve shows as a gap, never as a silent zero.
 function plot.lines(p)
@@ -71,7 +71,8 @@ function plot.lines(p)
     local sel = string.format("(strcol(1) eq %s ? $3 : NaN)", q(s.name))
     local style = styles[s.style or "lines"] or error("plot.lines: unknown style '" .. tostring(s.style) ..
                                                       "' (valid: lines, linespoints, points)", 0)
-    local color = s.color and (" lc rgb " .. q(s.color)) or ""
+    style = style:gsub("%%d", tostring(s.point or 7))  -- gnuplot point type: 7 disc, 6 circle, 4 square, ...
+    local color = (s.color and (" lc rgb " .. q(s.color)) or "") .. (s.dash and (" dt " .. s.dash) or "")
     parts[#parts + 1] = string.format("%s skip 1 using 2:%s with %s%s title %s", q(csv_path), sel, style, color, q(s.name))
     if s.labels then
       parts[#parts + 1] = string.format("%s skip 1 using 2:%s:4 with labels offset 0.6,0.6 left font ',8' notitle",

@@ -1,0 +1,43 @@
+-- Sections 4.4 (weight edits) and 4.5 (textures) in --quick mode.
+local C = require "script_check"
+local sn = require "shadenet"
+local thesis = require "lib.thesis"
+
+local dir = C.tmpdir("s44")
+C.ok("scripts/sec_4_4_weight_edits.lua", { "--quick", "--out", dir })
+C.assert_files(dir, { "figures/weight_edits.png", "table.md", "table.csv", "run.json", "networks/fitted.mlp",
+                      "networks/last_swap_rb.mlp" })
+local rows = C.csv(dir .. "/table.csv")
+assert(#rows == 12, "6 edits x 2 meshes")
+C.assert_range(rows, "chroma_change", 0, 2, "edits")
+C.assert_range(rows, "pattern_change", 0, 2, "edits")
+local e = {}
+for _, r in ipairs(rows) do if r.mesh == "training mesh" then e[r.edit] = r end end
+-- The thesis' observation, measured: the last layer recolours without moving the shading;
+-- the first layer moves the shading.
+assert(e.e.pattern_change < 0.02 and e.e.chroma_change > 0.3, "swapping output rows recolours only")
+assert(e.a.pattern_change > 10 * e.e.pattern_change and e.b.pattern_change > 10 * e.f.pattern_change,
+       "first-layer edits change the pattern far more than last-layer edits")
+-- The saved networks are the edited ones: the swap's red row is the fitted blue row.
+local fitted, swapped = sn.load(dir .. "/networks/fitted.mlp"), sn.load(dir .. "/networks/last_swap_rb.mlp")
+local L = #fitted.layers
+assert(swapped.layers[L].weight[1][1] == fitted.layers[L].weight[3][1], "saved edit: rows swapped")
+assert(swapped.layers[L].bias[3] == fitted.layers[L].bias[1], "saved edit: biases swapped")
+C.rm(dir)
+
+dir = C.tmpdir("s45")
+C.ok("scripts/sec_4_5_textures.lua", { "--quick", "--out", dir })
+C.assert_files(dir, { "figures/textures.png", "table.md", "table.csv", "run.json" })
+rows = C.csv(dir .. "/table.csv")
+assert(#rows == 2, "textured Phong and texture")
+C.assert_range(rows, "val_mse", 1e-7, 0.05, "textures")
+C.assert_range(rows, "detail_kept", 0, 1.5, "textures")
+assert(rows[1].thesis_val_mse == thesis.sec_4_5.textured_phong and rows[2].thesis_val_mse == thesis.sec_4_5.texture_from_position_uv,
+       "thesis values beside ours")
+for _, r in ipairs(rows) do
+  assert(r.val_mse < r.constant_mse, r.case .. ": a fit better than the constant predictor")
+end
+-- The texture from position + UV comes out blurry: most of its gradient energy is gone.
+assert(rows[2].detail_kept < 0.5, "texture detail lost: " .. rows[2].detail_kept)
+C.rm(dir)
+print("section scripts: ok")
