@@ -43,9 +43,10 @@ for _, c in ipairs(cases) do
                        { scene = blob, label = "test mesh", key = "test_mse" } } do
     local truth = m.scene:render(c.model, { view = 2 })
     local mine = m.scene:render(net, { view = 2 })
-    -- Show the mesh, not the empty frame around it.
+    -- Show the mesh, not the empty frame around it; a display clamps colours to [0, 1] (the
+    -- model's image already is), so the network's is compared as it would be seen.
     local x, y, w, h = sn.image.covered_box(truth)
-    truth, mine = sn.image.crop(truth, x, y, w, h), sn.image.crop(mine, x, y, w, h)
+    truth, mine = sn.image.crop(truth, x, y, w, h), sn.image.clamp(sn.image.crop(mine, x, y, w, h))
     local mse = sn.image.mse(truth, mine, { channels = 3, mask = truth })
     local heat = sn.image.heatmap(sn.image.diff(truth, mine), { mask = truth, max = 0.1, label = "|error|" })
     panels[#panels + 1] = { image = truth, caption = c.name .. " (the model)" }

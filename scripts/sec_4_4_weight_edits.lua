@@ -105,11 +105,11 @@ for _, m in ipairs(meshes) do
   local full = E:time("render", scene.render, scene, truth_model, { view = m.view })
   local box = exp.frame(full)
   local truth = exp.crop(full, box)
-  local base = exp.crop(E:time("render", scene.render, scene, fitted, { view = m.view }), box)
+  local base = sn.image.clamp(exp.crop(E:time("render", scene.render, scene, fitted, { view = m.view }), box))
   panels[#panels + 1] = { image = truth, caption = "toon ground truth" }
   panels[#panels + 1] = { image = base, caption = string.format("fitted, MSE %.2e", sn.image.mse(truth, base, { channels = 3, mask = truth })) }
   for k, e in ipairs(edits) do
-    local img = exp.crop(E:time("render", scene.render, scene, e.net, { view = m.view }), box)
+    local img = sn.image.clamp(exp.crop(E:time("render", scene.render, scene, e.net, { view = m.view }), box))
     panels[#panels + 1] = { image = img, caption = string.format("(%s) %s", string.char(96 + k), e.layer) }
     local chroma, pattern = change(base, img)
     rows[#rows + 1] = { mesh = m.label, edit = string.char(96 + k), layer = e.layer, description = e.label,

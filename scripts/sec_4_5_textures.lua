@@ -62,7 +62,7 @@ for _, c in ipairs(cases) do
     local full = E:time("render", scene.render, scene, model, { view = 1 })
     local box = exp.frame(full)
     local truth = exp.crop(full, box)
-    local img = exp.crop(E:time("render", scene.render, scene, net, { view = 1 }), box)
+    local img = sn.image.clamp(exp.crop(E:time("render", scene.render, scene, net, { view = 1 }), box))
     local mse = sn.image.mse(truth, img, { channels = 3, mask = truth })
     local heat = sn.image.heatmap(sn.image.diff(truth, img), { mask = truth, label = "|error|" })
     panels[#panels + 1] = { image = truth, caption = "ground truth" }

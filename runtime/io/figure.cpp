@@ -186,6 +186,18 @@ Image grid(const std::vector<Panel>& panels, const GridStyle& s) {
   return out;
 }
 
+Image clamp_colors(const Image& img, float lo, float hi) {
+  if (!(lo <= hi)) throw std::runtime_error("clamp: lo must be <= hi");
+  Image out = img;
+  const int n = std::min(3, img.channels);
+  for (std::size_t p = 0; p < out.pixels.size(); p += size_t(img.channels))
+    for (int k = 0; k < n; ++k) {
+      float& v = out.pixels[p + size_t(k)];
+      if (v == v) v = std::clamp(v, lo, hi);
+    }
+  return out;
+}
+
 Image crop(const Image& img, int x, int y, int w, int h) {
   if (w < 1 || h < 1 || x < 0 || y < 0 || x + w > img.width || y + h > img.height)
     throw std::runtime_error("crop: the box (" + std::to_string(x + 1) + ", " + std::to_string(y + 1) + ") size " +

@@ -1,5 +1,6 @@
 // Figures: sn.image.grid{...}, sn.image.heatmap(diff, {...}), sn.image.text_size(text, size),
-// sn.image.crop(img, x, y, w, h), sn.image.covered_box(img) and img:text(x, y, "label", {...}). Added to the sn.image table and the Image type that
+// sn.image.crop(img, x, y, w, h), sn.image.covered_box(img), sn.image.clamp(img) and
+// img:text(x, y, "label", {...}). Added to the sn.image table and the Image type that
 // wrap_image.cpp defines, so open_figure runs after open_image.
 #include <cmath>
 
@@ -157,6 +158,16 @@ int w_crop(lua_State* L) {
   return 1;
 }
 
+// sn.image.clamp(img [, lo = 0, hi = 1]) -> Image: colour channels clamped as a display shows
+// them (alpha kept, NaN kept)
+int w_clamp(lua_State* L) {
+  Image& img = check<Image>(L, 1, kType);
+  double lo = lua_isnoneornil(L, 2) ? 0 : check_number(L, 2, "sn.image.clamp lo");
+  double hi = lua_isnoneornil(L, 3) ? 1 : check_number(L, 3, "sn.image.clamp hi");
+  push(L, std::make_shared<Image>(io::clamp_colors(img, float(lo), float(hi))), kType);
+  return 1;
+}
+
 // sn.image.covered_box(img [, channel = 4]) -> x, y, width, height (1-based) of the pixels whose
 // channel is > 0.5, or nil when none is
 int w_covered_box(lua_State* L) {
@@ -186,7 +197,7 @@ void open_figure(lua_State* L) {
   if (!lua_istable(L, -1)) luaL_error(L, "internal: open_figure must run after open_image");
   static const luaL_Reg fns[] = {SN_FN("grid", w_grid),           SN_FN("heatmap", w_heatmap),
                                  SN_FN("text_size", w_text_size), SN_FN("crop", w_crop),
-                                 SN_FN("covered_box", w_covered_box), {nullptr, nullptr}};
+                                 SN_FN("covered_box", w_covered_box), SN_FN("clamp", w_clamp), {nullptr, nullptr}};
   luaL_register(L, nullptr, fns);
   lua_pop(L, 1);
 }

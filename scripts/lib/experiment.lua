@@ -459,15 +459,16 @@ function exp.crop(img, box) return sn.image.crop(img, box[1], box[2], box[3], bo
 --            nets = { {net = Mlp, label = "8x12"}, ... },
 --            meshes = { {mesh = path, label = "training mesh", views = {1, 3}}, ... },
 --            size = {w, h}, view_count = 8, max = error at the top of the colour bar (default: the
---            largest error in the figure, shared by every heatmap so they compare) }
+--            largest error on that mesh, shared by every heatmap of the mesh so they compare) }
 -- One pair of rows per (mesh, view): the truth and each network's rendering, captioned with its
--- MSE over the covered pixels, then the |error| heatmaps under them. Writes the PNG and a CSV
--- of the MSEs beside it; returns the MSE rows.
+-- MSE over the covered pixels, then the |error| heatmaps under them. Network renders are
+-- clamped to [0, 1] as a display shows them (the truth is). Writes the PNG and a CSV of the
+-- MSEs beside it; returns the MSE rows.
 function E:compare(o)
   local truth_model = exp.model(o.model)
   local size = o.size or self:pick({ 200, 150 }, { 480, 360 })
   local renders, rows = {}, {}
-  local max_err = 0
+  local max_err = {}
   for _, m in ipairs(o.meshes) do
     local scene = self:scene { mesh = m.mesh, size = size, views = m.view_count or o.view_count or 8 }
     for _, v in ipairs(m.views or { 1 }) do
@@ -476,18 +477,18 @@ function E:compare(o)
       local truth = exp.crop(full_truth, box)
       local entry = { label = string.format("%s, view %d", m.label, v), truth = truth, nets = {} }
       for k, n in ipairs(o.nets) do
-        local img = exp.crop(self:time("render", scene.render, scene, n.net, { view = v }), box)
+        local img = sn.image.clamp(exp.crop(self:time("render", scene.render, scene, n.net, { view = v }), box))
         local mse = sn.image.mse(truth, img, { channels = 3, mask = truth })
         local diff = sn.image.diff(truth, img)
         local _, mx = sn.image.heatmap(diff, { mask = truth, colorbar = false })
-        max_err = math.max(max_err, mx)
+        max_err[m.label] = math.max(max_err[m.label] or 0, mx)
         entry.nets[k] = { img = img, diff = diff, mse = mse }
         rows[#rows + 1] = { mesh = m.label, view = v, network = n.label, mse = mse }
       end
+      entry.mesh = m.label
       renders[#renders + 1] = entry
     end
   end
-  local max = o.max or max_err
   local panels, row_labels = {}, {}
   for _, e in ipairs(renders) do
     panels[#panels + 1] = { image = e.truth, caption = "ground truth" }
@@ -497,7 +498,7 @@ function E:compare(o)
     row_labels[#row_labels + 1] = e.label
     panels[#panels + 1] = { image = blank(), caption = "" }
     for _, n in ipairs(e.nets) do
-      local h = sn.image.heatmap(n.diff, { mask = e.truth, max = max, label = "|error|" })
+      local h = sn.image.heatmap(n.diff, { mask = e.truth, max = o.max or max_err[e.mesh], label = "|error|" })
       panels[#panels + 1] = { image = h, caption = "" }
     end
     row_labels[#row_labels + 1] = "error"

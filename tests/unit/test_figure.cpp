@@ -172,3 +172,15 @@ TEST(Figure, CropAndCoveredBox) {
   EXPECT_THROW(crop(img, 8, 0, 4, 2), std::runtime_error);  // leaves the image
   EXPECT_EQ(covered_box(Image(3, 3, 4, 0.f)).width, 0);      // nothing covered
 }
+
+TEST(Figure, ClampKeepsAlphaAndNaN) {
+  Image img(2, 1, 4, 0.f);
+  img.at(0, 0, 0) = 3.f, img.at(0, 0, 1) = -1.f, img.at(0, 0, 2) = 0.25f, img.at(0, 0, 3) = 7.f;
+  img.at(1, 0, 0) = std::nanf("");
+  Image c = clamp_colors(img);
+  EXPECT_EQ(c.at(0, 0, 0), 1.f);
+  EXPECT_EQ(c.at(0, 0, 1), 0.f);
+  EXPECT_EQ(c.at(0, 0, 2), 0.25f);
+  EXPECT_EQ(c.at(0, 0, 3), 7.f);  // alpha untouched
+  EXPECT_TRUE(std::isnan(c.at(1, 0, 0)));
+}
