@@ -490,21 +490,34 @@ function E:compare(o)
     end
   end
   local panels, row_labels = {}, {}
-  for _, e in ipairs(renders) do
-    panels[#panels + 1] = { image = e.truth, caption = "ground truth" }
-    for k, n in ipairs(e.nets) do
-      panels[#panels + 1] = { image = n.img, caption = string.format("%s  MSE %.2e", o.nets[k].label, n.mse) }
+  if #o.nets == 1 then
+    -- One network: truth | network | error side by side, a row per view.
+    for _, e in ipairs(renders) do
+      local n = e.nets[1]
+      panels[#panels + 1] = { image = e.truth, caption = "ground truth" }
+      panels[#panels + 1] = { image = n.img, caption = string.format("%s  MSE %.2e", o.nets[1].label, n.mse) }
+      panels[#panels + 1] = { image = sn.image.heatmap(n.diff, { mask = e.truth, max = o.max or max_err[e.mesh],
+                                                                label = "|error|" }), caption = "error" }
+      row_labels[#row_labels + 1] = e.label
     end
-    row_labels[#row_labels + 1] = e.label
-    panels[#panels + 1] = { image = blank(), caption = "" }
-    for _, n in ipairs(e.nets) do
-      local h = sn.image.heatmap(n.diff, { mask = e.truth, max = o.max or max_err[e.mesh], label = "|error|" })
-      panels[#panels + 1] = { image = h, caption = "" }
+  else
+    -- Several: a row of renders, the row of their errors under it.
+    for _, e in ipairs(renders) do
+      panels[#panels + 1] = { image = e.truth, caption = "ground truth" }
+      for k, n in ipairs(e.nets) do
+        panels[#panels + 1] = { image = n.img, caption = string.format("%s  MSE %.2e", o.nets[k].label, n.mse) }
+      end
+      row_labels[#row_labels + 1] = e.label
+      panels[#panels + 1] = { image = blank(), caption = "" }
+      for _, n in ipairs(e.nets) do
+        local h = sn.image.heatmap(n.diff, { mask = e.truth, max = o.max or max_err[e.mesh], label = "|error|" })
+        panels[#panels + 1] = { image = h, caption = "" }
+      end
+      row_labels[#row_labels + 1] = "error"
     end
-    row_labels[#row_labels + 1] = "error"
   end
-  local img = sn.image.grid { panels = panels, columns = #o.nets + 1, row_labels = row_labels, title = o.title,
-                              caption_size = size[1] >= 300 and 14 or 11 }
+  local img = sn.image.grid { panels = panels, columns = #o.nets == 1 and 3 or #o.nets + 1, row_labels = row_labels,
+                              title = o.title, caption_size = size[1] >= 300 and 14 or 11 }
   self:figure(o.file, img)
   local csv = o.file:gsub("%.png$", ".csv")
   self.R:write(csv, results.csv({ { key = "mesh" }, { key = "view" }, { key = "network" }, { key = "mse" } }, rows))
