@@ -37,6 +37,25 @@ for _, c in ipairs(cases) do
     end
   end
 end
+-- How much of the test mesh lies outside what training saw: the share of its samples whose
+-- normal points further up (world y) than any training normal does.
+local function normals_y(mesh)
+  local data = E:data { model = "phong", mesh = mesh }
+  local n = data:counts()
+  local ys = {}
+  for i = 1, n do
+    local x = data:row("train", i)
+    ys[i] = x[2]
+  end
+  return ys
+end
+local max_train_y = -1
+for _, y in ipairs(normals_y(exp.meshes.train)) do max_train_y = math.max(max_train_y, y) end
+local test_y = normals_y(exp.meshes.test)
+local outside = 0
+for _, y in ipairs(test_y) do if y > max_train_y then outside = outside + 1 end end
+local outside_share = outside / #test_y
+
 E.R:table {
   title = "Figures 4.3 and 4.8 — image MSE on the training mesh and on the test mesh",
   columns = {
@@ -44,11 +63,15 @@ E.R:table {
     { key = "image_mse", header = "image MSE", format = "%.4g" }, { key = "val_mse", header = "min val MSE (training data)", format = "%.4g" },
   },
   rows = rows,
-  notes = { string.format("One seed; %d epochs, batch %d, Adam(%g, %g, %g), tanh. Image MSE over covered pixels, RGB.",
-                          epochs, exp.batch, exp.adam.lr, exp.adam.beta1, exp.adam.beta2) },
+  notes = {
+    string.format("One seed; %d epochs, batch %d, Adam(%g, %g, %g), tanh. Image MSE over covered pixels, RGB.",
+                  epochs, exp.batch, exp.adam.lr, exp.adam.beta1, exp.adam.beta2),
+    string.format("Coverage: no training normal points further up than y = %.3f; %.1f%% of the test mesh's samples do. Those are where the networks extrapolate.",
+                  max_train_y, 100 * outside_share),
+  },
 }
 E:finish {
   records = records,
   config = { cases = cases, epochs = epochs, batch = exp.batch, adam = exp.adam },
-  summary = { rows = rows },
+  summary = { rows = rows, max_train_normal_y = max_train_y, test_share_outside = outside_share },
 }

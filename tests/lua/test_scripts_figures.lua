@@ -68,5 +68,9 @@ for _, r in ipairs(rows) do
     assert(r.image_mse < 20 * r.val_mse + 1e-3, string.format("training-mesh image MSE %.5f vs validation %.5f", r.image_mse, r.val_mse))
   end
 end
+-- The test mesh faces where the cloth never does (its top): a share strictly between 0 and 1.
+local summary = C.json(dir .. "/run.json").summary
+assert(summary.max_train_normal_y < 0.9 and summary.test_share_outside > 0.05 and summary.test_share_outside < 0.9,
+       "normal coverage measured")
 C.rm(dir)
 print("figure scripts: ok")
