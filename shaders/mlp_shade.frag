@@ -10,9 +10,10 @@
 #include "color.glsl"
 #include "mlp/activation.glsl"
 
-// Padded vec4 layout (runtime/nn/mlp_shader.h). A uniform buffer where it fits: llvmpipe reads a
-// uniform buffer at a uniform offset with one scalar load, a storage buffer with a loop over
-// the SIMD lanes.
+// Padded vec4 layout (runtime/nn/mlp_shader.h). A uniform buffer where it fits: every fragment
+// reads the same parameters, what uniform buffers are for (llvmpipe: one scalar load instead of
+// a loop over the SIMD lanes; in the whole shader the difference was within this machine's
+// noise), a storage buffer beyond.
 #if MLP_WEIGHTS_UBO
 layout(std140, binding = 0) uniform Params { vec4 params[MLP_PQ]; };
 #else

@@ -14,9 +14,8 @@
 
 namespace sn::nn {
 
-// Where the fragment shader reads the parameters: a uniform buffer where they fit (llvmpipe reads
-// a uniform buffer at a uniform offset with one scalar load, a storage buffer with a loop over
-// its SIMD lanes), or always a storage buffer.
+// Where the fragment shader reads the parameters: a uniform buffer where they fit (every fragment
+// reads the same parameters), or always a storage buffer (for comparison).
 enum class WeightBuffer { automatic, storage };
 
 // Draws `net` over `g` into attachment 0 of `out` (same size as g): RGB from the network, alpha

@@ -57,6 +57,7 @@ struct ForwardCase {
   const char* name;
   MlpSpec spec;
 };
+void PrintTo(const ForwardCase& c, std::ostream* os) { *os << c.name; }  // test names, not bytes
 
 class GlForward : public ::testing::TestWithParam<ForwardCase> {};
 

@@ -274,3 +274,44 @@ TEST(GlTrainer, StorageBufferLayoutsTrainLikeSharedMemory) {
     EXPECT_EQ(r.steps, s.steps);
   }
 }
+
+// The largest network sn.mlp allows (32 hidden layers of 64): nothing fits in shared memory, the
+// wide layers' loops stay rolled, a few steps fit a dispatch; it trains like the oracle.
+TEST(GlTrainer, LargestArchitectureTrainsLikeOracle) {
+  sn::gl::current();
+  MlpSpec spec = spec_of(std::vector<int>(32, 64));
+  Mlp net(spec, Init::xavier, 1);
+  Dataset data = phong_like(32, 8, 10);  // 4 steps
+  TrainConfig cfg;
+  cfg.epochs = 1;
+  cfg.lr = 1e-3;
+  GlTrainer gl;
+  auto r = gl.train({&net}, data, cfg, nullptr)[0];
+  auto o = oracle::train(spec, net.params, data, cfg);
+  EXPECT_EQ(r.steps, 4);
+  EXPECT_NE(gl.report()[0].layout.find("params+moments+units in a storage buffer"), std::string::npos);
+  EXPECT_LE(max_abs_diff(r.final_params, o.final_params), 1e-4);
+  EXPECT_GT(max_abs_diff(r.final_params, net.params), 1e-3);
+}
+
+// A training step that needs more loop iterations than llvmpipe runs per shader invocation (the
+// largest network with batch 256) is refused before any training, saying so.
+TEST(GlTrainer, StepBeyondTheLoopLimitIsAClearError) {
+  sn::gl::current();
+  if (!sn::gl::current().info().software) GTEST_SKIP() << "only llvmpipe limits shader loops";
+  Mlp net(spec_of(std::vector<int>(32, 64)), Init::xavier, 1);
+  Dataset data = phong_like(300, 8, 9);
+  TrainConfig cfg;
+  cfg.epochs = 1;
+  cfg.batch = 256;
+  GlTrainer gl;
+  try {
+    gl.train({&net}, data, cfg, nullptr);
+    FAIL() << "expected the loop limit to be reported";
+  } catch (const std::runtime_error& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("mlp(6 -> 64x32 -> 3, tanh)"), std::string::npos) << m;
+    EXPECT_NE(m.find("65,535"), std::string::npos) << m;
+    EXPECT_NE(m.find("backend = \"cpu\""), std::string::npos) << m;
+  }
+}
