@@ -178,6 +178,9 @@ class Job {
     }
   }
 
+  // The epoch's permutation, computed here by nn/shuffle.h (the code the cpu backend and the
+  // oracle run: the same order by construction) and uploaded once per epoch for all networks;
+  // in the kernel its cycle-walking loop would spend llvmpipe's loop budget, per sample.
   void upload_order(uint32_t epoch) {
     EpochShuffle perm(cfg_.seed, epoch, rows_);
     std::vector<uint32_t> order(std::size_t(steps_ * cfg_.batch));

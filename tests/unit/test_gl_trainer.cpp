@@ -90,6 +90,28 @@ TEST(GlTrainer, OneAdamStepMatchesOracleWithin1e5) {
   }
 }
 
+// Four steps over two epochs: the minibatches follow the epoch permutation of nn/shuffle.h, so
+// the parameters equal the oracle's; another shuffle seed gives other minibatches and other
+// parameters.
+TEST(GlTrainer, MinibatchesFollowTheSharedShuffle) {
+  sn::gl::current();
+  MlpSpec spec = spec_of({10, 10});
+  Mlp net(spec, Init::xavier, 2);
+  Dataset data = phong_like(16, 8, 12);  // 2 steps per epoch
+  TrainConfig cfg;
+  cfg.epochs = 2;
+  cfg.lr = 1e-2;
+  cfg.seed = 21;
+  GlTrainer gl;
+  auto r = gl.train({&net}, data, cfg, nullptr)[0];
+  auto o = oracle::train(spec, net.params, data, cfg);
+  EXPECT_EQ(r.steps, 4);
+  EXPECT_LE(max_abs_diff(r.final_params, o.final_params), 1e-5);
+  cfg.seed = 22;
+  auto other = oracle::train(spec, net.params, data, cfg);
+  EXPECT_GT(max_abs_diff(other.final_params, o.final_params), 1e-4) << "the order must matter for this test";
+}
+
 // Two epochs of 64 steps: the same curve as the oracle and the cpu backend. Float rounding
 // differs between the three (fused multiply-adds, tanh approximations, summation order), and
 // Adam's normalised steps let it grow, so curves are compared to 1% relative per epoch.
