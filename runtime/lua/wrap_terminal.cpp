@@ -1,5 +1,5 @@
 // The terminal a long script talks to: sn.isatty(), sn.terminal_width(), and a gentle Ctrl-C
-// (sn.catch_interrupt() / sn.interrupted()). Without it SIGINT kills the process at once; a
+// (sn.catch_interrupt([on]) / sn.interrupted()). Without it SIGINT kills the process at once; a
 // sweep that catches it finishes the runs in flight, writes them, and stops; a second Ctrl-C
 // still stops at once.
 #include <csignal>
@@ -48,10 +48,16 @@ int w_terminal_width(lua_State* L) {
   return 1;
 }
 
-// sn.catch_interrupt(): from now on the first Ctrl-C only sets a flag (see sn.interrupted()).
-int w_catch_interrupt(lua_State*) {
-  g_interrupts = 0;
-  std::signal(SIGINT, on_sigint);
+// sn.catch_interrupt([on = true]): from now on the first Ctrl-C only sets a flag (see
+// sn.interrupted()); sn.catch_interrupt(false) gives Ctrl-C its default action back (stop now).
+int w_catch_interrupt(lua_State* L) {
+  bool on = lua_isnoneornil(L, 1) ? true : lua_toboolean(L, 1) != 0;
+  if (on) {
+    g_interrupts = 0;
+    std::signal(SIGINT, on_sigint);
+  } else {
+    std::signal(SIGINT, SIG_DFL);
+  }
   return 0;
 }
 

@@ -149,6 +149,8 @@ function Sweep:run(o)
       break
     end
   end
+  -- Past the sweep nothing is lost by stopping at once: Ctrl-C gets its default action back.
+  sn.catch_interrupt(false)
   progress:finish()
   if interrupted then
     print(string.format("%s: stopped by Ctrl-C; %d of %d runs finished and kept in %s (run the same command to resume)",

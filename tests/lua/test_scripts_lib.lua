@@ -102,6 +102,19 @@ assert(#changed:pending() == 1 and changed:pending()[1].id == "r2", "a run with 
 ok, err = pcall(Sweep.new, { dir = tmp .. "/sw2", runs = { { id = "a b" } } })
 assert(not ok and err:find("ids must be"), "bad id: " .. tostring(err))
 
+-- Ctrl-C during the first group: that group is written, the rest is left for the next run.
+local ffi = require "ffi"
+ffi.cdef "int getpid(void); int kill(int pid, int sig);"
+local irun = {}
+for i = 1, 6 do irun[i] = { id = "i" .. i, config = { i = i } } end
+local isweep = Sweep.new { dir = tmp .. "/int", runs = irun, label = "t" }
+local finished, interrupted = isweep:run { chunk = 2, train = function(group)
+  ffi.C.kill(ffi.C.getpid(), 2)  -- SIGINT, as a terminal's Ctrl-C
+  return train(group)
+end }
+assert(interrupted == true and finished == 2, "Ctrl-C keeps the group in flight and stops: " .. tostring(finished))
+assert(#isweep:pending() == 4, "4 runs left for the next run")
+
 -- ---- progress ----
 local sink = { text = "" }
 function sink:write(...) for _, s in ipairs({ ... }) do self.text = self.text .. s end end
