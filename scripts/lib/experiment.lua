@@ -480,10 +480,14 @@ function E:compare(o)
         local img = sn.image.clamp(exp.crop(self:time("render", scene.render, scene, n.net, { view = v }), box))
         local mse = sn.image.mse(truth, img, { channels = 3, mask = truth })
         local diff = sn.image.diff(truth, img)
-        local _, mx = sn.image.heatmap(diff, { mask = truth, colorbar = false })
+        local _, mx, bad = sn.image.heatmap(diff, { mask = truth, colorbar = false })
         max_err[m.label] = math.max(max_err[m.label] or 0, mx)
+        if bad > 0 then
+          io.stderr:write(string.format("%s: %s renders %d NaN/Inf pixels on the %s, view %d (magenta in %s)\n",
+                                        self.name, n.label, bad, m.label, v, o.file))
+        end
         entry.nets[k] = { img = img, diff = diff, mse = mse }
-        rows[#rows + 1] = { mesh = m.label, view = v, network = n.label, mse = mse }
+        rows[#rows + 1] = { mesh = m.label, view = v, network = n.label, mse = mse, non_finite_pixels = bad }
       end
       entry.mesh = m.label
       renders[#renders + 1] = entry
@@ -520,7 +524,8 @@ function E:compare(o)
                               title = o.title, caption_size = size[1] >= 300 and 14 or 11 }
   self:figure(o.file, img)
   local csv = o.file:gsub("%.png$", ".csv")
-  self.R:write(csv, results.csv({ { key = "mesh" }, { key = "view" }, { key = "network" }, { key = "mse" } }, rows))
+  self.R:write(csv, results.csv({ { key = "mesh" }, { key = "view" }, { key = "network" }, { key = "mse" },
+                                  { key = "non_finite_pixels" } }, rows))
   return rows
 end
 

@@ -36,6 +36,7 @@ assert_picture(dir .. "/figures/fig_4_10_widths.png", 600, 200)
 local panels = C.csv(dir .. "/figures/fig_4_10_widths.csv")
 assert(#panels == 4, "one MSE per network panel")
 C.assert_range(panels, "mse", 1e-7, 0.05, "figure 4.10")
+C.assert_range(panels, "non_finite_pixels", 0, 0, "figure 4.10")
 C.rm(dir)
 
 dir = C.tmpdir("f44")
