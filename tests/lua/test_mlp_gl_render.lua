@@ -1,37 +1,10 @@
--- net:render(gbuffer): the fragment-shader network equals a double-precision forward pass (written
--- here in Lua from net:params()) at the G-buffer's covered pixels, in every colour space, with the
+-- net:render(gbuffer): the fragment-shader network equals a double-precision forward pass
+-- (tests/lua/reference_forward.lua) at the G-buffer's covered pixels, in every colour space, with the
 -- output taken back to RGB (sn.color.decode, the CPU twin); a weight edit shows in the next render
 -- with one upload and no new program; bad networks are clear errors.
 local sn = require "shadenet"
 
-local function act(kind, slope, z)
-  if kind == "tanh" then return math.tanh(z)
-  elseif kind == "sigmoid" then return 1 / (1 + math.exp(-z))
-  elseif kind == "relu" then return z > 0 and z or 0
-  elseif kind == "leaky_relu" then return z > 0 and z or slope * z end
-  return z
-end
-
--- The flat layout: per layer, weights [out][in] then biases [out].
-local function forward(net, x)
-  local s, p = net:spec(), net:params()
-  local widths = { s.inputs }
-  for _, w in ipairs(s.hidden) do widths[#widths + 1] = w end
-  widths[#widths + 1] = s.outputs
-  local a, off = x, 0
-  for l = 1, #widths - 1 do
-    local nin, nout = widths[l], widths[l + 1]
-    local kind = l == #widths - 1 and s.output_activation or s.activation
-    local b, out = off + nin * nout, {}
-    for j = 1, nout do
-      local z = p[b + j]
-      for i = 1, nin do z = z + p[off + (j - 1) * nin + i] * a[i] end
-      out[j] = act(kind, s.slope, z)
-    end
-    a, off = out, b + nout
-  end
-  return a
-end
+local forward = require("reference_forward").forward
 
 local scene = sn.scene { mesh = "meshes/test_blob.glb", size = { 64, 48 }, views = { count = 2, elevation = 15 } }
 local g = scene:gbuffer { view = 1, attributes = { "view", "normal" } }  -- attachment order differs from the net's

@@ -11,21 +11,11 @@
 #include "nn/fast_tanh.h"
 #include "nn/init.h"
 #include "nn/oracle.h"
+#include "nn_spec_of.h"
 #include "nn/train.h"
 
 namespace sn::nn {
 namespace {
-
-MlpSpec spec_of(int inputs, std::vector<int> hidden, int outputs, Activation a, Activation out = Activation::linear) {
-  MlpSpec s;
-  s.inputs = inputs;
-  s.hidden = std::move(hidden);
-  s.outputs = outputs;
-  s.activation = a;
-  s.slope = 0.1;
-  s.output_activation = out;
-  return s;
-}
 
 // A smooth target of 6 inputs (a stand-in for a lighting model): rows split 80/20.
 Dataset smooth_dataset(std::size_t rows, uint64_t seed = 9) {

@@ -8,21 +8,11 @@
 
 #include "nn/init.h"
 #include "nn/oracle.h"
+#include "nn_spec_of.h"
 #include "nn/shuffle.h"
 
 namespace sn::nn {
 namespace {
-
-MlpSpec spec_of(int inputs, std::vector<int> hidden, int outputs, Activation a, Activation out = Activation::linear) {
-  MlpSpec s;
-  s.inputs = inputs;
-  s.hidden = std::move(hidden);
-  s.outputs = outputs;
-  s.activation = a;
-  s.slope = 0.1;
-  s.output_activation = out;
-  return s;
-}
 
 TEST(Oracle, ForwardMatchesHandComputation) {
   // 2 -> 1 -> 1, tanh: y = w2 * tanh(w1 . x + b1) + b2
