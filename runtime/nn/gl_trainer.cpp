@@ -10,9 +10,11 @@
 #include <stdexcept>
 
 #include "gl/buffer.h"
+#include "gl/buffer_texture.h"
 #include "gl/context.h"
 #include "gl/program.h"
 #include "nn/gl_forward.h"
+#include "nn/mlp_per_net.h"
 #include "nn/mlp_shader.h"
 #include "nn/shuffle.h"
 
@@ -50,6 +52,7 @@ struct Group {
   std::shared_ptr<gl::Program> program;
   TrainLayout layout;
   std::unique_ptr<gl::Buffer> state, scratch, control;
+  std::unique_ptr<gl::BufferTexture> state_texture;  // the per-network kernel reads state through it
   int sentinel = 0;  // loop iterations the kernel needs after its sentinel loop
   long long chunk = 0;
   GlGroupReport report;
@@ -58,10 +61,13 @@ struct Group {
 struct DataBuffers {
   std::unique_ptr<gl::Buffer> train_x, train_y, val_x, val_y, order, bias;
   uint32_t bias_len = 0;
+  // train_x, train_y, order as textures (made when a group uses the per-network kernel).
+  std::unique_ptr<gl::BufferTexture> train_x_texture, train_y_texture, order_texture;
 };
 
+// Sized for reading as a texture too (gl::texture_buffer_size).
 std::unique_ptr<gl::Buffer> upload_floats(const std::vector<float>& v) {
-  auto b = std::make_unique<gl::Buffer>(gl::ElemType::float32, std::max<std::size_t>(1, v.size()));
+  auto b = std::make_unique<gl::Buffer>(gl::ElemType::float32, gl::texture_buffer_size(std::max<std::size_t>(1, v.size())));
   if (!v.empty()) b->upload(v.data(), 0, v.size());
   return b;
 }
@@ -113,7 +119,7 @@ class Job {
     buf_.train_y = upload_floats(data_.train_y);
     buf_.val_x = upload_floats(data_.val_x);
     buf_.val_y = upload_floats(data_.val_y);
-    buf_.order = std::make_unique<gl::Buffer>(gl::ElemType::uint32, std::size_t(steps_ * cfg_.batch));
+    buf_.order = std::make_unique<gl::Buffer>(gl::ElemType::uint32, gl::texture_buffer_size(std::size_t(steps_ * cfg_.batch)));
     upload_bias_corrections();
   }
 
@@ -151,12 +157,21 @@ class Job {
     }
     for (Group& g : groups_) {
       const std::size_t P = g.spec.param_count(), PQ = padded_chunks(g.spec), n = g.runs.size();
-      g.layout = plan_train_layout(g.spec, cfg_.batch, max_shared);
+      using Kernel = GlTrainOptions::Kernel;
+      const bool want_per_net =
+          opt_.kernel == Kernel::per_net || (opt_.kernel == Kernel::automatic && gl::current().info().software);
+      const bool data_fits = buf_.train_x->count() <= gl::BufferTexture::max_texels();
+      g.layout = plan_train_layout(g.spec, cfg_.batch, max_shared, want_per_net && data_fits);
+      if (opt_.kernel == Kernel::per_net && !g.layout.per_net)
+        throw std::invalid_argument("gl trainer: " + g.spec.describe() +
+                                    (data_fits ? " is too large for the per-network kernel"
+                                               : ": the dataset is larger than the driver's texture buffers, which the "
+                                                 "per-network kernel reads"));
       gl::ProgramDesc desc;
-      desc.compute = "mlp_train.comp";
+      desc.compute = g.layout.per_net ? "mlp_train_per_net.comp" : "mlp_train.comp";
       desc.defines = train_defines(g.spec, cfg_.batch, g.layout);
       g.program = gl::get_program(desc);
-      g.state = std::make_unique<gl::Buffer>(gl::ElemType::vec4, 3 * PQ * n);  // params, m = 0, v = 0
+      g.state = std::make_unique<gl::Buffer>(gl::ElemType::vec4, gl::texture_buffer_size(3 * PQ * n));  // params, m = 0, v = 0
       for (std::size_t k = 0; k < n; ++k) {
         const Mlp& net = *nets_[std::size_t(g.runs[k].index)];
         if (net.params.size() != P) throw std::invalid_argument("gl trainer: " + net.spec.describe() + " has no parameters");
@@ -165,8 +180,17 @@ class Job {
       }
       g.scratch = std::make_unique<gl::Buffer>(gl::ElemType::vec4, std::max<std::size_t>(1, g.layout.scratch_vec4s * n));
       g.control = std::make_unique<gl::Buffer>(gl::ElemType::uint32, kControlWords * n);
+      if (g.layout.per_net) {
+        g.state_texture = std::make_unique<gl::BufferTexture>(*g.state);
+        if (!buf_.train_x_texture) {
+          buf_.train_x_texture = std::make_unique<gl::BufferTexture>(*buf_.train_x);
+          buf_.train_y_texture = std::make_unique<gl::BufferTexture>(*buf_.train_y);
+          buf_.order_texture = std::make_unique<gl::BufferTexture>(*buf_.order);
+        }
+      }
       // After the sentinel: the commit loop over the parameters, the loss sum, a margin.
-      g.sentinel = int((PQ + std::size_t(cfg_.batch) - 1) / std::size_t(cfg_.batch)) + cfg_.batch + 8;
+      g.sentinel = g.layout.per_net ? int(3 * PQ) + 8
+                                    : int((PQ + std::size_t(cfg_.batch) - 1) / std::size_t(cfg_.batch)) + cfg_.batch + 8;
       g.report.arch = g.spec.describe();
       g.report.nets = int(n);
       g.report.layout = g.layout.describe();
@@ -193,11 +217,18 @@ class Job {
     const gl::Buffer* bind[7] = {buf_.train_x.get(), buf_.train_y.get(), buf_.order.get(), g.state.get(),
                                  g.scratch.get(),    g.control.get(),    buf_.bias.get()};
     for (unsigned i = 0; i < 7; ++i) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, i, bind[i]->id());
+    if (g.layout.per_net) {
+      g.state_texture->bind(0);
+      buf_.train_x_texture->bind(1);
+      buf_.train_y_texture->bind(2);
+      buf_.order_texture->bind(3);
+    }
     gl::Program& p = *g.program;
     p.set_uniform("u_lr", {probe ? 0.0 : cfg_.lr});
     p.set_uniform("u_probe", {probe ? 1.0 : 0.0});
     p.set_uniform("u_sentinel", {double(probe ? kProbeSentinel : g.sentinel)});
-    gl::dispatch(p, unsigned(ctl.size()));
+    const std::size_t per_group = g.layout.per_net ? std::size_t(kNetsPerGroup) : 1;
+    gl::dispatch(p, unsigned((ctl.size() + per_group - 1) / per_group));
     result.resize(ctl.size());
     g.control->download(result.data(), 0, ctl.size() * kControlWords);
   }

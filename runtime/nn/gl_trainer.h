@@ -37,6 +37,10 @@ struct GlTrainOptions {
   // Shared memory the kernel may use, bytes; 0 = the device's. Tests shrink it to exercise the
   // layouts that keep arrays in a storage buffer.
   std::size_t max_shared_bytes = 0;
+  // The kernel: automatic = one invocation per network for small networks on a CPU renderer
+  // (nn/mlp_per_net.h), else one per sample. Tests force each on the same networks.
+  enum class Kernel { automatic, per_sample, per_net };
+  Kernel kernel = Kernel::automatic;
 };
 
 class GlTrainer : public Backend {

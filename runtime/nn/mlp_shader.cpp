@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "nn/mlp_per_net.h"
+
 namespace sn::nn {
 
 namespace {
@@ -136,6 +138,7 @@ gl::Defines mlp_defines(const MlpSpec& s) {
 }
 
 std::string TrainLayout::describe() const {
+  if (per_net) return "one network per invocation, params+moments+gradient+units in registers";
   std::string in, out;
   auto put = [](std::string& s, const char* what) { s += (s.empty() ? "" : "+") + std::string(what); };
   (params_shared ? put(in, "params") : put(out, "params"));
@@ -149,13 +152,18 @@ std::string TrainLayout::describe() const {
   return s;
 }
 
-TrainLayout plan_train_layout(const MlpSpec& spec, int batch, std::size_t max_shared) {
+TrainLayout plan_train_layout(const MlpSpec& spec, int batch, std::size_t max_shared, bool per_net) {
   const std::size_t PQ = padded_chunks(spec), B = std::size_t(batch);
   // Per sample: the units of every block, the deltas of every block but the inputs.
   const std::size_t UQ = unit_chunks(spec);
   const std::size_t units_q = B * (UQ + (UQ - std::size_t(chunks4(spec.inputs))));
   const std::size_t fixed = 16 + 8 * B + 64;  // flags, the loss reduction, a margin for the compiler's padding
   TrainLayout t;
+  if (per_net && PQ <= kPerNetMaxChunks) {
+    t.per_net = true;
+    t.params_shared = t.moments_shared = t.units_shared = false;
+    return t;
+  }
   auto total = [&] {
     return fixed + 16 * ((t.params_shared ? PQ : 0) + (t.moments_shared ? 2 * PQ : 0) + (t.units_shared ? units_q : 0));
   };
@@ -174,6 +182,10 @@ gl::Defines train_defines(const MlpSpec& spec, int batch, const TrainLayout& t) 
   d["MLP_MOMENTS_SHARED"] = t.moments_shared ? "1" : "0";
   d["MLP_UNITS_SHARED"] = t.units_shared ? "1" : "0";
   d["MLP_SCRATCH"] = num(t.scratch_vec4s);
+  if (t.per_net) {
+    d["MLP_NETS_PER_GROUP"] = num(std::size_t(kNetsPerGroup));
+    for (auto& [name, code] : per_net_step_defines(spec, batch)) d[name] = code;
+  }
   return d;
 }
 

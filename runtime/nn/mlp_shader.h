@@ -50,16 +50,20 @@ void unpack_padded(const MlpSpec& spec, const float* padded, float* flat);
 //   lists the runs backpropagation passes through (all but the first layer's), last first.
 gl::Defines mlp_defines(const MlpSpec& spec);
 
-// Where the fused training kernel keeps each array: shared memory when it fits, else a per-network
-// scratch region of a storage buffer. Moments are the first to move out (touched once per step),
-// then the minibatch's activations and deltas, then the parameters.
+// Which fused training kernel and where it keeps each array. With `per_net` allowed (a CPU
+// renderer) a small network trains in an invocation of its own, everything in registers
+// (shaders/mlp_train_per_net.comp, nn/mlp_per_net.h). Otherwise an invocation per sample
+// (mlp_train.comp) keeps the arrays in shared memory when they fit, else in a per-network scratch
+// region of a storage buffer: moments are the first to move out (touched once per step), then
+// the minibatch's activations and deltas, then the parameters.
 struct TrainLayout {
+  bool per_net = false;  // the per-network kernel (then nothing shared or in scratch)
   bool params_shared = true, moments_shared = true, units_shared = true;
   std::size_t shared_bytes = 0;   // what the kernel declares
   std::size_t scratch_vec4s = 0;  // per network, for the arrays not in shared memory
   std::string describe() const;   // e.g. "params+moments+units in shared memory (31.3 KiB)"
 };
-TrainLayout plan_train_layout(const MlpSpec& spec, int batch, std::size_t max_shared_bytes);
+TrainLayout plan_train_layout(const MlpSpec& spec, int batch, std::size_t max_shared_bytes, bool per_net);
 
 // mlp_defines plus the kernel's batch and layout (the cache key of its program).
 gl::Defines train_defines(const MlpSpec& spec, int batch, const TrainLayout& layout);

@@ -1,6 +1,8 @@
-// The gl training backend (nn/gl_trainer.h, shaders/mlp_train.comp) against the double-precision
-// oracle and the cpu backend: one Adam step, whole curves, determinism, llvmpipe's loop limit,
-// divergence, grouping by architecture and the storage-buffer fallbacks.
+// The gl training backend (nn/gl_trainer.h) against the double-precision oracle and the cpu
+// backend, for both of its kernels (an invocation per sample, shaders/mlp_train.comp; an
+// invocation per network, shaders/mlp_train_per_net.comp): one Adam step, whole curves,
+// determinism, llvmpipe's loop limit, divergence, grouping by architecture, networks sharing a
+// workgroup, and the storage-buffer fallbacks.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -59,6 +61,26 @@ Dataset phong_like(std::size_t train, std::size_t val, uint32_t seed) {
   return d;
 }
 
+using Kernel = GlTrainOptions::Kernel;
+
+GlTrainOptions with(Kernel k) {
+  GlTrainOptions o;
+  o.kernel = k;
+  return o;
+}
+
+// The tests that hold for either kernel run once per kernel.
+class GlKernel : public ::testing::TestWithParam<Kernel> {
+ protected:
+  GlTrainer trainer() const { return GlTrainer(with(GetParam())); }
+  // The layout report names the kernel: the test must run the one it is about.
+  void expect_kernel(const GlTrainer& gl) const {
+    ASSERT_FALSE(gl.report().empty());
+    const bool per_net = gl.report()[0].layout.find("one network per invocation") != std::string::npos;
+    EXPECT_EQ(per_net, GetParam() == Kernel::per_net) << gl.report()[0].layout;
+  }
+};
+
 double max_abs_diff(const std::vector<float>& a, const std::vector<float>& b) {
   EXPECT_EQ(a.size(), b.size());
   double m = 0;
@@ -68,7 +90,10 @@ double max_abs_diff(const std::vector<float>& a, const std::vector<float>& b) {
 
 }  // namespace
 
-TEST(GlTrainer, OneAdamStepMatchesOracleWithin1e5) {
+INSTANTIATE_TEST_SUITE_P(Kernels, GlKernel, ::testing::Values(Kernel::per_sample, Kernel::per_net),
+                         [](const auto& info) { return info.param == Kernel::per_net ? "per_net" : "per_sample"; });
+
+TEST_P(GlKernel, OneAdamStepMatchesOracleWithin1e5) {
   sn::gl::current();
   for (Activation act : {Activation::tanh, Activation::sigmoid, Activation::relu, Activation::leaky_relu}) {
     MlpSpec spec = spec_of({12, 12, 12}, act);
@@ -78,8 +103,9 @@ TEST(GlTrainer, OneAdamStepMatchesOracleWithin1e5) {
     cfg.epochs = 1;
     cfg.batch = 8;
     cfg.lr = 1e-2;  // a step large enough to see in every parameter
-    GlTrainer gl;
+    GlTrainer gl = trainer();
     auto r = gl.train({&net}, data, cfg, nullptr);
+    expect_kernel(gl);
     auto o = oracle::train(spec, net.params, data, cfg);
     ASSERT_EQ(r.size(), 1u);
     EXPECT_EQ(r[0].steps, 1);
@@ -93,7 +119,7 @@ TEST(GlTrainer, OneAdamStepMatchesOracleWithin1e5) {
 // Four steps over two epochs: the minibatches follow the epoch permutation of nn/shuffle.h, so
 // the parameters equal the oracle's; another shuffle seed gives other minibatches and other
 // parameters.
-TEST(GlTrainer, MinibatchesFollowTheSharedShuffle) {
+TEST_P(GlKernel, MinibatchesFollowTheSharedShuffle) {
   sn::gl::current();
   MlpSpec spec = spec_of({10, 10});
   Mlp net(spec, Init::xavier, 2);
@@ -102,8 +128,9 @@ TEST(GlTrainer, MinibatchesFollowTheSharedShuffle) {
   cfg.epochs = 2;
   cfg.lr = 1e-2;
   cfg.seed = 21;
-  GlTrainer gl;
+  GlTrainer gl = trainer();
   auto r = gl.train({&net}, data, cfg, nullptr)[0];
+  expect_kernel(gl);
   auto o = oracle::train(spec, net.params, data, cfg);
   EXPECT_EQ(r.steps, 4);
   EXPECT_LE(max_abs_diff(r.final_params, o.final_params), 1e-5);
@@ -115,7 +142,7 @@ TEST(GlTrainer, MinibatchesFollowTheSharedShuffle) {
 // Two epochs of 64 steps: the same curve as the oracle and the cpu backend. Float rounding
 // differs between the three (fused multiply-adds, tanh approximations, summation order), and
 // Adam's normalised steps let it grow, so curves are compared to 1% relative per epoch.
-TEST(GlTrainer, TwoEpochCurvesMatchOracleAndCpu) {
+TEST_P(GlKernel, TwoEpochCurvesMatchOracleAndCpu) {
   sn::gl::current();
   MlpSpec spec = spec_of({8, 8, 8, 8});
   Mlp net(spec, Init::xavier, 3);
@@ -124,8 +151,9 @@ TEST(GlTrainer, TwoEpochCurvesMatchOracleAndCpu) {
   cfg.epochs = 2;
   cfg.lr = 5e-3;
   cfg.seed = 11;
-  GlTrainer gl;
+  GlTrainer gl = trainer();
   auto g = gl.train({&net}, data, cfg, nullptr)[0];
+  expect_kernel(gl);
   auto c = make_cpu_backend(1)->train({&net}, data, cfg, nullptr)[0];
   auto o = oracle::train(spec, net.params, data, cfg);
   ASSERT_EQ(g.train_mse.size(), 2u);
@@ -145,7 +173,7 @@ TEST(GlTrainer, TwoEpochCurvesMatchOracleAndCpu) {
   EXPECT_EQ(g.best_params.size(), spec.param_count());
 }
 
-TEST(GlTrainer, SameSeedTwiceIsIdenticalAnotherSeedIsNot) {
+TEST_P(GlKernel, SameSeedTwiceIsIdenticalAnotherSeedIsNot) {
   sn::gl::current();
   MlpSpec spec = spec_of({6, 6, 6, 6});
   Mlp a(spec, Init::xavier, 1), b(spec, Init::xavier, 2);
@@ -153,8 +181,9 @@ TEST(GlTrainer, SameSeedTwiceIsIdenticalAnotherSeedIsNot) {
   TrainConfig cfg;
   cfg.epochs = 2;
   cfg.seed = 5;
-  GlTrainer gl;
+  GlTrainer gl = trainer();
   auto r1 = gl.train({&a, &b}, data, cfg, nullptr);
+  expect_kernel(gl);
   auto r2 = gl.train({&a, &b}, data, cfg, nullptr);
   for (int n = 0; n < 2; ++n) {
     EXPECT_EQ(r1[n].final_params, r2[n].final_params);
@@ -168,33 +197,73 @@ TEST(GlTrainer, SameSeedTwiceIsIdenticalAnotherSeedIsNot) {
 
 // llvmpipe ends every loop of an invocation after 65,535 iterations: a run far longer than one
 // dispatch can hold must still apply every step it was asked for.
-TEST(GlTrainer, LongRunSplitsIntoDispatchesAndTrainsAsFarAsAsked) {
+TEST_P(GlKernel, LongRunSplitsIntoDispatchesAndTrainsAsFarAsAsked) {
   sn::gl::current();
-  MlpSpec spec = spec_of(std::vector<int>(12, 12));
+  // A per-sample step of a deep network costs hundreds of loop iterations; a per-network step
+  // about a minibatch of them, so that kernel gets a long epoch instead.
+  const bool per_net = GetParam() == Kernel::per_net;
+  MlpSpec spec = spec_of(per_net ? std::vector<int>(4, 6) : std::vector<int>(12, 12));
   Mlp net(spec, Init::xavier, 9);
-  Dataset data = phong_like(4096, 64, 4);  // 512 steps per epoch
+  const long long steps = per_net ? 8192 : 512;
+  Dataset data = phong_like(std::size_t(steps) * 8, 64, 4);
   TrainConfig cfg;
   cfg.epochs = 3;
-  GlTrainer gl;
+  GlTrainer gl = trainer();
   auto r = gl.train({&net}, data, cfg, nullptr)[0];
-  EXPECT_EQ(r.steps, 3 * 512);
+  expect_kernel(gl);
+  EXPECT_EQ(r.steps, 3 * steps);
   EXPECT_EQ(r.train_mse.size(), 3u);
   ASSERT_EQ(gl.report().size(), 1u);
   const GlGroupReport& rep = gl.report()[0];
   if (sn::gl::current().info().software) {
     EXPECT_GT(rep.loop_cost_per_step, 0);
     EXPECT_LT(rep.steps_per_dispatch * rep.loop_cost_per_step, 65535);
-    EXPECT_GE(rep.dispatches, 3 * ((512 + rep.steps_per_dispatch - 1) / rep.steps_per_dispatch));
+    EXPECT_GE(rep.dispatches, 3 * ((steps + rep.steps_per_dispatch - 1) / rep.steps_per_dispatch));
   }
   EXPECT_EQ(rep.cut_dispatches, 0);
   // The same run in dispatches far too long for the limiter: each is cut short, committed
   // nowhere, and re-run at half the size until it fits; the result is the same to the bit.
-  GlTrainer greedy(GlTrainOptions{1 << 20, 0});
+  GlTrainer greedy(GlTrainOptions{1 << 20, 0, GetParam()});
   auto g = greedy.train({&net}, data, cfg, nullptr)[0];
-  EXPECT_EQ(g.steps, 3 * 512);
+  EXPECT_EQ(g.steps, 3 * steps);
   if (sn::gl::current().info().software) EXPECT_GT(greedy.report()[0].cut_dispatches, 0);
   EXPECT_EQ(g.final_params, r.final_params);
   for (int e = 0; e < 3; ++e) EXPECT_NEAR(g.train_mse[e], r.train_mse[e], 1e-12 * r.train_mse[e]);
+}
+
+// Networks share a per-network workgroup eight at a time, each in its own invocation: nine nets
+// (the ninth alone in a second workgroup) train exactly as each does alone, and the automatic
+// choice on a CPU renderer is this kernel for small networks, the per-sample one for large.
+TEST(GlTrainer, PerNetworkInvocationsAreIndependentAndChosenOnCpuRenderers) {
+  sn::gl::current();
+  MlpSpec spec = spec_of({8, 8});
+  std::vector<Mlp> nets;
+  for (uint32_t seed = 1; seed <= 9; ++seed) nets.emplace_back(spec, Init::xavier, seed);
+  std::vector<const Mlp*> all;
+  for (const Mlp& n : nets) all.push_back(&n);
+  Dataset data = phong_like(320, 40, 13);
+  TrainConfig cfg;
+  cfg.epochs = 2;
+  GlTrainer gl(with(Kernel::per_net));
+  auto together = gl.train(all, data, cfg, nullptr);
+  for (std::size_t k : {std::size_t(0), std::size_t(5), std::size_t(8)}) {
+    auto alone = gl.train({all[k]}, data, cfg, nullptr)[0];
+    EXPECT_EQ(together[k].final_params, alone.final_params) << "net " << k;
+    EXPECT_EQ(together[k].val_mse, alone.val_mse) << "net " << k;
+  }
+  EXPECT_NE(together[0].final_params, together[1].final_params);
+
+  GlTrainer automatic;
+  Mlp big(spec_of(std::vector<int>(12, 12)), Init::xavier, 1);
+  automatic.train({&nets[0], &big}, data, cfg, nullptr);
+  ASSERT_EQ(automatic.report().size(), 2u);
+  const bool software = sn::gl::current().info().software;
+  EXPECT_EQ(automatic.report()[0].layout.find("one network per invocation") != std::string::npos, software)
+      << automatic.report()[0].layout;
+  EXPECT_EQ(automatic.report()[1].layout.find("one network per invocation"), std::string::npos)
+      << automatic.report()[1].layout;
+  Mlp too_big(spec_of(std::vector<int>(12, 12)), Init::xavier, 1);
+  EXPECT_THROW(gl.train({&too_big}, data, cfg, nullptr), std::invalid_argument);
 }
 
 // Two nets in one dispatch under a learning rate far too large: the ReLU net's activations
@@ -202,9 +271,10 @@ TEST(GlTrainer, LongRunSplitsIntoDispatchesAndTrainsAsFarAsAsked) {
 // the output bias moves) stays finite. The diverged net stops at the same step as on the cpu
 // backend (both float; the double oracle would overflow later) with its last finite parameters;
 // the neighbour trains exactly as it does alone.
-TEST(GlTrainer, DivergedNetIsFlaggedAndItsNeighbourIsUndisturbed) {
+TEST_P(GlKernel, DivergedNetIsFlaggedAndItsNeighbourIsUndisturbed) {
   sn::gl::current();
-  MlpSpec spec = spec_of({16, 16, 16, 16, 16, 16}, Activation::relu);
+  // Six layers for the per-sample kernel; two for the per-network one (its size limit).
+  MlpSpec spec = spec_of(std::vector<int>(GetParam() == Kernel::per_net ? 2 : 6, 16), Activation::relu);
   Mlp wild(spec, Init::he, 4), calm(spec, Init::he, 5);
   for (int l = 0; l < spec.layers() - 1; ++l)
     for (int j = 0; j < spec.width(l + 1); ++j) calm.biases(l)[j] = -100.f;  // every ReLU dead
@@ -212,8 +282,9 @@ TEST(GlTrainer, DivergedNetIsFlaggedAndItsNeighbourIsUndisturbed) {
   TrainConfig cfg;
   cfg.epochs = 1;
   cfg.lr = 1e15;
-  GlTrainer gl;
+  GlTrainer gl = trainer();
   auto r = gl.train({&wild, &calm}, data, cfg, nullptr);
+  expect_kernel(gl);
   auto c = make_cpu_backend(1)->train({&wild}, data, cfg, nullptr)[0];
   ASSERT_TRUE(c.diverged.has_value());
   ASSERT_TRUE(r[0].diverged.has_value());
@@ -238,7 +309,7 @@ TEST(GlTrainer, DivergedNetIsFlaggedAndItsNeighbourIsUndisturbed) {
 
 // A learning rate that is infinite in float makes the very first update non-finite while the
 // loss is fine: nothing is committed, the net stops before step 1 with its initial parameters.
-TEST(GlTrainer, NonFiniteUpdateLeavesTheLastFiniteParameters) {
+TEST_P(GlKernel, NonFiniteUpdateLeavesTheLastFiniteParameters) {
   sn::gl::current();
   MlpSpec spec = spec_of({8, 8});
   Mlp net(spec, Init::xavier, 1);
@@ -246,8 +317,9 @@ TEST(GlTrainer, NonFiniteUpdateLeavesTheLastFiniteParameters) {
   TrainConfig cfg;
   cfg.epochs = 2;
   cfg.lr = 1e39;
-  GlTrainer gl;
+  GlTrainer gl = trainer();
   auto r = gl.train({&net}, data, cfg, nullptr)[0];
+  expect_kernel(gl);
   auto o = oracle::train(spec, net.params, data, cfg);
   ASSERT_TRUE(o.diverged.has_value());
   ASSERT_TRUE(r.diverged.has_value());
@@ -258,14 +330,15 @@ TEST(GlTrainer, NonFiniteUpdateLeavesTheLastFiniteParameters) {
   EXPECT_GE(gl.report()[0].divergence_reruns, 1);
 }
 
-TEST(GlTrainer, ArchitecturesTrainAsSeparateGroupsLikeAlone) {
+TEST_P(GlKernel, ArchitecturesTrainAsSeparateGroupsLikeAlone) {
   sn::gl::current();
   Mlp a(spec_of({6, 6}), Init::xavier, 1), b(spec_of({10, 10, 10}), Init::xavier, 2), c(spec_of({6, 6}), Init::xavier, 3);
   Dataset data = phong_like(200, 40, 7);
   TrainConfig cfg;
   cfg.epochs = 2;
-  GlTrainer gl;
+  GlTrainer gl = trainer();
   auto r = gl.train({&a, &b, &c}, data, cfg, nullptr);
+  expect_kernel(gl);
   ASSERT_EQ(gl.report().size(), 2u);
   EXPECT_EQ(gl.report()[0].nets, 2);
   EXPECT_EQ(gl.report()[1].nets, 1);
@@ -285,11 +358,11 @@ TEST(GlTrainer, StorageBufferLayoutsTrainLikeSharedMemory) {
   Dataset data = phong_like(160, 16, 8);
   TrainConfig cfg;
   cfg.epochs = 2;
-  GlTrainer shared;
+  GlTrainer shared(with(Kernel::per_sample));
   auto s = shared.train({&net}, data, cfg, nullptr)[0];
   EXPECT_EQ(shared.report()[0].layout.find("storage buffer"), std::string::npos) << shared.report()[0].layout;
   for (std::size_t limit : {std::size_t(3000), std::size_t(1200), std::size_t(64)}) {
-    GlTrainer small(GlTrainOptions{0, limit});
+    GlTrainer small(GlTrainOptions{0, limit, Kernel::per_sample});
     auto r = small.train({&net}, data, cfg, nullptr)[0];
     EXPECT_NE(small.report()[0].layout.find("storage buffer"), std::string::npos) << small.report()[0].layout;
     EXPECT_LE(max_abs_diff(r.final_params, s.final_params), 1e-6) << small.report()[0].layout;
