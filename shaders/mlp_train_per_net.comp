@@ -27,6 +27,9 @@ layout(binding = 2) uniform samplerBuffer u_train_y;
 layout(binding = 3) uniform usamplerBuffer u_order;
 
 #define B MLP_BATCH
+// Networks are dealt to workgroups in turn (net = lane * u_groups + workgroup), so a few
+// networks still spread over every thread of the renderer.
+uniform uint u_groups;
 
 vec4 r_p[MLP_PQ], r_m[MLP_PQ], r_v[MLP_PQ], r_g[MLP_PQ];  // parameters, moments, gradient
 vec4 r_a[MLP_UQ], r_d[MLP_UQ];                            // one sample's units and deltas
@@ -44,7 +47,7 @@ void adam_at(int k, bvec4 live) {
 }
 
 void main() {
-  const uint net = gl_GlobalInvocationID.x;
+  const uint net = gl_LocalInvocationID.x * u_groups + gl_WorkGroupID.x;
   if (net >= uint(ctl.length())) return;
   const int limit = ctl[net].limit;
   if (limit <= 0) return;

@@ -8,6 +8,7 @@
 #include <map>
 #include <memory>
 #include <stdexcept>
+#include <thread>
 
 #include "gl/buffer.h"
 #include "gl/buffer_texture.h"
@@ -227,8 +228,15 @@ class Job {
     p.set_uniform("u_lr", {probe ? 0.0 : cfg_.lr});
     p.set_uniform("u_probe", {probe ? 1.0 : 0.0});
     p.set_uniform("u_sentinel", {double(probe ? kProbeSentinel : g.sentinel)});
-    const std::size_t per_group = g.layout.per_net ? std::size_t(kNetsPerGroup) : 1;
-    gl::dispatch(p, unsigned((ctl.size() + per_group - 1) / per_group));
+    std::size_t groups = ctl.size();
+    if (g.layout.per_net) {
+      // Up to kNetsPerGroup networks a workgroup, but at least one workgroup per renderer thread
+      // (llvmpipe runs one per CPU) while there are networks for them.
+      const std::size_t threads = std::max(1u, std::thread::hardware_concurrency());
+      groups = std::max((ctl.size() + kNetsPerGroup - 1) / kNetsPerGroup, std::min(ctl.size(), threads));
+      p.set_uniform("u_groups", {double(groups)});
+    }
+    gl::dispatch(p, unsigned(groups));
     result.resize(ctl.size());
     g.control->download(result.data(), 0, ctl.size() * kControlWords);
   }

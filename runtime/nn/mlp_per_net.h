@@ -15,11 +15,13 @@
 
 namespace sn::nn {
 
-// Networks up to this many padded parameter vec4s get the per-network kernel (8x8 has 151):
-// LLVM's compile time grows faster than the straight-line code (measured on llvmpipe: 1 s for
-// 4x6, 4 s for 8x8, 14 s for 8x12, 38 s for 12x12; docs/performance.md).
-constexpr std::size_t kPerNetMaxChunks = 160;
-// Invocations (networks) per workgroup: one SIMD vector of llvmpipe.
+// Networks up to this many padded parameter vec4s get the per-network kernel (4x6 has 63, 8x8
+// 151). LLVM's time and memory to compile grow faster than the straight-line code (llvmpipe,
+// cold: 4x6 1 s; 8x8 4 s and 115 MiB more peak memory; 8x12 14 s; 12x12 38 s; see
+// docs/performance.md).
+constexpr std::size_t kPerNetMaxChunks = 128;
+// Invocations (networks) per workgroup: one SIMD vector of llvmpipe. Fewer networks than
+// workgroups x this are dealt out so that every renderer thread gets some.
 constexpr int kNetsPerGroup = 8;
 
 // The phases of one step over the kernel's arrays r_p, r_m, r_v, r_g (parameters, moments and
