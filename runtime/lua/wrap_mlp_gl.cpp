@@ -69,6 +69,13 @@ int w_forward(lua_State* L) {
     if (x.components() % std::size_t(in))
       throw Error("net:forward: the buffer's " + std::to_string(x.components()) + " numbers are not whole rows of " +
                   std::to_string(in) + " inputs");
+    // Checked on the host before any GPU work, as tables and datasets are: a NaN input would
+    // come back as a NaN output with nothing saying where it came from.
+    const std::vector<float> v = x.download_floats();
+    for (std::size_t j = 0; j < v.size(); ++j)
+      if (!std::isfinite(v[j]))
+        throw Error("net:forward: buffer row " + std::to_string(j / std::size_t(in) + 1) + " input " +
+                    std::to_string(j % std::size_t(in) + 1) + " is " + (std::isnan(v[j]) ? "NaN" : "infinite"));
     push(L, nn::gl_forward(*net, x, x.components() / std::size_t(in)), "Buffer");
     return 1;
   }
