@@ -7,47 +7,11 @@
 #define MLP_RELU 3
 #define MLP_LEAKY_RELU 4
 
-// tanh as the [13/6] rational function of runtime/nn/fast_tanh.h (the cpu backend's): no exp,
-// no cancellation near 0, |error| <= 1e-6; NaN stays NaN.
-float mlp_tanh(float x) {
-  const float c = 7.90531110763549805;  // beyond it tanh rounds to +-1 in float
-  x = x > c ? c : x;  // comparisons, not clamp(): they let NaN through
-  x = x < -c ? -c : x;
-  float x2 = x * x;
-  float p = x2 * -2.76076847742355e-16 + 2.00018790482477e-13;
-  p = x2 * p + -8.60467152213735e-11;
-  p = x2 * p + 5.12229709037114e-08;
-  p = x2 * p + 1.48572235717979e-05;
-  p = x2 * p + 6.37261928875436e-04;
-  p = x2 * p + 4.89352455891786e-03;
-  p = x * p;
-  float q = x2 * 1.19825839466702e-06 + 1.18534705686654e-04;
-  q = x2 * q + 2.26843463243900e-03;
-  q = x2 * q + 4.89352518554385e-03;
-  return p / q;
-}
-
-float mlp_activate(int kind, float z) {
-  if (kind == MLP_TANH) return mlp_tanh(z);
-  if (kind == MLP_SIGMOID) return 1.0 / (1.0 + exp(-z));
-  if (kind == MLP_RELU) return z > 0.0 ? z : 0.0;
-  if (kind == MLP_LEAKY_RELU) return z > 0.0 ? z : MLP_SLOPE * z;
-  return z;
-}
-
-// d f / d z at the z that gave a = f(z).
-float mlp_activate_grad(int kind, float a) {
-  if (kind == MLP_TANH) return 1.0 - a * a;
-  if (kind == MLP_SIGMOID) return a * (1.0 - a);
-  if (kind == MLP_RELU) return a > 0.0 ? 1.0 : 0.0;
-  if (kind == MLP_LEAKY_RELU) return a > 0.0 ? 1.0 : MLP_SLOPE;
-  return 1.0;
-}
-
 // The activation of layer `l` (0-based weight layer): the output layer has its own.
 #define MLP_LAYER_ACT(l) ((l) == MLP_LAYERS - 1 ? MLP_OUT_ACT : MLP_ACT)
 
-// The same, four units at a time (comparisons through mix(), so NaN still passes through).
+// tanh as the [13/6] rational function of runtime/nn/fast_tanh.h (the cpu backend's): no exp,
+// no cancellation near 0, |error| <= 1e-6; comparisons through mix() let NaN pass.
 vec4 mlp_tanh(vec4 x) {
   const vec4 c = vec4(7.90531110763549805);
   x = mix(x, c, greaterThan(x, c));
