@@ -15,12 +15,12 @@ local sn = require "shadenet"
 local frames = tonumber(arg[1] or "20")
 local weights = arg[2] or "auto"
 
+-- The 1-minute load average before a job, from the experiment scripts' library.
+package.path = (arg[0]:match("^(.*)/[^/]*$") or ".") .. "/../scripts/?.lua;" .. package.path
+local results = require "lib.results"
 local function loadavg()
-  local f = io.open("/proc/loadavg")
-  if not f then return "?" end
-  local l = f:read("*l")
-  f:close()
-  return l:match("^(%S+)")
+  local l = results.load_average()
+  return l and tostring(l[1]) or "?"
 end
 
 -- A UV sphere of radius 1.

@@ -25,12 +25,12 @@ local function status(field)
   f:close()
   return tonumber(text:match(field .. ":%s*(%d+)")) or 0
 end
+-- The 1-minute load average before a job, from the experiment scripts' library.
+package.path = (arg[0]:match("^(.*)/[^/]*$") or ".") .. "/../scripts/?.lua;" .. package.path
+local results = require "lib.results"
 local function loadavg()
-  local f = io.open("/proc/loadavg")
-  if not f then return "?" end
-  local l = f:read("*l")
-  f:close()
-  return l:match("^(%S+)")
+  local l = results.load_average()
+  return l and tostring(l[1]) or "?"
 end
 
 -- 64k samples of a smooth function (a stand-in for a lighting model), written straight into

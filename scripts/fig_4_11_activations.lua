@@ -87,8 +87,8 @@ E.R:table {
   },
   rows = rows,
   notes = {
-    string.format("Median of %d seeds; %d epochs, Adam(%g, %g, %g), batch %d; default (Xavier) initialisation for every activation.",
-                  seeds, epochs, adam.lr, adam.beta1, adam.beta2, exp.batch),
+    string.format("Median of %d seeds; %s; default (Xavier) initialisation for every activation.",
+                  seeds, exp.recipe(epochs, adam)),
     string.format("Our all-zeros output MSE is %.6f and the constant predictor's %.6f (the thesis' all-zeros MSE on its data: %.5f).",
                   base.zeros, base.constant, thesis.fig_4_11.stall_mse),
     "Dead units, per hidden layer over the training rows: ReLU / leaky ReLU units never positive; tanh units with |a| > 0.99 and sigmoid units below 0.01 or above 0.99 on more than 99% of the rows.",

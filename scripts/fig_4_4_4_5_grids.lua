@@ -61,8 +61,8 @@ E.R:table {
     { key = "test_mesh_mse", header = "image MSE, test mesh (mean of views)", format = "%.4g" },
   },
   rows = rows,
-  notes = { string.format("One seed per network; %d epochs, batch %d, Adam(%g, %g, %g), tanh. Image MSE over covered pixels, RGB.",
-                          epochs, exp.batch, exp.adam.lr, exp.adam.beta1, exp.adam.beta2) },
+  notes = { string.format("One seed per network; %s, tanh. Image MSE over covered pixels, RGB.",
+                          exp.recipe(epochs)) },
 }
 E:finish {
   records = records,

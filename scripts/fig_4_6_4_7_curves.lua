@@ -104,8 +104,8 @@ E.R:table {
   },
   rows = rows,
   notes = {
-    string.format("Per-epoch median of %d seeds; %d epochs, Adam(%g, %g, %g), batch %d, tanh. Constant predictor: %.6f.",
-                  seeds, epochs, adam.lr, adam.beta1, adam.beta2, exp.batch, base.constant),
+    string.format("Per-epoch median of %d seeds; %s, tanh. Constant predictor: %.6f.",
+                  seeds, exp.recipe(epochs, adam), base.constant),
     "final / min > 1: the validation MSE rose again after its minimum (the thesis sees this for wider layers).",
   },
 }

@@ -64,8 +64,8 @@ E.R:table {
   },
   rows = rows,
   notes = {
-    string.format("One seed; %d epochs, batch %d, Adam(%g, %g, %g), tanh. Image MSE over covered pixels, RGB.",
-                  epochs, exp.batch, exp.adam.lr, exp.adam.beta1, exp.adam.beta2),
+    string.format("One seed; %s, tanh. Image MSE over covered pixels, RGB.",
+                  exp.recipe(epochs)),
     string.format("Coverage: no training normal points further up than y = %.3f; %.1f%% of the test mesh's samples do. Those are where the networks extrapolate.",
                   max_train_y, 100 * outside_share),
   },

@@ -117,8 +117,8 @@ E.R:table {
   },
   rows = rows,
   notes = {
-    string.format("Median over %d seeds; %d epochs, batch %d, Adam(%g, %g, %g), tanh; each network trained alone (%s backend).",
-                  seeds, epochs, exp.batch, exp.adam.lr, exp.adam.beta1, exp.adam.beta2, E.backend),
+    string.format("Median over %d seeds; %s, tanh; each network trained alone (%s backend).",
+                  seeds, exp.recipe(epochs), E.backend),
     string.format("Rendering: %d frames drawn at %dx%d (%d covered fragments) in one call, less a one-frame call: drawing only, no read-back; %s.",
                   frames, size[1], size[2], covered, sn.gl_info().renderer),
   },

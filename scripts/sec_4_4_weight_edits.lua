@@ -131,8 +131,8 @@ E.R:table {
   },
   rows = rows,
   notes = {
-    string.format("Fitted network: min val MSE %.6f after %d epochs (batch %d, Adam(%g, %g, %g), tanh).",
-                  rec.result.best_val_mse, epochs, exp.batch, exp.adam.lr, exp.adam.beta1, exp.adam.beta2),
+    string.format("Fitted network: min val MSE %.6f after %s, tanh.",
+                  rec.result.best_val_mse, exp.recipe(epochs)),
     "Chromaticity = rgb / (r + g + b) per pixel; both measures over pixels covered in both renderings.",
   },
 }

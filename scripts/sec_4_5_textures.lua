@@ -95,8 +95,7 @@ E.R:table {
     { key = "detail_kept", header = "detail kept (gradient energy, network / truth)", format = "%.3f" },
   },
   rows = rows,
-  notes = { string.format("Network 8 x 12, one seed, %d epochs, batch %d, Adam(%g, %g, %g), tanh.", epochs, exp.batch,
-                          exp.adam.lr, exp.adam.beta1, exp.adam.beta2) },
+  notes = { string.format("Network 8 x 12, one seed, %s, tanh.", exp.recipe(epochs)) },
 }
 E:finish {
   records = records,

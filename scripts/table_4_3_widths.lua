@@ -59,8 +59,8 @@ E.R:table {
   },
   rows = rows,
   notes = {
-    string.format("Median over %d seeds of each run's minimum validation MSE over %d epochs; batch %d, Adam(%g, %g, %g), tanh.",
-                  seeds, epochs, exp.batch, exp.adam.lr, exp.adam.beta1, exp.adam.beta2),
+    string.format("Median over %d seeds of each run's minimum validation MSE over %s, tanh.",
+                  seeds, exp.recipe(epochs)),
     string.format("Constant predictor on the same validation rows: MSE %.6f; all-zeros output: %.6f.", base.constant, base.zeros),
   },
 }

@@ -65,8 +65,8 @@ E.R:table {
   },
   rows = rows,
   notes = {
-    string.format("Median over %d seeds; %d epochs, batch %d, Adam(%g, %g, %g), tanh. The RGB column evaluates each run's best-epoch weights.",
-                  seeds, epochs, exp.batch, exp.adam.lr, exp.adam.beta1, exp.adam.beta2),
+    string.format("Median over %d seeds; %s, tanh. The RGB column evaluates each run's best-epoch weights.",
+                  seeds, exp.recipe(epochs)),
     string.format("RGB constant predictor on the validation rows: MSE %.6f.", base.constant),
     "The thesis printed RGB only at width 8.",
   },

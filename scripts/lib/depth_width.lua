@@ -72,8 +72,8 @@ function M.run(E, o)
     },
     rows = rows,
     notes = {
-      string.format("Median over %d seeds of each run's minimum validation MSE over %d epochs; batch %d, Adam(%g, %g, %g), tanh.",
-                    seeds, epochs, exp.batch, exp.adam.lr, exp.adam.beta1, exp.adam.beta2),
+      string.format("Median over %d seeds of each run's minimum validation MSE over %s, tanh.",
+                    seeds, exp.recipe(epochs)),
       string.format("Constant predictor (training mean) on the same validation rows: MSE %.6f; all-zeros output: %.6f.",
                     base.constant, base.zeros),
       spearman and string.format("Rank correlation (Spearman) of our cells with the thesis' over the %d cells: %.3f.",

@@ -23,6 +23,12 @@ exp.Experiment = E  -- the methods every experiment object has (scripts may wrap
 exp.adam = { lr = 0.00025, beta1 = 0.8, beta2 = 0.9 }
 exp.batch = 8
 exp.epochs = 20
+-- "20 epochs, batch 8, Adam(0.00025, 0.8, 0.9)": the training recipe the notes print (`adam`
+-- defaults to exp.adam).
+function exp.recipe(epochs, adam)
+  adam = adam or exp.adam
+  return string.format("%d epochs, batch %d, Adam(%g, %g, %g)", epochs, exp.batch, adam.lr, adam.beta1, adam.beta2)
+end
 
 -- ---- start ----------------------------------------------------------------------------------
 
