@@ -1,5 +1,5 @@
 // sn.live_compose{...}: the live view's error heatmap and side-by-side panel on the GPU
-// (runtime/live/compose.h), and sn.live_upload(image) for views rendered to Images. The Lua
+// (runtime/gl/compose.h), and sn.live_upload(image) for views rendered to Images. The Lua
 // side (shadenet.live.lua) calls them for sn.live.render.
 #include <epoxy/gl.h>
 
@@ -8,7 +8,7 @@
 
 #include "gl/render_target.h"
 #include "io/image.h"
-#include "live/compose.h"
+#include "gl/compose.h"
 #include "lua/binding.h"
 #include "lua/module.h"
 
@@ -29,21 +29,21 @@ int w_compose(lua_State* L) {
   };
   gl::RenderTarget& network = target("network");
   gl::RenderTarget& truth = target("truth");
-  auto layout = live::Layout(o.choice("layout", {"error", "side"}, 0));
+  auto layout = gl::Layout(o.choice("layout", {"error", "side"}, 0));
   double scale = o.number("scale", 0.25);
   auto map = io::Colormap(o.choice("colormap", {"inferno", "viridis", "gray"}, 0));
-  auto [w, h] = live::composed_size(layout, network.width(), network.height());
+  auto [w, h] = gl::composed_size(layout, network.width(), network.height());
   int into = o.push("into");
   if (!lua_isnil(L, into)) {
     auto& out = check<gl::RenderTarget>(L, into, "Target");
     if (out.width() == w && out.height() == h) {
-      live::compose(layout, network, truth, scale, map, out);
+      gl::compose(layout, network, truth, scale, map, out);
       lua_pushvalue(L, into);
       return 1;
     }
   }
   auto out = std::make_shared<gl::RenderTarget>(w, h);
-  live::compose(layout, network, truth, scale, map, *out);
+  gl::compose(layout, network, truth, scale, map, *out);
   push(L, std::move(out), "Target");
   return 1;
 }

@@ -8,7 +8,7 @@
 #include "io/figure.h"
 #include "io/image.h"
 
-namespace sn::live {
+namespace sn::gl {
 
 // One heatmap pixel: e = mean over R, G, B of |network - truth|, u = clamp(e / scale, 0, 1),
 // coloured by io::colormap(map, u) as the figures' heatmaps are. A pixel neither image covers
@@ -32,4 +32,4 @@ void compose(Layout layout, const gl::RenderTarget& network, const gl::RenderTar
 io::Image compose_reference(Layout layout, const io::Image& network, const io::Image& truth, double scale,
                             io::Colormap map);
 
-}  // namespace sn::live
+}  // namespace sn::gl

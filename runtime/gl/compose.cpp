@@ -1,4 +1,4 @@
-#include "live/compose.h"
+#include "gl/compose.h"
 
 #include <epoxy/gl.h>
 
@@ -9,7 +9,7 @@
 
 #include "gl/program.h"
 
-namespace sn::live {
+namespace sn::gl {
 
 namespace {
 
@@ -86,4 +86,4 @@ io::Image compose_reference(Layout layout, const io::Image& network, const io::I
   return out;
 }
 
-}  // namespace sn::live
+}  // namespace sn::gl
