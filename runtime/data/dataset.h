@@ -6,13 +6,13 @@
 #include <string>
 #include <vector>
 
-#include "nn/mlp_spec.h"
+#include "shading/color.h"
 
-namespace sn::nn {
+namespace sn::data {
 
 struct Dataset {
   int inputs = 0, outputs = 0;
-  ColorSpace color = ColorSpace::rgb;
+  shading::ColorSpace color = shading::ColorSpace::rgb;
   std::vector<float> train_x, train_y;  // train_count() rows
   std::vector<float> val_x, val_y;      // val_count() rows
   std::vector<std::string> input_names;  // e.g. {"normal", "view"}: what a network trained on it reads
@@ -22,4 +22,4 @@ struct Dataset {
   std::size_t val_count() const { return inputs ? val_x.size() / inputs : 0; }
 };
 
-}  // namespace sn::nn
+}  // namespace sn::data

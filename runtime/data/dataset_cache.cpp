@@ -1,4 +1,4 @@
-#include "scene/dataset_cache.h"
+#include "data/dataset_cache.h"
 
 #include <cstdio>
 #include <cstring>
@@ -6,25 +6,13 @@
 #include <utility>
 
 #include "gl/shader_source.h"
+#include "io/hash.h"
+#include "io/text.h"
 #include "scene/gbuffer.h"
 
-namespace sn::scene {
+namespace sn::data {
 
 namespace {
-
-struct Fnv {
-  uint64_t h = 1469598103934665603ull;
-  void bytes(const void* p, std::size_t n) {
-    auto* c = static_cast<const unsigned char*>(p);
-    for (std::size_t i = 0; i < n; ++i) h = (h ^ c[i]) * 1099511628211ull;
-  }
-  template <class T>
-  void vec(const std::vector<T>& v) {
-    uint64_t n = v.size();
-    bytes(&n, sizeof n);
-    if (!v.empty()) bytes(v.data(), v.size() * sizeof(T));
-  }
-};
 
 std::string hex64(uint64_t v) {
   char b[20];
@@ -32,17 +20,11 @@ std::string hex64(uint64_t v) {
   return b;
 }
 
-std::string hexd(double v) {
-  char b[40];
-  snprintf(b, sizeof b, "%a", v);
-  return b;
-}
-
-std::string vec3_text(const glm::dvec3& v) { return hexd(v.x) + "," + hexd(v.y) + "," + hexd(v.z); }
+std::string vec3_text(const glm::dvec3& v) { return io::exact_text(v.x) + "," + io::exact_text(v.y) + "," + io::exact_text(v.z); }
 
 // The shaders every dataset number passes through; an edit to any of them is a new dataset.
 std::string shader_hash() {
-  Fnv f;
+  io::Fnv1a f;
   for (const char* file : {"mesh.vert", "gbuffer.frag", "gather.comp", "eval_lighting.comp"}) {
     std::string text = gl::preprocess(file, {}).text;
     f.bytes(text.data(), text.size());
@@ -51,7 +33,7 @@ std::string shader_hash() {
 }
 
 struct Cache {
-  std::list<std::pair<std::string, std::shared_ptr<nn::Dataset>>> entries;  // most recent first
+  std::list<std::pair<std::string, std::shared_ptr<Dataset>>> entries;  // most recent first
   std::size_t builds = 0, hits = 0;
 };
 Cache& cache() {
@@ -61,8 +43,8 @@ Cache& cache() {
 
 }  // namespace
 
-uint64_t mesh_content_hash(const Mesh& m) {
-  Fnv f;
+uint64_t mesh_content_hash(const scene::Mesh& m) {
+  io::Fnv1a f;
   f.vec(m.positions);
   f.vec(m.normals);
   f.vec(m.uvs);
@@ -77,7 +59,7 @@ uint64_t mesh_content_hash(const Mesh& m) {
   return f.h;
 }
 
-std::string dataset_key(const Scene& s, const DatasetRequest& r) {
+std::string dataset_key(const scene::Scene& s, const DatasetRequest& r) {
   std::string k = "meshes";
   for (const auto& m : s.meshes) k += " " + hex64(mesh_content_hash(*m));
   k += "\nsize " + std::to_string(s.width) + "x" + std::to_string(s.height);
@@ -87,21 +69,21 @@ std::string dataset_key(const Scene& s, const DatasetRequest& r) {
   k += "\nviews";
   for (int v : views) {
     if (v < 0 || v >= int(s.views.size())) continue;  // build_dataset reports it
-    const Camera& c = s.views[v];
+    const scene::Camera& c = s.views[v];
     k += "\n  " + vec3_text(c.eye()) + " " + vec3_text(c.target()) + " " + vec3_text(c.up()) + " " +
-         hexd(c.fov_y()) + " " + hexd(c.aspect_for(s.width, s.height)) + " " + hexd(c.near()) + " " + hexd(c.far());
+         io::exact_text(c.fov_y()) + " " + io::exact_text(c.aspect_for(s.width, s.height)) + " " + io::exact_text(c.near()) + " " + io::exact_text(c.far());
   }
   k += "\nmodel " + r.target.key();
-  k += "\n" + shading::light_key(s.light);
+  k += "\n" + scene::light_key(s.light);
   k += "\ninputs";
   for (const auto& a : r.inputs) k += " " + a;
-  k += "\ncolor " + std::string(nn::color_space_name(r.color));
-  k += "\nsplit " + hexd(r.split) + " seed " + std::to_string(r.seed) + " samples " + std::to_string(r.samples);
+  k += "\ncolor " + std::string(shading::color_space_name(r.color));
+  k += "\nsplit " + io::exact_text(r.split) + " seed " + std::to_string(r.seed) + " samples " + std::to_string(r.samples);
   k += "\nshaders " + shader_hash();
   return k;
 }
 
-std::shared_ptr<nn::Dataset> cached_dataset(const Scene& s, const DatasetRequest& r) {
+std::shared_ptr<Dataset> cached_dataset(const scene::Scene& s, const DatasetRequest& r) {
   std::string key = dataset_key(s, r);
   Cache& c = cache();
   for (auto it = c.entries.begin(); it != c.entries.end(); ++it) {
@@ -112,7 +94,7 @@ std::shared_ptr<nn::Dataset> cached_dataset(const Scene& s, const DatasetRequest
     }
   }
   auto d = build_dataset(s, r);
-  Fnv f;
+  io::Fnv1a f;
   f.bytes(key.data(), key.size());
   d->key = "dataset-" + hex64(f.h);
   ++c.builds;
@@ -123,9 +105,9 @@ std::shared_ptr<nn::Dataset> cached_dataset(const Scene& s, const DatasetRequest
 
 DatasetStats dataset_stats() {
   const Cache& c = cache();
-  return {c.builds, c.hits, gbuffer_renders(), c.entries.size()};
+  return {c.builds, c.hits, scene::gbuffer_renders(), c.entries.size()};
 }
 
 void clear_dataset_cache() { cache().entries.clear(); }
 
-}  // namespace sn::scene
+}  // namespace sn::data

@@ -7,17 +7,19 @@
 #include <memory>
 #include <string>
 
-#include "nn/dataset.h"
+#include "data/build.h"
+#include "data/dataset.h"
+#include "scene/mesh.h"
 #include "scene/scene.h"
 
-namespace sn::scene {
+namespace sn::data {
 
 // The full key text (readable; hashed into Dataset::key).
-std::string dataset_key(const Scene& s, const DatasetRequest& r);
+std::string dataset_key(const scene::Scene& s, const DatasetRequest& r);
 // 64-bit FNV-1a of a mesh's positions, normals, uvs, indices and texture.
-uint64_t mesh_content_hash(const Mesh& m);
+uint64_t mesh_content_hash(const scene::Mesh& m);
 
-std::shared_ptr<nn::Dataset> cached_dataset(const Scene& s, const DatasetRequest& r);
+std::shared_ptr<Dataset> cached_dataset(const scene::Scene& s, const DatasetRequest& r);
 
 struct DatasetStats {
   std::size_t builds = 0;   // datasets rendered and shaded
@@ -31,4 +33,4 @@ void clear_dataset_cache();
 // The cache keeps the most recently used datasets, at most this many.
 constexpr std::size_t kDatasetCacheCapacity = 16;
 
-}  // namespace sn::scene
+}  // namespace sn::data

@@ -1,6 +1,7 @@
 // Shared by the bindings that take lighting models and lights (wrap_lighting.cpp, wrap_scene.cpp).
 #pragma once
 #include "lua/binding.h"
+#include "scene/light.h"
 #include "shading/lighting_params.h"
 
 namespace sn::lua {
@@ -9,8 +10,8 @@ constexpr const char* kLightingType = "Lighting";
 
 // A light from a table { dir = {x,y,z}, color = {r,g,b} } (either may be left out: the default's
 // is used); `what` names it in errors.
-shading::Light check_light(lua_State* L, int idx, const char* what, const shading::Light& def = {});
-void push_light(lua_State* L, const shading::Light& l);
+scene::Light check_light(lua_State* L, int idx, const char* what, const scene::Light& def = {});
+void push_light(lua_State* L, const scene::Light& l);
 void push_vec3(lua_State* L, const glm::dvec3& v);
 
 }  // namespace sn::lua

@@ -7,7 +7,7 @@
 #include "gl/buffer.h"
 #include "lua/binding.h"
 #include "lua/module.h"
-#include "nn/dataset.h"
+#include "data/dataset.h"
 #include "nn/shuffle.h"
 
 namespace sn::lua {
@@ -15,7 +15,7 @@ namespace sn::lua {
 namespace {
 
 constexpr const char* kType = "Dataset";
-using nn::Dataset;
+using data::Dataset;
 
 // Rows from a table of rows ({{...}, ...}) or a float buffer of width-wide rows.
 std::vector<float> read_rows(lua_State* L, int idx, int* width, const char* key) {
@@ -73,7 +73,7 @@ int w_new(lua_State* L) {
   const double split = o.number("split", 0.8);
   if (!(split > 0 && split <= 1)) throw Error("sn.dataset option 'split' must be in (0, 1], got " + std::to_string(split));
   const long long seed = o.integer("seed", 1);
-  d->color = nn::parse_color_space(o.string("color", "rgb"));
+  d->color = shading::parse_color_space(o.string("color", "rgb"));
   int names = o.push("input_names");
   if (!lua_isnil(L, names)) {
     if (!lua_istable(L, names)) throw Error("sn.dataset option 'input_names': table of strings expected");
@@ -121,7 +121,7 @@ int w_outputs(lua_State* L) {
 }
 
 int w_color(lua_State* L) {
-  lua_pushstring(L, nn::color_space_name(self(L).color));
+  lua_pushstring(L, shading::color_space_name(self(L).color));
   return 1;
 }
 
@@ -164,7 +164,7 @@ int w_tostring(lua_State* L) {
   }
   const Dataset& d = *ud->ptr;
   std::string s = "Dataset(" + std::to_string(d.inputs) + " -> " + std::to_string(d.outputs) + " " +
-                  nn::color_space_name(d.color) + ", " + std::to_string(d.train_count()) + " train / " +
+                  shading::color_space_name(d.color) + ", " + std::to_string(d.train_count()) + " train / " +
                   std::to_string(d.val_count()) + " val)";
   lua_pushstring(L, s.c_str());
   return 1;

@@ -17,7 +17,7 @@
 
 namespace sn::lua {
 
-using shading::Light;
+using scene::Light;
 using shading::LightingParams;
 
 void push_vec3(lua_State* L, const glm::dvec3& v) {
@@ -43,7 +43,7 @@ Light check_light(lua_State* L, int idx, const char* what, const Light& def) {
     color = {v[0], v[1], v[2]};
   }
   try {
-    return shading::make_light(dir, color);
+    return scene::make_light(dir, color);
   } catch (const std::exception& e) {
     throw Error(std::string(what) + ": " + e.what());
   }
@@ -211,7 +211,7 @@ int w_evaluate(lua_State* L) {
   int li = o.push("light");
   Light light = check_light(L, li, "model:evaluate option 'light'");
   lua_pop(L, 1);
-  auto color = nn::parse_color_space(o.string("color", "rgb"));
+  auto color = shading::parse_color_space(o.string("color", "rgb"));
   shading::evaluate(p, light, *n, *v, base, *out, std::size_t(count), color, o.boolean("raw", false));
   return 0;
 }
@@ -287,8 +287,8 @@ int w_stress_cases(lua_State* L) {
 
 // ---- sn.color ----
 
-nn::ColorSpace check_space(lua_State* L, int idx) {
-  return nn::parse_color_space(check_string(L, idx, "colour space"));
+shading::ColorSpace check_space(lua_State* L, int idx) {
+  return shading::parse_color_space(check_string(L, idx, "colour space"));
 }
 
 glm::dvec3 check_vec3(lua_State* L, int idx, const char* what) {
@@ -314,7 +314,7 @@ int w_convert(lua_State* L) {
   int j = o.push("output");
   auto& out = check<gl::Buffer>(L, j, "Buffer");
   lua_pop(L, 2);
-  auto space = nn::parse_color_space(o.string("space"));
+  auto space = shading::parse_color_space(o.string("space"));
   long long count = o.integer("count", (long long)in.count());
   if (count < 0) throw Error("sn.color.convert option 'count' must be >= 0");
   shading::convert_colors(in, out, std::size_t(count), space, o.boolean("to_rgb", false));

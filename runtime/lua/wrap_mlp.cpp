@@ -263,7 +263,7 @@ int w_new(lua_State* L) {
   s.activation = nn::parse_activation(o.string("activation", "tanh"));
   s.slope = o.number("slope", 0.01);
   s.output_activation = nn::parse_activation(o.string("output_activation", "linear"));
-  s.color = nn::parse_color_space(o.string("color", "rgb"));
+  s.color = shading::parse_color_space(o.string("color", "rgb"));
   const nn::Init init = nn::parse_init(o.string("init", "xavier"));
   const long long seed = o.integer("seed", 1);
   try {
@@ -354,7 +354,7 @@ int w_spec(lua_State* L) {
   lua_setfield(L, -2, "slope");
   lua_pushstring(L, nn::activation_name(s.output_activation));
   lua_setfield(L, -2, "output_activation");
-  lua_pushstring(L, nn::color_space_name(s.color));
+  lua_pushstring(L, shading::color_space_name(s.color));
   lua_setfield(L, -2, "color");
   return 1;
 }

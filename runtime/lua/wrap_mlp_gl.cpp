@@ -7,7 +7,7 @@
 #include "io/image.h"
 #include "lua/binding.h"
 #include "lua/module.h"
-#include "nn/dataset.h"
+#include "data/dataset.h"
 #include "nn/gl_forward.h"
 #include "nn/mlp_render.h"
 #include "nn/trainer.h"
@@ -80,7 +80,7 @@ int w_forward(lua_State* L) {
     return 1;
   }
   if (test_type(L, 2, "Dataset")) {
-    const nn::Dataset& d = check<nn::Dataset>(L, 2, "Dataset");
+    const data::Dataset& d = check<data::Dataset>(L, 2, "Dataset");
     const bool train = lua_isnoneornil(L, 3)
                            ? false
                            : check_choice(check_string(L, 3, "net:forward set"), {"val", "train"}, "dataset set") == 1;

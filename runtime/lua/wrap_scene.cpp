@@ -5,9 +5,10 @@
 #include <cstdio>
 
 #include "lua/binding.h"
+#include "io/text.h"
 #include "lua/lighting_binding.h"
 #include "lua/module.h"
-#include "scene/dataset_cache.h"
+#include "data/dataset_cache.h"
 #include "scene/gather.h"
 #include "scene/gbuffer.h"
 #include "scene/scene.h"
@@ -27,12 +28,6 @@ struct LuaScene {
 };
 
 LuaScene& self(lua_State* L) { return check<LuaScene>(L, 1, kType); }
-
-std::string number_text(double v) {
-  char b[32];
-  snprintf(b, sizeof b, "%g", v);
-  return b;
-}
 
 std::shared_ptr<scene::Mesh> mesh_at(lua_State* L, int idx, LuaScene& s) {
   if (lua_type(L, idx) == LUA_TSTRING) {
@@ -164,7 +159,7 @@ int w_gbuffer(lua_State* L) {
 int w_dataset(lua_State* L) {
   LuaScene& s = self(L);
   Options o(L, 2, "scene:dataset", {"inputs", "target", "color", "views", "split", "seed", "samples"});
-  scene::DatasetRequest r;
+  data::DatasetRequest r;
   int t = o.push("target");
   if (lua_isnil(L, t)) throw Error("scene:dataset option 'target' is required (a lighting model, e.g. sn.lighting.phong{})");
   r.target = check<shading::LightingParams>(L, t, kLightingType);
@@ -174,14 +169,14 @@ int w_dataset(lua_State* L) {
     r.inputs = string_list(L, a, o.where("inputs"));
     lua_pop(L, 1);
   }
-  r.color = nn::parse_color_space(o.string("color", "rgb"));
+  r.color = shading::parse_color_space(o.string("color", "rgb"));
   if (o.has("views")) {
     int v = o.push("views");
     auto views = check_numbers(L, v, o.where("views").c_str());
     lua_pop(L, 1);
     for (double x : views) {
       if (x < 1 || x > double(s.scene.views.size()) || x != std::floor(x))
-        throw Error(o.where("views") + ": view " + number_text(x) + " is outside the scene's views 1.." +
+        throw Error(o.where("views") + ": view " + io::number_text(x) + " is outside the scene's views 1.." +
                     std::to_string(s.scene.views.size()));
       r.views.push_back(int(x) - 1);
     }
@@ -202,7 +197,7 @@ int w_dataset(lua_State* L) {
     r.samples = std::size_t(n);
   }
   lua_pop(L, 1);
-  push(L, scene::cached_dataset(s.scene, r), "Dataset");
+  push(L, data::cached_dataset(s.scene, r), "Dataset");
   return 1;
 }
 
@@ -330,7 +325,7 @@ int w_gb_tostring(lua_State* L) {
 int w_render_truth(lua_State* L) {
   scene::GBuffer& g = gbuffer(L, 1);
   auto& model = check<shading::LightingParams>(L, 2, kLightingType);
-  shading::Light light = check_light(L, 3, "sn.render_truth light");
+  scene::Light light = check_light(L, 3, "sn.render_truth light");
   push(L, std::make_shared<io::Image>(shading::render_truth(g, model, light)), "Image");
   return 1;
 }
@@ -401,18 +396,18 @@ int w_procedural_mesh(lua_State* L) {
 
 // sn.dataset_stats() -> { builds, hits, gbuffer_renders, cached }
 int w_dataset_stats(lua_State* L) {
-  auto s = scene::dataset_stats();
+  auto s = data::dataset_stats();
   lua_createtable(L, 0, 4);
   lua_pushinteger(L, lua_Integer(s.builds)), lua_setfield(L, -2, "builds");
   lua_pushinteger(L, lua_Integer(s.hits)), lua_setfield(L, -2, "hits");
   lua_pushinteger(L, lua_Integer(s.gbuffer_renders)), lua_setfield(L, -2, "gbuffer_renders");
   lua_pushinteger(L, lua_Integer(s.cached)), lua_setfield(L, -2, "cached");
-  lua_pushinteger(L, lua_Integer(scene::last_covered_pixels())), lua_setfield(L, -2, "last_covered");
+  lua_pushinteger(L, lua_Integer(data::last_covered_pixels())), lua_setfield(L, -2, "last_covered");
   return 1;
 }
 
 int w_dataset_cache_clear(lua_State*) {
-  scene::clear_dataset_cache();
+  data::clear_dataset_cache();
   return 0;
 }
 

@@ -4,7 +4,7 @@
 
 #include "lua/binding.h"
 #include "lua/module.h"
-#include "nn/dataset.h"
+#include "data/dataset.h"
 #include "nn/train.h"
 
 namespace sn::lua {
@@ -82,7 +82,7 @@ int w_train(lua_State* L) {
 
   int data = o.push("data");
   if (lua_isnil(L, data)) throw Error("sn.train option 'data' is required (a Dataset)");
-  auto dataset = check_shared<nn::Dataset>(L, data, "Dataset");
+  auto dataset = check_shared<data::Dataset>(L, data, "Dataset");
   lua_pop(L, 1);
   job.data = dataset.get();
 

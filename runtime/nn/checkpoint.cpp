@@ -11,18 +11,14 @@
 #include <iterator>
 #include <stdexcept>
 
+#include "io/hash.h"
+
 namespace sn::nn {
 
 namespace {
 
 constexpr char kMagic[8] = {'s', 'n', 'm', 'l', 'p', '\r', '\n', '\x1a'};
 constexpr std::size_t kHeader = 24;
-
-uint64_t fnv1a(const std::string& bytes) {
-  uint64_t h = 0xcbf29ce484222325ull;
-  for (unsigned char c : bytes) h = (h ^ c) * 0x100000001b3ull;
-  return h;
-}
 
 // Little-endian writer/reader (this machine is little-endian; memcpy keeps it explicit).
 static_assert(std::endian::native == std::endian::little, "checkpoint I/O assumes a little-endian host");
@@ -78,7 +74,7 @@ void save_checkpoint(const Mlp& net, const std::string& path) {
   p.str(activation_name(net.spec.activation));
   p.put(double(net.spec.slope));
   p.str(activation_name(net.spec.output_activation));
-  p.str(color_space_name(net.spec.color));
+  p.str(shading::color_space_name(net.spec.color));
   p.put(uint32_t(net.input_names.size()));
   for (const auto& n : net.input_names) p.str(n);
   p.put(uint64_t(net.trained_steps));
@@ -95,7 +91,7 @@ void save_checkpoint(const Mlp& net, const std::string& path) {
   file.out.append(kMagic, sizeof kMagic);
   file.put(uint32_t(kCheckpointVersion));
   file.put(uint32_t(p.out.size()));
-  file.put(fnv1a(p.out));
+  file.put(io::fnv1a(p.out));
   file.out += p.out;
 
   namespace fs = std::filesystem;
@@ -143,7 +139,7 @@ Mlp load_checkpoint(const std::string& path) {
                              std::to_string(kHeader + size) + " bytes)");
   if (bytes.size() - kHeader > size) throw std::runtime_error(path + ": checkpoint has trailing bytes");
   const std::string payload = bytes.substr(kHeader);
-  if (fnv1a(payload) != sum) throw std::runtime_error(path + ": checkpoint is corrupt (checksum mismatch)");
+  if (io::fnv1a(payload) != sum) throw std::runtime_error(path + ": checkpoint is corrupt (checksum mismatch)");
 
   Reader r{payload, 0, path};
   Mlp net;
@@ -157,7 +153,7 @@ Mlp load_checkpoint(const std::string& path) {
     s.activation = parse_activation(r.str("spec"));
     s.slope = r.get<double>("spec");
     s.output_activation = parse_activation(r.str("spec"));
-    s.color = parse_color_space(r.str("spec"));
+    s.color = shading::parse_color_space(r.str("spec"));
     s.validate();
   } catch (const std::invalid_argument& e) {
     throw std::runtime_error(path + ": bad network spec in checkpoint: " + e.what());

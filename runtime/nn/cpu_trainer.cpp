@@ -40,7 +40,7 @@ class CpuBackend : public Backend {
     return cpu_model() + ", " + std::to_string(threads_) + " threads, " + cpu_kernel_name() + " kernel";
   }
 
-  std::vector<NetResult> train(const std::vector<const Mlp*>& nets, const Dataset& data, const TrainConfig& cfg,
+  std::vector<NetResult> train(const std::vector<const Mlp*>& nets, const data::Dataset& data, const TrainConfig& cfg,
                                const Progress& progress) override {
     const int count = int(nets.size());
     std::vector<std::unique_ptr<CpuNet>> work(static_cast<std::size_t>(count));

@@ -75,7 +75,7 @@ std::unique_ptr<gl::Buffer> upload_floats(const std::vector<float>& v) {
 
 class Job {
  public:
-  Job(const std::vector<const Mlp*>& nets, const Dataset& data, const TrainConfig& cfg, const GlTrainOptions& opt)
+  Job(const std::vector<const Mlp*>& nets, const data::Dataset& data, const TrainConfig& cfg, const GlTrainOptions& opt)
       : nets_(nets), data_(data), cfg_(cfg), opt_(opt) {
     rows_ = uint32_t(data.train_count());
     steps_ = (long long)(rows_ / uint32_t(cfg.batch));
@@ -369,7 +369,7 @@ class Job {
   }
 
   const std::vector<const Mlp*>& nets_;
-  const Dataset& data_;
+  const data::Dataset& data_;
   const TrainConfig& cfg_;
   const GlTrainOptions& opt_;
   uint32_t rows_ = 0;
@@ -386,7 +386,7 @@ std::string GlTrainer::device() const {
   return i.renderer + " (OpenGL " + i.version + ")";
 }
 
-std::vector<NetResult> GlTrainer::train(const std::vector<const Mlp*>& nets, const Dataset& data,
+std::vector<NetResult> GlTrainer::train(const std::vector<const Mlp*>& nets, const data::Dataset& data,
                                         const TrainConfig& cfg, const Progress& progress) {
   report_.clear();
   if (nets.empty()) return {};

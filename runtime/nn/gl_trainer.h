@@ -48,7 +48,7 @@ class GlTrainer : public Backend {
   explicit GlTrainer(GlTrainOptions options = {}) : options_(options) {}
   std::string name() const override { return "gl"; }
   std::string device() const override;
-  std::vector<NetResult> train(const std::vector<const Mlp*>& nets, const Dataset& data, const TrainConfig& cfg,
+  std::vector<NetResult> train(const std::vector<const Mlp*>& nets, const data::Dataset& data, const TrainConfig& cfg,
                                const Progress& progress) override;
   const std::vector<GlGroupReport>& report() const { return report_; }
 

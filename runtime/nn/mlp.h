@@ -18,7 +18,7 @@ struct Mlp {
   MlpSpec spec;
   std::vector<float> params;  // spec.param_count() floats, layout of MlpSpec
   // G-buffer attributes the input vector is assembled from, in order (e.g. {"normal", "view"});
-  // empty until set by the user or by the first training on a Dataset that names them.
+  // empty until set by the user or by the first training on a data::Dataset that names them.
   std::vector<std::string> input_names;
   // Bumped on every change of `params` (edits, training, restore_best, load): the renderer
   // re-uploads the weights when it differs from what it last uploaded.

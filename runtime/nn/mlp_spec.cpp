@@ -7,7 +7,6 @@ namespace sn::nn {
 
 namespace {
 const char* kActivations[] = {"linear", "tanh", "sigmoid", "relu", "leaky_relu"};
-const char* kColors[] = {"rgb", "hsv", "cie_xyz", "cie_lab"};
 }  // namespace
 
 const char* activation_name(Activation a) { return kActivations[int(a)]; }
@@ -16,15 +15,6 @@ Activation parse_activation(const std::string& name) {
   for (int i = 0; i < 5; ++i)
     if (name == kActivations[i]) return Activation(i);
   throw std::invalid_argument("unknown activation '" + name + "' (valid: linear, tanh, sigmoid, relu, leaky_relu)");
-}
-
-const char* color_space_name(ColorSpace c) { return kColors[int(c)]; }
-
-ColorSpace parse_color_space(const std::string& name) {
-  if (name == "cie") return ColorSpace::cie_lab;
-  for (int i = 0; i < 4; ++i)
-    if (name == kColors[i]) return ColorSpace(i);
-  throw std::invalid_argument("unknown colour space '" + name + "' (valid: rgb, hsv, cie, cie_xyz, cie_lab)");
 }
 
 int MlpSpec::width(int i) const {
@@ -83,7 +73,7 @@ std::string MlpSpec::describe() const {
     s += buf;
   }
   if (output_activation != Activation::linear) s += std::string(", out ") + activation_name(output_activation);
-  if (color != ColorSpace::rgb) s += std::string(", ") + color_space_name(color);
+  if (color != shading::ColorSpace::rgb) s += std::string(", ") + shading::color_space_name(color);
   return s + ")";
 }
 

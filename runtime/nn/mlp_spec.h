@@ -7,15 +7,14 @@
 #include <string>
 #include <vector>
 
+#include "shading/color.h"
+
 namespace sn::nn {
 
 enum class Activation { linear, tanh, sigmoid, relu, leaky_relu };
-enum class ColorSpace { rgb, hsv, cie_xyz, cie_lab };
 
 const char* activation_name(Activation a);
 Activation parse_activation(const std::string& name);  // throws listing the valid names
-const char* color_space_name(ColorSpace c);
-ColorSpace parse_color_space(const std::string& name);  // "rgb", "hsv", "cie" (= cie_lab), "cie_xyz", "cie_lab"
 
 constexpr int kMaxWidth = 64;
 constexpr int kMaxHidden = 32;
@@ -27,7 +26,7 @@ struct MlpSpec {
   Activation activation = Activation::tanh;
   double slope = 0.01;  // leaky_relu's a
   Activation output_activation = Activation::linear;
-  ColorSpace color = ColorSpace::rgb;
+  shading::ColorSpace color = shading::ColorSpace::rgb;
 
   int layers() const { return int(hidden.size()) + 1; }  // weight layers
   int width(int i) const;  // i = 0: inputs, 1..hidden: hidden, layers(): outputs

@@ -137,7 +137,7 @@ double mse(const MlpSpec& spec, const std::vector<double>& p, const float* x, co
   return count ? sum / (double(count) * spec.outputs) : 0.0;
 }
 
-NetResult train(const MlpSpec& spec, const std::vector<float>& params, const Dataset& data, const TrainConfig& cfg) {
+NetResult train(const MlpSpec& spec, const std::vector<float>& params, const data::Dataset& data, const TrainConfig& cfg) {
   NetResult r;
   std::vector<double> p(params.begin(), params.end()), g;
   Adam adam;

@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "nn/dataset.h"
+#include "data/dataset.h"
 #include "nn/mlp_spec.h"
 #include "nn/trainer.h"
 
@@ -39,6 +39,6 @@ double mse(const MlpSpec& spec, const std::vector<double>& params, const float* 
 
 // A whole run as nn/trainer.h defines it (shuffle, minibatches, Adam, curves), in double.
 // For tiny datasets in tests: it is slow.
-NetResult train(const MlpSpec& spec, const std::vector<float>& params, const Dataset& data, const TrainConfig& cfg);
+NetResult train(const MlpSpec& spec, const std::vector<float>& params, const data::Dataset& data, const TrainConfig& cfg);
 
 }  // namespace sn::nn::oracle

@@ -6,18 +6,13 @@
 #include <stdexcept>
 
 #include "gl/context.h"
+#include "io/text.h"
 #include "nn/diagnostics.h"
 #include "nn/parallel.h"
 
 namespace sn::nn {
 
 namespace {
-
-std::string num(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%g", v);
-  return b;
-}
 
 std::string names(const std::vector<std::string>& v) {
   std::string s;
@@ -35,7 +30,7 @@ void check_rows(const std::vector<float>& v, std::size_t width, const char* what
 
 }  // namespace
 
-void check_dataset(const Dataset& d) {
+void check_dataset(const data::Dataset& d) {
   if (d.inputs < 1 || d.outputs < 1)
     throw std::invalid_argument("dataset: needs at least 1 input and 1 output column, has " +
                                 std::to_string(d.inputs) + " and " + std::to_string(d.outputs));
@@ -54,14 +49,14 @@ void validate(const TrainJob& job) {
   auto fail = [](const std::string& m) { throw std::invalid_argument(m); };
   if (job.nets.empty()) fail("no networks to train (nets is empty)");
   if (!job.data) fail("no dataset to train on");
-  const Dataset& d = *job.data;
+  const data::Dataset& d = *job.data;
   const TrainConfig& c = job.config;
   if (c.epochs < 1) fail("epochs must be at least 1, got " + to_string(c.epochs));
   if (c.batch < 1) fail("batch must be at least 1, got " + to_string(c.batch));
-  if (!(c.lr > 0 && std::isfinite(c.lr))) fail("adam lr must be > 0, got " + num(c.lr));
-  if (!(c.beta1 >= 0 && c.beta1 < 1)) fail("adam beta1 must be in [0, 1), got " + num(c.beta1));
-  if (!(c.beta2 >= 0 && c.beta2 < 1)) fail("adam beta2 must be in [0, 1), got " + num(c.beta2));
-  if (!(c.eps > 0 && std::isfinite(c.eps))) fail("adam eps must be > 0, got " + num(c.eps));
+  if (!(c.lr > 0 && std::isfinite(c.lr))) fail("adam lr must be > 0, got " + io::number_text(c.lr));
+  if (!(c.beta1 >= 0 && c.beta1 < 1)) fail("adam beta1 must be in [0, 1), got " + io::number_text(c.beta1));
+  if (!(c.beta2 >= 0 && c.beta2 < 1)) fail("adam beta2 must be in [0, 1), got " + io::number_text(c.beta2));
+  if (!(c.eps > 0 && std::isfinite(c.eps))) fail("adam eps must be > 0, got " + io::number_text(c.eps));
   if (d.train_count() < 1) fail("the dataset has no training rows");
   if (d.val_count() < 1) fail("the dataset has no validation rows (split must leave some, e.g. split = 0.8)");
   if (std::size_t(c.batch) > d.train_count())
@@ -88,8 +83,8 @@ void validate(const TrainJob& job) {
       fail(who + " has " + to_string(net.spec.outputs) + " outputs but the dataset's targets have " +
            to_string(d.outputs));
     if (net.spec.color != d.color)
-      fail(who + " learns in colour space " + color_space_name(net.spec.color) + " but the dataset's targets are " +
-           color_space_name(d.color));
+      fail(who + " learns in colour space " + shading::color_space_name(net.spec.color) + " but the dataset's targets are " +
+           shading::color_space_name(d.color));
     if (!net.input_names.empty() && !d.input_names.empty() && net.input_names != d.input_names)
       fail(who + " reads {" + names(net.input_names) + "} but the dataset provides {" + names(d.input_names) + "}");
   }
@@ -143,7 +138,7 @@ JobResult train(const TrainJob& job) {
     if (job.keep == Keep::best && r.best_epoch > 0) net.params = r.best_params;
     net.touch();
   }
-  const Dataset& d = *job.data;
+  const data::Dataset& d = *job.data;
   parallel_for(int(nets.size()), default_threads(), [&](int i) {
     out.nets[i].dead_units = dead_unit_fractions(*job.nets[i], d.val_x.data(), d.val_count());
   });

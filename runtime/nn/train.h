@@ -16,7 +16,7 @@ enum class Keep { last, best };
 
 struct TrainJob {
   std::vector<Mlp*> nets;
-  const Dataset* data = nullptr;
+  const data::Dataset* data = nullptr;
   TrainConfig config;
   std::string backend = "auto";  // "auto" | a registered backend ("cpu", "gl")
   Keep keep = Keep::last;
@@ -34,7 +34,7 @@ struct JobResult {
 void validate(const TrainJob& job);
 // Every input and target of the dataset is finite and the row counts add up; throws naming the
 // first bad row and column (1-based).
-void check_dataset(const Dataset& data);
+void check_dataset(const data::Dataset& data);
 // "auto" -> "gl" on a hardware GPU when the gl backend is built in, else "cpu".
 std::string resolve_backend(const std::string& requested, std::string* reason);
 JobResult train(const TrainJob& job);

@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-#include "nn/dataset.h"
+#include "data/dataset.h"
 #include "nn/mlp.h"
 
 namespace sn::nn {
@@ -75,7 +75,7 @@ class Backend {
   // Trains copies of nets[i]->params (the nets themselves are left untouched: the job commits
   // final_params). Inputs are already validated by the job (nn/train.h): every spec is valid,
   // shares data.inputs/outputs and colour space, batch <= data.train_count(), data is finite.
-  virtual std::vector<NetResult> train(const std::vector<const Mlp*>& nets, const Dataset& data,
+  virtual std::vector<NetResult> train(const std::vector<const Mlp*>& nets, const data::Dataset& data,
                                        const TrainConfig& cfg, const Progress& progress) = 0;
 };
 

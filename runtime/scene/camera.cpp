@@ -7,6 +7,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "io/text.h"
+
 namespace sn::scene {
 
 namespace {
@@ -14,12 +16,6 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 
 bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-
-std::string str(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%g", v);
-  return b;
-}
 
 }  // namespace
 
@@ -33,18 +29,18 @@ Camera::Camera(glm::dvec3 eye, glm::dvec3 target, glm::dvec3 up, double fov_y, d
   // up nearly parallel to the view direction leaves look-at without a sideways axis
   if (!(glm::length(glm::cross(forward / dist, up)) > 1e-6 * glm::length(up)))
     throw std::invalid_argument("camera: up is parallel to the viewing direction (or zero); pick another up");
-  if (!(fov_y > 0 && fov_y < 180)) throw std::invalid_argument("camera: fov must be in (0, 180) degrees, got " + str(fov_y));
+  if (!(fov_y > 0 && fov_y < 180)) throw std::invalid_argument("camera: fov must be in (0, 180) degrees, got " + io::number_text(fov_y));
   if (!(aspect >= 0 && std::isfinite(aspect)))
-    throw std::invalid_argument("camera: aspect must be positive (or left out to follow the target), got " + str(aspect));
-  if (!(near > 0 && std::isfinite(near))) throw std::invalid_argument("camera: near must be > 0, got " + str(near));
+    throw std::invalid_argument("camera: aspect must be positive (or left out to follow the target), got " + io::number_text(aspect));
+  if (!(near > 0 && std::isfinite(near))) throw std::invalid_argument("camera: near must be > 0, got " + io::number_text(near));
   if (!(far > near && std::isfinite(far)))
-    throw std::invalid_argument("camera: far (" + str(far) + ") must be greater than near (" + str(near) + ")");
+    throw std::invalid_argument("camera: far (" + io::number_text(far) + ") must be greater than near (" + io::number_text(near) + ")");
 }
 
 glm::dmat4 Camera::view() const { return glm::lookAt(eye_, target_, up_); }
 
 glm::dmat4 Camera::projection(double aspect) const {
-  if (!(aspect > 0 && std::isfinite(aspect))) throw std::invalid_argument("camera: aspect must be positive, got " + str(aspect));
+  if (!(aspect > 0 && std::isfinite(aspect))) throw std::invalid_argument("camera: aspect must be positive, got " + io::number_text(aspect));
   return glm::perspective(fov_y_ * kPi / 180.0, aspect, near_, far_);
 }
 
@@ -64,9 +60,9 @@ Ray Camera::ray(double x, double y, int width, int height) const {
 std::vector<Camera> orbit(const OrbitOptions& o) {
   if (o.count < 1 || o.count > 100000) throw std::invalid_argument("orbit: count must be 1..100000, got " + std::to_string(o.count));
   if (!(o.elevation > -90 && o.elevation < 90))
-    throw std::invalid_argument("orbit: elevation must be in (-90, 90) degrees, got " + str(o.elevation));
+    throw std::invalid_argument("orbit: elevation must be in (-90, 90) degrees, got " + io::number_text(o.elevation));
   if (!(o.distance > 0 && std::isfinite(o.distance)))
-    throw std::invalid_argument("orbit: distance must be > 0, got " + str(o.distance));
+    throw std::invalid_argument("orbit: distance must be > 0, got " + io::number_text(o.distance));
   std::vector<Camera> cams;
   double e = o.elevation * kPi / 180.0;
   for (int k = 0; k < o.count; ++k) {

@@ -2,12 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace sn::shading {
 
 using glm::dvec3;
 
 namespace {
+
+const char* kColors[] = {"rgb", "hsv", "cie_xyz", "cie_lab"};
 
 // Linear sRGB (D65) -> XYZ, IEC 61966-2-1 (as Lindbloom tabulates it); glm is column-major.
 const glm::dmat3& rgb_to_xyz_matrix() {
@@ -25,6 +28,15 @@ double lab_f(double t) {
 double lab_f_inverse(double u) { return u > kDelta ? u * u * u : 3.0 * kDelta * kDelta * (u - 4.0 / 29.0); }
 
 }  // namespace
+
+const char* color_space_name(ColorSpace c) { return kColors[int(c)]; }
+
+ColorSpace parse_color_space(const std::string& name) {
+  if (name == "cie") return ColorSpace::cie_lab;
+  for (int i = 0; i < 4; ++i)
+    if (name == kColors[i]) return ColorSpace(i);
+  throw std::invalid_argument("unknown colour space '" + name + "' (valid: rgb, hsv, cie, cie_xyz, cie_lab)");
+}
 
 dvec3 rgb_to_hsv(const dvec3& c) {
   double mx = std::max(c.r, std::max(c.g, c.b));
@@ -84,22 +96,22 @@ dvec3 lab_to_xyz(const dvec3& lab) {
 dvec3 lab_to_unit(const dvec3& lab) { return {lab.x / 100.0, (lab.y + 128.0) / 255.0, (lab.z + 128.0) / 255.0}; }
 dvec3 unit_to_lab(const dvec3& u) { return {u.x * 100.0, u.y * 255.0 - 128.0, u.z * 255.0 - 128.0}; }
 
-dvec3 encode_color(nn::ColorSpace space, const dvec3& rgb) {
+dvec3 encode_color(ColorSpace space, const dvec3& rgb) {
   switch (space) {
-    case nn::ColorSpace::rgb: return rgb;
-    case nn::ColorSpace::hsv: return rgb_to_hsv(rgb);
-    case nn::ColorSpace::cie_xyz: return rgb_to_xyz(rgb);
-    case nn::ColorSpace::cie_lab: return lab_to_unit(xyz_to_lab(rgb_to_xyz(rgb)));
+    case ColorSpace::rgb: return rgb;
+    case ColorSpace::hsv: return rgb_to_hsv(rgb);
+    case ColorSpace::cie_xyz: return rgb_to_xyz(rgb);
+    case ColorSpace::cie_lab: return lab_to_unit(xyz_to_lab(rgb_to_xyz(rgb)));
   }
   return rgb;
 }
 
-dvec3 decode_color(nn::ColorSpace space, const dvec3& c) {
+dvec3 decode_color(ColorSpace space, const dvec3& c) {
   switch (space) {
-    case nn::ColorSpace::rgb: return c;
-    case nn::ColorSpace::hsv: return hsv_to_rgb(c);
-    case nn::ColorSpace::cie_xyz: return xyz_to_rgb(c);
-    case nn::ColorSpace::cie_lab: return xyz_to_rgb(lab_to_xyz(unit_to_lab(c)));
+    case ColorSpace::rgb: return c;
+    case ColorSpace::hsv: return hsv_to_rgb(c);
+    case ColorSpace::cie_xyz: return xyz_to_rgb(c);
+    case ColorSpace::cie_lab: return xyz_to_rgb(lab_to_xyz(unit_to_lab(c)));
   }
   return c;
 }

@@ -7,11 +7,15 @@
 //   Lab  CIE 1976 L*a*b* against the white RGB (1, 1, 1) (= D65); the network-facing encoding
 //        "cie_lab" (alias "cie") scales it to about [0, 1]: (L*/100, (a* + 128)/255, (b* + 128)/255).
 #pragma once
+#include <string>
+
 #include <glm/glm.hpp>
 
-#include "nn/mlp_spec.h"
-
 namespace sn::shading {
+
+enum class ColorSpace { rgb, hsv, cie_xyz, cie_lab };
+const char* color_space_name(ColorSpace c);
+ColorSpace parse_color_space(const std::string& name);  // "rgb", "hsv", "cie" (= cie_lab), "cie_xyz", "cie_lab"
 
 glm::dvec3 rgb_to_hsv(const glm::dvec3& rgb);
 glm::dvec3 hsv_to_rgb(const glm::dvec3& hsv);
@@ -24,7 +28,7 @@ glm::dvec3 unit_to_lab(const glm::dvec3& unit);
 glm::dvec3 d65_white();  // XYZ of RGB (1, 1, 1)
 
 // RGB -> the space a network learns in, and back (what a renderer applies to a network's output).
-glm::dvec3 encode_color(nn::ColorSpace space, const glm::dvec3& rgb);
-glm::dvec3 decode_color(nn::ColorSpace space, const glm::dvec3& c);
+glm::dvec3 encode_color(ColorSpace space, const glm::dvec3& rgb);
+glm::dvec3 decode_color(ColorSpace space, const glm::dvec3& c);
 
 }  // namespace sn::shading

@@ -92,7 +92,7 @@ dvec3 toon3(double s, const dvec3& c_a, const dvec3& c_d, const dvec3& c_s, doub
   return c_s;
 }
 
-dvec3 shade_raw(const LightingParams& p, const Light& light, const dvec3& n_in, const dvec3& v_in, const dvec3& base) {
+dvec3 shade_raw(const LightingParams& p, const scene::Light& light, const dvec3& n_in, const dvec3& v_in, const dvec3& base) {
   dvec3 n = safe_normalize(n_in), v = safe_normalize(v_in), l = light.dir;
   switch (p.model) {
     case Model::phong:
@@ -114,11 +114,11 @@ dvec3 shade_raw(const LightingParams& p, const Light& light, const dvec3& n_in, 
   return dvec3(0.0);
 }
 
-dvec3 shade(const LightingParams& p, const Light& light, const dvec3& n, const dvec3& v, const dvec3& base) {
+dvec3 shade(const LightingParams& p, const scene::Light& light, const dvec3& n, const dvec3& v, const dvec3& base) {
   return glm::clamp(shade_raw(p, light, n, v, base), 0.0, 1.0);
 }
 
-dvec3 upper_bound(const LightingParams& p, const Light& light) {
+dvec3 upper_bound(const LightingParams& p, const scene::Light& light) {
   switch (p.model) {
     case Model::phong:
     case Model::blinn_phong:
@@ -136,7 +136,7 @@ dvec3 upper_bound(const LightingParams& p, const Light& light) {
   return dvec3(0.0);
 }
 
-bool near_discontinuity(const LightingParams& p, const Light& light, const dvec3& n_in, const dvec3& v_in,
+bool near_discontinuity(const LightingParams& p, const scene::Light& light, const dvec3& n_in, const dvec3& v_in,
                         double eps) {
   dvec3 n = safe_normalize(n_in), v = safe_normalize(v_in);
   double nl = glm::dot(n, light.dir), nv = glm::dot(n, v);

@@ -9,6 +9,7 @@
 #pragma once
 #include <glm/glm.hpp>
 
+#include "scene/light.h"
 #include "shading/lighting_params.h"
 
 namespace sn::shading {
@@ -52,15 +53,15 @@ glm::dvec3 toon3(double s_p, const glm::dvec3& c_a, const glm::dvec3& c_d, const
 
 // The model as a whole: n, v as given (normalised here), `base` the texture colour (textured
 // models only). shade() = clamp(shade_raw(), 0, 1).
-glm::dvec3 shade_raw(const LightingParams& p, const Light& light, const glm::dvec3& n, const glm::dvec3& v,
+glm::dvec3 shade_raw(const LightingParams& p, const scene::Light& light, const glm::dvec3& n, const glm::dvec3& v,
                      const glm::dvec3& base = glm::dvec3(1.0));
-glm::dvec3 shade(const LightingParams& p, const Light& light, const glm::dvec3& n, const glm::dvec3& v,
+glm::dvec3 shade(const LightingParams& p, const scene::Light& light, const glm::dvec3& n, const glm::dvec3& v,
                  const glm::dvec3& base = glm::dvec3(1.0));
 // A per-channel bound on shade_raw over every input (base colours in [0, 1]).
-glm::dvec3 upper_bound(const LightingParams& p, const Light& light);
+glm::dvec3 upper_bound(const LightingParams& p, const scene::Light& light);
 // True when (n, v) lies within `eps` of a branch of the model (n.l = 0, n.v = 0, a toon
 // threshold), where float and double may legitimately take different sides.
-bool near_discontinuity(const LightingParams& p, const Light& light, const glm::dvec3& n, const glm::dvec3& v,
+bool near_discontinuity(const LightingParams& p, const scene::Light& light, const glm::dvec3& n, const glm::dvec3& v,
                         double eps);
 
 }  // namespace sn::shading

@@ -56,7 +56,7 @@ std::shared_ptr<gl::Buffer> upload(const std::vector<glm::vec3>& v) {
 
 gl::Defines lighting_defines(const LightingParams& p) { return {{"LIGHTING_MODEL", std::to_string(int(p.model))}}; }
 
-void set_lighting_uniforms(gl::Program& prog, const LightingParams& p, const Light& light) {
+void set_lighting_uniforms(gl::Program& prog, const LightingParams& p, const scene::Light& light) {
   if (!(std::abs(glm::length(light.dir) - 1.0) < 1e-6))  // float-rounded unit vectors pass
     throw std::logic_error("the light direction must be unit length (build lights with make_light)");
   prog.set_uniform("u_light_dir", {light.dir.x, light.dir.y, light.dir.z});
@@ -72,8 +72,8 @@ void set_lighting_uniforms(gl::Program& prog, const LightingParams& p, const Lig
   }
 }
 
-void evaluate(const LightingParams& p, const Light& light, const gl::Buffer& normals, const gl::Buffer& views,
-              const gl::Buffer* base_colors, gl::Buffer& targets, std::size_t count, nn::ColorSpace color, bool raw) {
+void evaluate(const LightingParams& p, const scene::Light& light, const gl::Buffer& normals, const gl::Buffer& views,
+              const gl::Buffer* base_colors, gl::Buffer& targets, std::size_t count, shading::ColorSpace color, bool raw) {
   if (count == 0) return;
   require_size(normals, count, "normals");
   require_size(views, count, "views");
@@ -98,9 +98,9 @@ void evaluate(const LightingParams& p, const Light& light, const gl::Buffer& nor
   dispatch_samples(*prog, count);
 }
 
-std::vector<glm::vec3> evaluate(const LightingParams& p, const Light& light, const std::vector<glm::vec3>& normals,
+std::vector<glm::vec3> evaluate(const LightingParams& p, const scene::Light& light, const std::vector<glm::vec3>& normals,
                                 const std::vector<glm::vec3>& views, const std::vector<glm::vec3>& base_colors,
-                                nn::ColorSpace color, bool raw) {
+                                shading::ColorSpace color, bool raw) {
   if (normals.size() != views.size())
     throw std::invalid_argument("evaluate: " + std::to_string(normals.size()) + " normals but " +
                                 std::to_string(views.size()) + " view directions");
@@ -114,7 +114,7 @@ std::vector<glm::vec3> evaluate(const LightingParams& p, const Light& light, con
   return from_vec4(out, n);
 }
 
-void convert_colors(const gl::Buffer& in, gl::Buffer& out, std::size_t count, nn::ColorSpace space, bool to_rgb) {
+void convert_colors(const gl::Buffer& in, gl::Buffer& out, std::size_t count, shading::ColorSpace space, bool to_rgb) {
   if (count == 0) return;
   require_size(in, count, "colour input");
   require_size(out, count, "colour output");
@@ -127,7 +127,7 @@ void convert_colors(const gl::Buffer& in, gl::Buffer& out, std::size_t count, nn
   dispatch_samples(*prog, count);
 }
 
-std::vector<glm::vec3> convert_colors(const std::vector<glm::vec3>& in, nn::ColorSpace space, bool to_rgb) {
+std::vector<glm::vec3> convert_colors(const std::vector<glm::vec3>& in, shading::ColorSpace space, bool to_rgb) {
   auto ib = upload(in);
   gl::Buffer out(gl::ElemType::vec4, std::max<std::size_t>(in.size(), 1));
   convert_colors(*ib, out, in.size(), space, to_rgb);

@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "io/text.h"
+
 namespace sn::shading {
 
 namespace {
@@ -53,23 +55,11 @@ std::vector<ModelSpec> build_specs() {
   };
 }
 
-std::string number(double v) {
-  char buf[32];
-  snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
-
 std::string values_text(const std::array<double, 4>& v, int n) {
-  if (n == 1) return number(v[0]);
+  if (n == 1) return io::number_text(v[0]);
   std::string s = "{";
-  for (int i = 0; i < n; ++i) s += (i ? ", " : "") + number(v[i]);
+  for (int i = 0; i < n; ++i) s += (i ? ", " : "") + io::number_text(v[i]);
   return s + "}";
-}
-
-std::string hex(double v) {
-  char buf[40];
-  snprintf(buf, sizeof buf, "%a", v);
-  return buf;
 }
 
 }  // namespace
@@ -126,7 +116,7 @@ std::string LightingParams::key() const {
   std::string out = s.name;
   for (size_t i = 0; i < s.params.size(); ++i) {
     out += std::string(" ") + s.params[i].name + "=";
-    for (int c = 0; c < s.params[i].components; ++c) out += (c ? "," : "") + hex(values[i][c]);
+    for (int c = 0; c < s.params[i].components; ++c) out += (c ? "," : "") + io::exact_text(values[i][c]);
   }
   return out;
 }
@@ -159,8 +149,8 @@ LightingParams make_params(Model m, const std::map<std::string, std::vector<doub
     }
     for (int c = 0; c < ps.components; ++c) {
       if (!std::isfinite(val[c]) || val[c] < ps.min || val[c] > ps.max)
-        throw std::invalid_argument(where + " (" + ps.meaning + ") must lie in [" + number(ps.min) + ", " +
-                                    number(ps.max) + "], got " + values_text(val, ps.components));
+        throw std::invalid_argument(where + " (" + ps.meaning + ") must lie in [" + io::number_text(ps.min) + ", " +
+                                    io::number_text(ps.max) + "], got " + values_text(val, ps.components));
     }
     p.values[i] = val;
   }
@@ -171,25 +161,6 @@ LightingParams make_params(Model m, const std::map<std::string, std::vector<doub
                                   values_text(p.values[param_index(s, "thresholds")], 4));
   }
   return p;
-}
-
-Light make_light(const glm::dvec3& dir, const glm::dvec3& color) {
-  double len = glm::length(dir);
-  if (!std::isfinite(len) || len < 1e-12)
-    throw std::invalid_argument("light 'dir' must be a non-zero, finite direction towards the light, got {" +
-                                number(dir.x) + ", " + number(dir.y) + ", " + number(dir.z) + "}");
-  for (int c = 0; c < 3; ++c)
-    if (!std::isfinite(color[c]) || color[c] < 0 || color[c] > kColorMax)
-      throw std::invalid_argument("light 'color' must lie in [0, " + number(kColorMax) + "] per channel, got {" +
-                                  number(color.r) + ", " + number(color.g) + ", " + number(color.b) + "}");
-  return Light{dir / len, color};
-}
-
-std::string light_key(const Light& l) {
-  std::string s = "light";
-  for (int c = 0; c < 3; ++c) s += " " + hex(l.dir[c]);
-  for (int c = 0; c < 3; ++c) s += " " + hex(l.color[c]);
-  return s;
 }
 
 }  // namespace sn::shading

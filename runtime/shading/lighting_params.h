@@ -56,15 +56,4 @@ struct LightingParams {
 LightingParams make_params(Model m, const std::map<std::string, std::vector<double>>& given);
 inline LightingParams default_params(Model m) { return make_params(m, {}); }
 
-// The light every model is evaluated with: a direction towards the light (world space; made
-// unit length here) and a colour. The direction is a parameter of the ground truth, not a
-// network input.
-struct Light {
-  glm::dvec3 dir = glm::normalize(glm::dvec3(0.5, 0.7, 0.6));  // unit: every model relies on it
-  glm::dvec3 color{1.0, 1.0, 1.0};
-};
-// Throws for a zero-length or non-finite direction or a negative / non-finite colour.
-Light make_light(const glm::dvec3& dir, const glm::dvec3& color);
-std::string light_key(const Light& l);
-
 }  // namespace sn::shading

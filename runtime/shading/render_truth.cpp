@@ -16,7 +16,7 @@ std::vector<std::string> model_attributes(const LightingParams& p) {
   return a;
 }
 
-io::Image render_truth(const scene::GBuffer& g, const LightingParams& p, const Light& light) {
+io::Image render_truth(const scene::GBuffer& g, const LightingParams& p, const scene::Light& light) {
   for (const auto& a : model_attributes(p)) {
     bool held = false;
     for (const auto& h : g.attributes) held = held || h == a;

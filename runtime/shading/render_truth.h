@@ -6,6 +6,7 @@
 
 #include "io/image.h"
 #include "scene/gbuffer.h"
+#include "scene/light.h"
 #include "shading/lighting_params.h"
 
 namespace sn::shading {
@@ -15,6 +16,6 @@ std::vector<std::string> model_attributes(const LightingParams& p);
 
 // RGBA image (alpha = coverage, colour clamped to [0, 1], background 0). Throws naming the
 // missing attribute when `g` lacks one the model reads.
-io::Image render_truth(const scene::GBuffer& g, const LightingParams& p, const Light& light);
+io::Image render_truth(const scene::GBuffer& g, const LightingParams& p, const scene::Light& light);
 
 }  // namespace sn::shading

@@ -2,7 +2,6 @@
 
 #include <cmath>
 
-#include "nn/mlp_spec.h"
 #include "shading/color.h"
 #include "shading/lighting.h"
 #include "shading/lighting_gpu.h"
@@ -30,7 +29,7 @@ dvec3 at_cosine(const dvec3& axis, double c, double phi) {
 
 }  // namespace
 
-std::vector<StressSample> adversarial_grid(const Light& light) {
+std::vector<StressSample> adversarial_grid(const scene::Light& light) {
   const dvec3 l = light.dir;
   // Cosines: opposite, below, just below, exactly grazing, just above, grazing-ish, above, aligned.
   const double cosines[] = {-1.0, -0.5, -1e-7, 0.0, 1e-7, 1e-3, 0.5, 0.9999999, 1.0};
@@ -57,7 +56,7 @@ std::vector<StressSample> adversarial_grid(const Light& light) {
   return out;
 }
 
-StressResult stress_test(const LightingParams& p, const Light& light) {
+StressResult stress_test(const LightingParams& p, const scene::Light& light) {
   auto grid = adversarial_grid(light);
   std::vector<glm::vec3> n(grid.size()), v(grid.size()), base(grid.size());
   for (std::size_t i = 0; i < grid.size(); ++i) n[i] = grid[i].n, v[i] = grid[i].v, base[i] = grid[i].base;
@@ -73,7 +72,7 @@ StressResult stress_test(const LightingParams& p, const Light& light) {
       else if (x[ch] > bound[ch] * (1 + 1e-5) + 1e-6) ++c.over;  // float rounding slack
     }
   };
-  auto gpu_raw = evaluate(p, light, n, v, base, nn::ColorSpace::rgb, true);
+  auto gpu_raw = evaluate(p, light, n, v, base, shading::ColorSpace::rgb, true);
   for (std::size_t i = 0; i < grid.size(); ++i) {
     count(r.gpu, dvec3(gpu_raw[i]));
     count(r.twin, shade_raw(p, light, dvec3(n[i]), dvec3(v[i]), dvec3(base[i])));
@@ -81,9 +80,9 @@ StressResult stress_test(const LightingParams& p, const Light& light) {
       if (std::isfinite(gpu_raw[i][ch])) r.max_raw = std::max(r.max_raw, double(gpu_raw[i][ch]));
   }
   const dvec3 white = d65_white();
-  for (auto space : {nn::ColorSpace::rgb, nn::ColorSpace::hsv, nn::ColorSpace::cie_xyz, nn::ColorSpace::cie_lab}) {
+  for (auto space : {shading::ColorSpace::rgb, shading::ColorSpace::hsv, shading::ColorSpace::cie_xyz, shading::ColorSpace::cie_lab}) {
     auto enc = evaluate(p, light, n, v, base, space, false);
-    dvec3 hi = space == nn::ColorSpace::cie_xyz ? white : dvec3(1.0);
+    dvec3 hi = space == shading::ColorSpace::cie_xyz ? white : dvec3(1.0);
     for (const auto& e : enc)
       for (int ch = 0; ch < 3; ++ch) {
         if (!std::isfinite(e[ch])) ++r.encoded_nan;
@@ -93,12 +92,12 @@ StressResult stress_test(const LightingParams& p, const Light& light) {
   return r;
 }
 
-StressResult stress_test(const LightingParams& p, const std::vector<Light>& lights) {
+StressResult stress_test(const LightingParams& p, const std::vector<scene::Light>& lights) {
   StressResult sum;
   auto add = [](StressCounts& a, const StressCounts& b) {
     a.nan += b.nan, a.inf += b.inf, a.negative += b.negative, a.over += b.over;
   };
-  for (const Light& l : lights) {
+  for (const scene::Light& l : lights) {
     StressResult r = stress_test(p, l);
     sum.samples += r.samples;
     add(sum.gpu, r.gpu);
@@ -110,7 +109,7 @@ StressResult stress_test(const LightingParams& p, const std::vector<Light>& ligh
   return sum;
 }
 
-std::vector<Light> stress_lights() { return {make_light({0.5, 0.7, 0.6}, {1, 1, 1}), make_light({0, 1, 0}, {1, 1, 1})}; }
+std::vector<scene::Light> stress_lights() { return {scene::make_light({0.5, 0.7, 0.6}, {1, 1, 1}), scene::make_light({0, 1, 0}, {1, 1, 1})}; }
 
 std::vector<StressCase> stress_cases() {
   using P = std::map<std::string, std::vector<double>>;

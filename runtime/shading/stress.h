@@ -9,6 +9,7 @@
 
 #include <glm/glm.hpp>
 
+#include "scene/light.h"
 #include "shading/lighting_params.h"
 
 namespace sn::shading {
@@ -17,7 +18,7 @@ struct StressSample {
   glm::vec3 n, v, base;
 };
 // The grid, built around the light direction (deterministic; about 30k samples).
-std::vector<StressSample> adversarial_grid(const Light& light);
+std::vector<StressSample> adversarial_grid(const scene::Light& light);
 
 struct StressCounts {
   std::size_t nan = 0, inf = 0;
@@ -36,11 +37,11 @@ struct StressResult {
   std::size_t failures() const { return gpu.total() + twin.total() + encoded_nan + encoded_out_of_range; }
 };
 
-StressResult stress_test(const LightingParams& p, const Light& light);
+StressResult stress_test(const LightingParams& p, const scene::Light& light);
 // Summed over `lights`.
-StressResult stress_test(const LightingParams& p, const std::vector<Light>& lights);
+StressResult stress_test(const LightingParams& p, const std::vector<scene::Light>& lights);
 // An oblique light, and one along +Y, for which n.l = 0 and n.v = 0 are exact in float.
-std::vector<Light> stress_lights();
+std::vector<scene::Light> stress_lights();
 
 // The models the stress table covers: each model at its defaults and at the edges of its
 // domain (roughness 0, 1e-4, 1; exponents 0 and 1e6; weights at their maxima; equal thresholds).

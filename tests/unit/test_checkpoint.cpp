@@ -38,7 +38,7 @@ Mlp sample_net() {
   s.activation = Activation::leaky_relu;
   s.slope = 0.2;
   s.output_activation = Activation::sigmoid;
-  s.color = ColorSpace::hsv;
+  s.color = shading::ColorSpace::hsv;
   Mlp net(s, Init::he, 7);
   net.input_names = {"normal", "view"};
   net.trained_steps = 123456789012ull;
@@ -74,7 +74,7 @@ TEST(Checkpoint, RoundTripKeepsEverything) {
   Mlp back = load_checkpoint(path.string());
   EXPECT_EQ(back.spec.describe(), net.spec.describe());
   EXPECT_TRUE(back.spec.same_shape(net.spec));
-  EXPECT_EQ(back.spec.color, ColorSpace::hsv);
+  EXPECT_EQ(back.spec.color, shading::ColorSpace::hsv);
   EXPECT_EQ(back.params, net.params);
   EXPECT_EQ(back.best_params, net.best_params);
   EXPECT_EQ(back.best_val_mse, net.best_val_mse);

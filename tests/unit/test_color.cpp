@@ -13,7 +13,7 @@
 namespace {
 
 using namespace sn::shading;
-using sn::nn::ColorSpace;
+using sn::shading::ColorSpace;
 using glm::dvec3;
 
 const ColorSpace kSpaces[] = {ColorSpace::rgb, ColorSpace::hsv, ColorSpace::cie_xyz, ColorSpace::cie_lab};
@@ -52,7 +52,7 @@ TEST(Color, EveryEncodingRoundTripsInDouble) {
     for (int i = 0; i < 100000; ++i) {
       dvec3 c(u(g), u(g), u(g));
       dvec3 back = decode_color(s, encode_color(s, c));
-      for (int k = 0; k < 3; ++k) ASSERT_NEAR(back[k], c[k], 1e-12) << sn::nn::color_space_name(s);
+      for (int k = 0; k < 3; ++k) ASSERT_NEAR(back[k], c[k], 1e-12) << sn::shading::color_space_name(s);
     }
 }
 
@@ -72,7 +72,7 @@ TEST(Color, ShaderMatchesTwinBothWaysOn100kColours) {
   for (auto& c : rgb) c = {u(g), u(g), u(g)};
   rgb[0] = {0, 0, 0}, rgb[1] = {1, 1, 1}, rgb[2] = {0.5f, 0.5f, 0.5f}, rgb[3] = {1, 0, 1e-7f};
   for (ColorSpace s : kSpaces) {
-    SCOPED_TRACE(sn::nn::color_space_name(s));
+    SCOPED_TRACE(sn::shading::color_space_name(s));
     auto enc = convert_colors(rgb, s, false);
     std::vector<glm::vec3> twin_enc(n);
     double max_fwd = 0, max_inv = 0, max_trip = 0;
@@ -91,7 +91,7 @@ TEST(Color, ShaderMatchesTwinBothWaysOn100kColours) {
       }
     }
     printf("[ %s ] max |gpu - twin|: encode %.3g, decode %.3g; gpu round trip %.3g\n",
-           sn::nn::color_space_name(s), max_fwd, max_inv, max_trip);
+           sn::shading::color_space_name(s), max_fwd, max_inv, max_trip);
     EXPECT_LE(max_fwd, 1e-5);
     EXPECT_LE(max_inv, 1e-5);
     EXPECT_LE(max_trip, 1e-5);
@@ -104,7 +104,7 @@ TEST(Color, DecodingArbitraryNetworkOutputsNeverGivesNaN) {
   std::vector<glm::vec3> wild = {{-5, 3, 9}, {1e6, -1e6, 0}, {0, 0, 0}, {-0.5, 2, -3}, {1e-30f, 0, 0}};
   for (ColorSpace s : kSpaces) {
     for (const auto& c : convert_colors(wild, s, true))
-      for (int k = 0; k < 3; ++k) EXPECT_TRUE(std::isfinite(c[k])) << sn::nn::color_space_name(s);
+      for (int k = 0; k < 3; ++k) EXPECT_TRUE(std::isfinite(c[k])) << sn::shading::color_space_name(s);
     for (const auto& c : wild)
       for (int k = 0; k < 3; ++k) EXPECT_TRUE(std::isfinite(decode_color(s, dvec3(c))[k]));
   }

@@ -15,6 +15,7 @@
 #include "nn/train.h"
 
 namespace sn::nn {
+using data::Dataset;
 namespace {
 
 // A smooth target of 6 inputs (a stand-in for a lighting model): rows split 80/20.

@@ -7,7 +7,7 @@
 #include <set>
 
 #include "gl/context.h"
-#include "scene/dataset_cache.h"
+#include "data/dataset_cache.h"
 #include "scene/gather.h"
 #include "scene/gbuffer.h"
 #include "scene/procedural.h"
@@ -158,7 +158,7 @@ TEST(TruthImage, EveryCoveredPixelMatchesTheTwin) {
   Fixture f;
   auto g = scene::render_gbuffer({&f.sphere}, f.camera, W, H, {"normal", "view"});
   io::Image n = g.target->read(0), v = g.target->read(1);
-  shading::Light light = shading::make_light({0.5, 0.7, 0.6}, {1, 0.9, 0.8});
+  scene::Light light = scene::make_light({0.5, 0.7, 0.6}, {1, 0.9, 0.8});
   for (auto m : {shading::Model::phong, shading::Model::ggx, shading::Model::toon3}) {
     auto p = shading::default_params(m);
     io::Image img = shading::render_truth(g, p, light);
@@ -187,23 +187,23 @@ scene::Scene sphere_scene() {
   s.meshes.push_back(std::make_shared<scene::Mesh>(scene::sphere(1.0, 64, 32)));
   s.width = 64, s.height = 48;
   s.views = scene::framing_orbit(s.bounds(), 3, 20);
-  s.light = shading::make_light({0.5, 0.7, 0.6}, {1, 1, 1});
+  s.light = scene::make_light({0.5, 0.7, 0.6}, {1, 1, 1});
   return s;
 }
 
 TEST(Dataset, RowsAreTheTwinOfTheirInputsInTheRequestedColourSpace) {
   gl::current();
   auto s = sphere_scene();
-  for (auto color : {nn::ColorSpace::rgb, nn::ColorSpace::hsv, nn::ColorSpace::cie_lab}) {
-    scene::DatasetRequest r;
+  for (auto color : {shading::ColorSpace::rgb, shading::ColorSpace::hsv, shading::ColorSpace::cie_lab}) {
+    data::DatasetRequest r;
     r.target = shading::default_params(shading::Model::ggx);
     r.color = color;
     r.samples = 0;
-    auto d = scene::build_dataset(s, r);
+    auto d = data::build_dataset(s, r);
     ASSERT_EQ(d->inputs, 6);
     ASSERT_EQ(d->input_names, (std::vector<std::string>{"normal", "view"}));
     std::size_t total = d->train_count() + d->val_count();
-    EXPECT_EQ(total, scene::last_covered_pixels());
+    EXPECT_EQ(total, data::last_covered_pixels());
     EXPECT_NEAR(double(d->train_count()) / total, 0.8, 1.0 / total);
     int checked = 0;
     for (int set = 0; set < 2; ++set) {
@@ -216,8 +216,8 @@ TEST(Dataset, RowsAreTheTwinOfTheirInputsInTheRequestedColourSpace) {
         dvec3 t = shading::encode_color(color, shading::shade(r.target, s.light, n, v));
         for (int c = 0; c < 3; ++c) {
           double e = std::abs(y[i * 3 + c] - t[c]);
-          if (color == nn::ColorSpace::hsv && c == 0) e = std::min(e, 1 - e);  // hue wraps
-          ASSERT_LE(e, 1e-5) << nn::color_space_name(color);
+          if (color == shading::ColorSpace::hsv && c == 0) e = std::min(e, 1 - e);  // hue wraps
+          ASSERT_LE(e, 1e-5) << shading::color_space_name(color);
         }
         ++checked;
       }
@@ -229,19 +229,19 @@ TEST(Dataset, RowsAreTheTwinOfTheirInputsInTheRequestedColourSpace) {
 TEST(Dataset, SplitIsDeterministicPerSeedAndSamplesCapTheRows) {
   gl::current();
   auto s = sphere_scene();
-  scene::DatasetRequest r;
+  data::DatasetRequest r;
   r.target = shading::default_params(shading::Model::phong);
   r.inputs = {"position", "uv", "normal"};
   r.samples = 1000;
   r.seed = 5;
-  auto a = scene::build_dataset(s, r), b = scene::build_dataset(s, r);
+  auto a = data::build_dataset(s, r), b = data::build_dataset(s, r);
   EXPECT_EQ(a->inputs, 8);
   EXPECT_EQ(a->train_count(), 800u);
   EXPECT_EQ(a->val_count(), 200u);
   EXPECT_EQ(a->train_x, b->train_x);
   EXPECT_EQ(a->val_y, b->val_y);
   r.seed = 6;
-  auto c = scene::build_dataset(s, r);
+  auto c = data::build_dataset(s, r);
   EXPECT_NE(a->train_x, c->train_x);
   EXPECT_EQ(c->train_count(), 800u);
 }
@@ -250,10 +250,10 @@ TEST(Dataset, ZeroCoveredPixelsIsAnErrorNotAnEmptyDataset) {
   gl::current();
   auto s = sphere_scene();
   s.views = {scene::Camera({0, 0, 5}, {0, 0, 10})};  // looking away from the sphere
-  scene::DatasetRequest r;
+  data::DatasetRequest r;
   r.target = shading::default_params(shading::Model::phong);
   try {
-    scene::build_dataset(s, r);
+    data::build_dataset(s, r);
     FAIL();
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("no covered pixels"), std::string::npos) << e.what();
@@ -262,13 +262,13 @@ TEST(Dataset, ZeroCoveredPixelsIsAnErrorNotAnEmptyDataset) {
 
 TEST(Dataset, CacheKeyCoversMeshContent) {
   auto s = sphere_scene();
-  scene::DatasetRequest r;
+  data::DatasetRequest r;
   r.target = shading::default_params(shading::Model::phong);
-  std::string k = scene::dataset_key(s, r);
+  std::string k = data::dataset_key(s, r);
   auto edited = std::make_shared<scene::Mesh>(*s.meshes[0]);
   edited->positions[10].x += 1e-6f;
   s.meshes[0] = edited;
-  EXPECT_NE(scene::dataset_key(s, r), k);
+  EXPECT_NE(data::dataset_key(s, r), k);
 }
 
 }  // namespace

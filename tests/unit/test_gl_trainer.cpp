@@ -14,6 +14,7 @@
 #include "nn/oracle.h"
 
 using namespace sn::nn;
+using sn::data::Dataset;
 
 namespace {
 

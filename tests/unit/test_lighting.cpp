@@ -10,6 +10,8 @@
 namespace {
 
 using namespace sn::shading;
+using sn::scene::Light;
+using sn::scene::make_light;
 using glm::dvec3;
 
 const Light kLightUp = make_light({0, 1, 0}, {1, 1, 1});
@@ -219,7 +221,7 @@ TEST(LightingParams, ErrorsNameTheModelParameterAndDomain) {
 
 namespace {
 TEST(LightingParams, TheDefaultLightIsUnitLength) {
-  sn::shading::Light l;
+  sn::scene::Light l;
   EXPECT_NEAR(glm::length(l.dir), 1.0, 1e-15);
   EXPECT_NEAR(l.dir.y, 0.7 / std::sqrt(1.1), 1e-15);
 }

@@ -10,6 +10,8 @@
 namespace {
 
 using namespace sn::shading;
+using sn::scene::Light;
+using sn::scene::make_light;
 
 TEST(LightingStress, GridCoversTheAdversarialCases) {
   Light light = stress_lights().at(1);  // along +Y: exact zeros are representable

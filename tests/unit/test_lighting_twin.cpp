@@ -14,6 +14,8 @@
 namespace {
 
 using namespace sn::shading;
+using sn::scene::Light;
+using sn::scene::make_light;
 using glm::dvec3;
 
 struct Rng {
