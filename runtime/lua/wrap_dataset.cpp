@@ -100,6 +100,12 @@ int w_new(lua_State* L) {
   return 1;
 }
 
+// sn.dataset{...}: __call receives the sn.dataset table first.
+int w_call(lua_State* L) {
+  lua_remove(L, 1);
+  return w_new(L);
+}
+
 Dataset& self(lua_State* L) { return check<Dataset>(L, 1, kType); }
 
 // ds:counts() -> training rows, validation rows
@@ -178,7 +184,12 @@ void open_dataset(lua_State* L) {
                                      SN_FN("input_names", w_input_names), SN_FN("row", w_row),
                                      {nullptr, nullptr}};
   define_box_type<Dataset>(L, kType, methods, wrap<w_tostring>);
-  lua_pushcfunction(L, wrap<w_new>);
+  // sn.dataset is a table of dataset functions that is also callable: sn.dataset{...} makes one.
+  lua_newtable(L);
+  lua_createtable(L, 0, 1);
+  lua_pushcfunction(L, wrap<w_call>);
+  lua_setfield(L, -2, "__call");
+  lua_setmetatable(L, -2);
   lua_setfield(L, -2, "dataset");
 }
 
