@@ -11,6 +11,7 @@
 #include <iterator>
 #include <stdexcept>
 
+#include "io/atomic_write.h"
 #include "io/hash.h"
 
 namespace sn::nn {
@@ -94,31 +95,7 @@ void save_checkpoint(const Mlp& net, const std::string& path) {
   file.put(io::fnv1a(p.out));
   file.out += p.out;
 
-  namespace fs = std::filesystem;
-  const fs::path target(path);
-  if (target.has_parent_path()) {
-    std::error_code ec;
-    fs::create_directories(target.parent_path(), ec);
-    if (ec) throw std::runtime_error("cannot write " + path + ": cannot create folder " + target.parent_path().string() + ": " + ec.message());
-  }
-  const std::string tmp = path + ".tmp" + std::to_string(::getpid());
-  {
-    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-    if (!f) throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
-    f.write(file.out.data(), std::streamsize(file.out.size()));
-    f.flush();
-    if (!f) {
-      std::error_code ec;
-      fs::remove(tmp, ec);
-      throw std::runtime_error("cannot write " + path + " (disk full?)");
-    }
-  }
-  std::error_code ec;
-  fs::rename(tmp, target, ec);
-  if (ec) {
-    fs::remove(tmp, ec);
-    throw std::runtime_error("cannot write " + path + ": " + ec.message());
-  }
+  io::write_file_atomic(path, file.out, "checkpoint");
 }
 
 Mlp load_checkpoint(const std::string& path) {

@@ -24,6 +24,8 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "io/atomic_write.h"
+
 namespace sn::scene {
 
 namespace fs = std::filesystem;
@@ -566,23 +568,7 @@ void save_glb(const Mesh& m, const std::string& path) {
     throw std::runtime_error("cannot save mesh to '" + path + "': tinygltf could not serialise it");
   std::string bytes = glb.str();
 
-  fs::path target(path);
-  fs::path parent = target.parent_path();
-  std::error_code ec;
-  if (!parent.empty()) fs::create_directories(parent, ec);
-  std::string tmp = (parent / ("." + target.filename().string() + ".tmp" + std::to_string(getpid()))).string();
-  FILE* f = std::fopen(tmp.c_str(), "wb");
-  if (!f) throw std::runtime_error("cannot save mesh to '" + path + "': " + std::strerror(errno));
-  bool ok = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
-  ok = (std::fclose(f) == 0) && ok;
-  if (ok) {
-    fs::rename(tmp, target, ec);
-    ok = !ec;
-  }
-  if (!ok) {
-    std::remove(tmp.c_str());
-    throw std::runtime_error("cannot save mesh to '" + path + "': write failed" + (ec ? " (" + ec.message() + ")" : ""));
-  }
+  io::write_file_atomic(path, bytes, "mesh");
 }
 
 std::vector<glm::vec3> area_weighted_normals(const std::vector<glm::vec3>& positions,

@@ -1,4 +1,4 @@
--- expect: cannot write .*/net\.snmlp: cannot create folder .*: Not a directory
+-- expect: cannot write checkpoint '.*/net\.snmlp': cannot create folder .*: Not a directory
 local sn = require "shadenet"
 local blocker = os.tmpname()  -- a file, so nothing can be saved below it
 local net = sn.mlp { inputs = 6, hidden = {8} }

@@ -134,7 +134,7 @@ TEST(Checkpoint, FailedSaveLeavesTheOldFile) {
     save_checkpoint(net, blocked.string());
     ADD_FAILURE() << "saved below a file";
   } catch (const std::exception& e) {
-    EXPECT_NE(std::string(e.what()).find("cannot write " + blocked.string() + ": cannot create folder"), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("cannot write checkpoint '" + blocked.string() + "': cannot create folder"), std::string::npos)
         << e.what();
   }
   EXPECT_FALSE(fs::exists(blocked));

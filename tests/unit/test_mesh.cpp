@@ -466,7 +466,7 @@ TEST(Mesh, SaveGlbFailureLeavesNothingBehind) {
   fs::path d = temp_dir() / "blocked";
   fs::create_directories(d / "mesh.glb");  // a directory where the file should go
   std::string e = error_of([&] { save_glb(sphere(1, 8, 4), (d / "mesh.glb").string()); });
-  EXPECT_NE(e.find("cannot save mesh to '" + (d / "mesh.glb").string() + "'"), std::string::npos) << e;
+  EXPECT_NE(e.find("cannot write mesh '" + (d / "mesh.glb").string() + "'"), std::string::npos) << e;
   int entries = 0;
   for (auto& x : fs::directory_iterator(d)) (void)x, ++entries;
   EXPECT_EQ(entries, 1);  // just the directory that was in the way, no temporary file
