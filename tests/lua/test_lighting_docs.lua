@@ -24,7 +24,7 @@ while true do
   printed[count] = out
   pos = e + 1
 end
-assert(count >= 12, "expected at least 12 examples, found " .. count)
+assert(count >= 10, "expected at least 10 examples, found " .. count)
 
 local function has(block, pattern)
   for _, line in ipairs(printed[block]) do
@@ -38,6 +38,5 @@ has(4, "^0%.3\t0%.5\t0%.7")
 has(6, "^37800\t0$")
 has(7, "^53%.24%d*\t80%.09%d*\t67%.20%d*$")
 has(8, "^0%.1666")
-has(12, "^Dataset%(6 %-> 3 rgb, 4000 train / 1000 val%)\t4000\t1000$")
 os.execute("rm -f out/cloth_ggx.png out/duck_normals.exr out/quad.glb")
 print(count .. " examples ran")
