@@ -29,6 +29,14 @@ std::shared_ptr<Dataset> build_dataset(const scene::Scene& s, const DatasetReque
     std::iota(views.begin(), views.end(), 0);
   }
   if (views.empty()) throw std::invalid_argument("the scene has no views to render a dataset from");
+  std::vector<int> poses = r.poses;
+  if (poses.empty()) {
+    poses.resize(s.poses.size());
+    std::iota(poses.begin(), poses.end(), 0);
+  }
+  // Row order keys hold pose and view in 16 bits each.
+  if (s.views.size() > 0xffff || s.poses.size() > 0xffff)
+    throw std::invalid_argument("a dataset renders at most 65535 views and 65535 poses");
 
   // Rasterise what the target reads, then the network inputs it does not.
   std::vector<std::string> attributes = shading::model_attributes(r.target);
@@ -40,13 +48,13 @@ std::shared_ptr<Dataset> build_dataset(const scene::Scene& s, const DatasetReque
   for (const auto& a : r.inputs) in_width += scene::attribute_width(a);
 
   struct Row {
-    uint64_t key;  // view << 32 | pixel
+    uint64_t key;  // pose << 48 | view << 32 | pixel
     std::size_t at;
   };
   std::vector<Row> rows;
   std::vector<float> xs, ys;  // per gathered sample: in_width inputs, 3 targets
-  for (int v : views) {
-    scene::GBuffer g = s.gbuffer(v, attributes);
+  for (int pose : poses) for (int v : views) {
+    scene::GBuffer g = s.gbuffer(v, attributes, pose);
     scene::Samples smp = scene::gather(g);
     if (smp.count == 0) continue;
     gl::Buffer targets(gl::ElemType::vec4, smp.count);
@@ -59,7 +67,7 @@ std::shared_ptr<Dataset> build_dataset(const scene::Scene& s, const DatasetReque
     for (const auto& a : r.inputs) in.push_back(scene::download_vec4(*smp.attributes[index_of(a)], smp.count));
     std::size_t base = ys.size() / 3;
     for (std::size_t i = 0; i < smp.count; ++i) {
-      rows.push_back({(uint64_t(v) << 32) | pixels[i], base + i});
+      rows.push_back({(uint64_t(pose) << 48) | (uint64_t(v) << 32) | pixels[i], base + i});
       for (std::size_t k = 0; k < r.inputs.size(); ++k)
         for (int c = 0; c < scene::attribute_width(r.inputs[k]); ++c) xs.push_back(in[k][i * 4 + c]);
       for (int c = 0; c < 3; ++c) ys.push_back(t[i * 4 + c]);
@@ -68,11 +76,12 @@ std::shared_ptr<Dataset> build_dataset(const scene::Scene& s, const DatasetReque
   g_last_covered = rows.size();
   if (rows.empty())
     throw std::invalid_argument("the dataset has no covered pixels: the mesh is outside every camera view (" +
-                                std::to_string(views.size()) + (views.size() == 1 ? " view" : " views") + " of " +
+                                std::to_string(views.size()) + (views.size() == 1 ? " view" : " views") +
+                                (poses.size() > 1 ? " x " + std::to_string(poses.size()) + " poses" : "") + " of " +
                                 std::to_string(s.width) + "x" +
                                 std::to_string(s.height) + "); frame it with views = sn.orbit{...} or move the cameras");
 
-  // The GPU's slot order is a race; (view, pixel) is not.
+  // The GPU's slot order is a race; (pose, view, pixel) is not.
   std::sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) { return a.key < b.key; });
   SplitMix rng{r.seed};
   std::vector<std::size_t> perm(rows.size());

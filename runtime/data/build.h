@@ -21,13 +21,14 @@ struct DatasetRequest {
   shading::LightingParams target;
   shading::ColorSpace color = shading::ColorSpace::rgb;
   std::vector<int> views;  // 0-based; empty = every view of the scene
+  std::vector<int> poses;  // 0-based; empty = every pose of the scene
   double split = 0.8;      // share of the samples that train; the rest validate
   uint64_t seed = 1;
   std::size_t samples = kThesisSamples;  // at most this many covered pixels (0 = all of them)
 };
 
 // Renders, gathers, shades and splits (no cache: see dataset_cache.h). Rows are ordered by
-// (view, pixel) before a seeded permutation picks the samples and the split, so the result
+// (pose, view, pixel) before a seeded permutation picks the samples and the split, so the result
 // depends on the seed only, not on the GPU's scheduling. Throws for bad inputs, a split outside
 // (0, 1), or views that cover no pixel at all.
 std::shared_ptr<Dataset> build_dataset(const scene::Scene& s, const DatasetRequest& r);

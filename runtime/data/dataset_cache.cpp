@@ -9,6 +9,7 @@
 #include "io/hash.h"
 #include "io/text.h"
 #include "scene/gbuffer.h"
+#include "scene/transform.h"
 
 namespace sn::data {
 
@@ -61,7 +62,13 @@ uint64_t mesh_content_hash(const scene::Mesh& m) {
 
 std::string dataset_key(const scene::Scene& s, const DatasetRequest& r) {
   std::string k = "meshes";
-  for (const auto& m : s.meshes) k += " " + hex64(mesh_content_hash(*m));
+  for (const auto& m : s.meshes) k += " " + hex64(mesh_content_hash(*m.mesh)) + " " + scene::transform_key(m.transform);
+  k += "\nposes";
+  std::vector<int> poses = r.poses;
+  if (poses.empty())
+    for (int i = 0; i < int(s.poses.size()); ++i) poses.push_back(i);
+  for (int p : poses)
+    if (p >= 0 && p < int(s.poses.size())) k += "\n  " + scene::transform_key(s.poses[size_t(p)]);
   k += "\nsize " + std::to_string(s.width) + "x" + std::to_string(s.height);
   std::vector<int> views = r.views;
   if (views.empty())

@@ -10,13 +10,13 @@ local function type_name(x)
   return (type(mt) == "table" and mt.__name) or type(x)
 end
 
--- scene:render(model_or_net [, { view = 1, camera = Camera, light = {dir, color}, size = {w, h} }])
+-- scene:render(model_or_net [, { view = 1, pose = 1, camera = Camera, light = {dir, color}, size = {w, h} }])
 --   -> Image (RGBA float, alpha = coverage)
 --   a "Lighting" model: the ground truth over the view's G-buffer (sn.render_truth);
 --   an "Mlp": the network's own fragment pass over the attributes it reads (net:render).
 -- `camera` replaces the scene's view (live mode's orbit), `light` the scene's light for the
 -- ground truth (a network shows what it learned), `size` the scene's image size.
-local RENDER_KEYS = { view = true, camera = true, light = true, size = true }
+local RENDER_KEYS = { view = true, pose = true, camera = true, light = true, size = true }
 function Scene.render(scene, what, options)
   options = options or {}
   if type(options) ~= "table" then
@@ -24,12 +24,12 @@ function Scene.render(scene, what, options)
   end
   for k in pairs(options) do
     if not RENDER_KEYS[k] then
-      error("scene:render: unknown option '" .. tostring(k) .. "' (valid: camera, light, size, view)", 2)
+      error("scene:render: unknown option '" .. tostring(k) .. "' (valid: camera, light, pose, size, view)", 2)
     end
   end
   if options.view ~= nil and options.camera ~= nil then error("scene:render: give 'view' or 'camera', not both", 2) end
   local where = { view = options.camera == nil and (options.view or 1) or options.view, camera = options.camera,
-                  size = options.size }
+                  size = options.size, pose = options.pose }
   local kind = type_name(what)
   if kind == "Lighting" then
     where.attributes = what:attributes()

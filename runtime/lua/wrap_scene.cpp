@@ -4,14 +4,15 @@
 #include <cmath>
 #include <cstdio>
 
-#include "lua/binding.h"
+#include "data/dataset_cache.h"
 #include "io/text.h"
+#include "lua/binding.h"
 #include "lua/lighting_binding.h"
 #include "lua/module.h"
-#include "data/dataset_cache.h"
 #include "scene/gather.h"
 #include "scene/gbuffer.h"
 #include "scene/scene.h"
+#include "scene/transform.h"
 #include "shading/render_truth.h"
 
 namespace sn::lua {
@@ -59,46 +60,168 @@ std::vector<std::string> string_list(lua_State* L, int idx, const std::string& w
   return v;
 }
 
-// views = { Camera, ... } or { count = 8, elevation = 20, distance = ..., fov = 45 } (framing the meshes)
-std::vector<scene::Camera> read_views(lua_State* L, int idx, const scene::Bounds& b) {
-  if (lua_isnil(L, idx)) return scene::framing_orbit(b);
-  if (!lua_istable(L, idx)) throw Error("sn.scene option 'views': list of cameras or orbit options expected");
-  if (lua_objlen(L, idx) > 0) {
-    std::vector<scene::Camera> cams;
-    for (int i = 1; i <= int(lua_objlen(L, idx)); ++i) {
-      lua_rawgeti(L, idx, i);
-      if (!test_type(L, -1, "Camera"))
-        throw Error("sn.scene option 'views' element " + std::to_string(i) + ": Camera expected, got " +
-                    type_name_at(L, -1));
-      cams.push_back(check<scene::Camera>(L, -1, "Camera"));
-      lua_pop(L, 1);
-    }
-    return cams;
-  }
-  Options o(L, idx, "sn.scene option 'views'", {"count", "elevation", "distance", "fov"});
+// One ring of framing cameras: { count = 8, elevation = 20, distance = ..., fov = 45 }.
+std::vector<scene::Camera> read_ring(lua_State* L, int idx, const std::string& what, const scene::Bounds& b) {
+  Options o(L, idx, what.c_str(), {"count", "elevation", "distance", "fov"});
+  const long long count = o.integer("count", 8);
+  if (count < 1 || count > 4096)
+    throw Error(o.where("count") + ": a view ring needs 1..4096 cameras, got " + std::to_string(count));
   std::optional<double> distance;
   if (o.has("distance")) distance = o.number("distance");
-  return scene::framing_orbit(b, int(o.integer("count", 8)), o.number("elevation", 20), o.number("fov", 45), distance);
+  return scene::framing_orbit(b, int(count), o.number("elevation", 20), o.number("fov", 45), distance);
 }
 
-// sn.scene{ mesh = path | Mesh | {...}, size = {w, h}, views = ..., light = {dir, color} }
-int w_new(lua_State* L) {
-  Options o(L, 1, "sn.scene", {"mesh", "size", "views", "light"});
-  auto s = std::make_shared<LuaScene>();
-  int mi = o.push("mesh");
-  if (lua_isnil(L, mi)) throw Error("sn.scene option 'mesh' is required (a path, a Mesh, or a list of them)");
-  if (lua_istable(L, mi)) {
-    int n = int(lua_objlen(L, mi));
-    if (n == 0) throw Error("sn.scene option 'mesh': the list is empty");
-    for (int i = 1; i <= n; ++i) {
-      lua_rawgeti(L, mi, i);
-      s->scene.meshes.push_back(mesh_at(L, lua_gettop(L), *s));
+// views = { count = 8, elevation = 20, ... } (one ring framing the meshes in every pose), or a
+// list whose elements are Cameras or rings: { {count = 8, elevation = -30}, {count = 8, elevation = 70} }
+std::vector<scene::Camera> read_views(lua_State* L, int idx, const scene::Bounds& b) {
+  if (lua_isnil(L, idx)) return scene::framing_orbit(b);
+  if (!lua_istable(L, idx)) throw Error("sn.scene option 'views': a list of cameras and view rings, or one ring expected");
+  const int n = int(lua_objlen(L, idx));
+  if (n == 0) return read_ring(L, idx, "sn.scene option 'views'", b);
+  std::vector<scene::Camera> cams;
+  for (int i = 1; i <= n; ++i) {
+    lua_rawgeti(L, idx, i);
+    const std::string what = "sn.scene option 'views' element " + std::to_string(i);
+    if (test_type(L, -1, "Camera")) {
+      cams.push_back(check<scene::Camera>(L, -1, "Camera"));
+    } else if (lua_istable(L, -1)) {
+      for (auto& c : read_ring(L, lua_gettop(L), what + " (a view ring)", b)) cams.push_back(c);
+    } else {
+      throw Error(what + ": a Camera or a view ring { count = 8, elevation = 20 } expected, got " + type_name_at(L, -1));
+    }
+    lua_pop(L, 1);
+  }
+  return cams;
+}
+
+glm::dvec3 vec3_option(const Options& o, const char* key) {
+  auto v = o.numbers(key, 3);
+  return {v[0], v[1], v[2]};
+}
+
+// A transform: 4 rows of 4 numbers, 16 numbers row by row, or terms
+// { rotate = {degrees, x, y, z}, scale = s | {sx, sy, sz}, translate = {x, y, z}, about = {x, y, z} }.
+glm::dmat4 read_transform(lua_State* L, int idx, const std::string& what, const glm::dvec3& default_about) {
+  const std::string expected = ": a 4x4 transform (4 rows of 4 numbers, or 16 numbers row by row) or "
+                               "{ rotate = {degrees, x, y, z}, scale = ..., translate = {x, y, z}, about = {x, y, z} } expected";
+  if (!lua_istable(L, idx)) throw Error(what + expected + ", got " + type_name_at(L, idx));
+  const int n = int(lua_objlen(L, idx));
+  if (n == 0) {
+    Options o(L, idx, what.c_str(), {"rotate", "scale", "translate", "about"});
+    scene::TransformTerms t;
+    if (o.has("rotate")) {
+      auto r = o.numbers("rotate", 4);
+      t.degrees = r[0], t.axis = {r[1], r[2], r[3]};
+    }
+    if (o.has("scale")) {
+      int si = o.push("scale");
+      if (lua_type(L, si) == LUA_TNUMBER) {
+        const double k = lua_tonumber(L, si);
+        t.scale = {k, k, k};
+      } else {
+        t.scale = vec3_option(o, "scale");
+      }
+      lua_pop(L, 1);
+    }
+    if (o.has("translate")) t.translate = vec3_option(o, "translate");
+    if (o.has("about")) t.about = vec3_option(o, "about");
+    try {
+      return scene::make_transform(t, default_about, what);
+    } catch (const std::invalid_argument& e) {
+      throw Error(e.what());
+    }
+  }
+  std::vector<double> v;
+  if (n == 16) {
+    v = check_numbers(L, idx, what.c_str(), 16);
+  } else if (n == 4) {
+    for (int r = 1; r <= 4; ++r) {
+      lua_rawgeti(L, idx, r);
+      if (!lua_istable(L, -1)) throw Error(what + expected + " (row " + std::to_string(r) + " is " + type_name_at(L, -1) + ")");
+      auto row = check_numbers(L, -1, (what + " row " + std::to_string(r)).c_str(), 4);
+      v.insert(v.end(), row.begin(), row.end());
       lua_pop(L, 1);
     }
   } else {
-    s->scene.meshes.push_back(mesh_at(L, mi, *s));
+    throw Error(what + expected + " (it has " + std::to_string(n) + " elements)");
   }
-  lua_pop(L, 1);
+  glm::dmat4 m;
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) m[c][r] = v[size_t(r * 4 + c)];  // glm is column-major
+  try {
+    scene::check_transform(m, what);
+  } catch (const std::invalid_argument& e) {
+    throw Error(e.what());
+  }
+  return m;
+}
+
+// meshes = { "a.glb", Mesh, { mesh = "b.glb", transform = ... }, ... }
+void read_meshes(lua_State* L, int idx, LuaScene& s) {
+  const int n = lua_istable(L, idx) ? int(lua_objlen(L, idx)) : 0;
+  if (n == 0) throw Error("sn.scene option 'meshes': a non-empty list of meshes or { mesh = ..., transform = ... } expected");
+  for (int i = 1; i <= n; ++i) {
+    lua_rawgeti(L, idx, i);
+    const int e = lua_gettop(L);
+    const std::string what = "sn.scene option 'meshes' element " + std::to_string(i);
+    if (lua_istable(L, e)) {
+      Options o(L, e, what.c_str(), {"mesh", "transform"});
+      int m = o.push("mesh");
+      if (lua_isnil(L, m)) throw Error(what + ": 'mesh' is required (a path or a Mesh)");
+      scene::PlacedMesh placed{mesh_at(L, m, s)};
+      lua_pop(L, 1);
+      if (o.has("transform")) {
+        int t = o.push("transform");
+        placed.transform = read_transform(L, t, what + " transform", placed.mesh->bounds.center());
+        lua_pop(L, 1);
+      }
+      s.scene.meshes.push_back(std::move(placed));
+    } else {
+      s.scene.meshes.push_back({mesh_at(L, e, s)});
+    }
+    lua_pop(L, 1);
+  }
+}
+
+// sn.scene{ mesh = path | Mesh | {...} or meshes = {...}, poses = {...}, size = {w, h}, views = ...,
+//           light = {dir, color} }
+int w_new(lua_State* L) {
+  Options o(L, 1, "sn.scene", {"mesh", "meshes", "poses", "size", "views", "light"});
+  auto s = std::make_shared<LuaScene>();
+  if (o.has("mesh") && o.has("meshes")) throw Error("sn.scene: give 'mesh' or 'meshes', not both");
+  if (o.has("meshes")) {
+    int mi = o.push("meshes");
+    read_meshes(L, mi, *s);
+    lua_pop(L, 1);
+  } else {
+    int mi = o.push("mesh");
+    if (lua_isnil(L, mi)) throw Error("sn.scene option 'mesh' is required (a path, a Mesh, or a list of them)");
+    if (lua_istable(L, mi)) {
+      int n = int(lua_objlen(L, mi));
+      if (n == 0) throw Error("sn.scene option 'mesh': the list is empty");
+      for (int i = 1; i <= n; ++i) {
+        lua_rawgeti(L, mi, i);
+        s->scene.meshes.push_back({mesh_at(L, lua_gettop(L), *s)});
+        lua_pop(L, 1);
+      }
+    } else {
+      s->scene.meshes.push_back({mesh_at(L, mi, *s)});
+    }
+    lua_pop(L, 1);
+  }
+  if (o.has("poses")) {
+    int pi = o.push("poses");
+    const int n = lua_istable(L, pi) ? int(lua_objlen(L, pi)) : 0;
+    if (n == 0) throw Error("sn.scene option 'poses': a non-empty list of transforms expected");
+    const glm::dvec3 centre = s->scene.placed_bounds().center();
+    s->scene.poses.clear();
+    for (int i = 1; i <= n; ++i) {
+      lua_rawgeti(L, pi, i);
+      s->scene.poses.push_back(read_transform(L, lua_gettop(L), "sn.scene option 'poses' element " + std::to_string(i), centre));
+      lua_pop(L, 1);
+    }
+    lua_pop(L, 1);
+  }
   if (o.has("size")) {
     auto v = o.numbers("size", 2);
     if (v[0] < 1 || v[1] < 1 || v[0] > 16384 || v[1] > 16384 || v[0] != std::floor(v[0]) || v[1] != std::floor(v[1]))
@@ -115,6 +238,14 @@ int w_new(lua_State* L) {
   return 1;
 }
 
+int pose_index(const Options& o, const LuaScene& s) {
+  long long p = o.integer("pose", 1);
+  if (p < 1 || p > (long long)s.scene.poses.size())
+    throw Error(o.where("pose") + ": " + std::to_string(p) + " is outside the scene's poses 1.." +
+                std::to_string(s.scene.poses.size()));
+  return int(p - 1);
+}
+
 int view_index(const Options& o, const LuaScene& s) {
   long long v = o.integer("view", 1);
   if (v < 1 || v > (long long)s.scene.views.size())
@@ -123,13 +254,14 @@ int view_index(const Options& o, const LuaScene& s) {
   return int(v - 1);
 }
 
-// scene:gbuffer{ view = 1, attributes = {"normal", "view"}, camera = Camera (instead of a view:
-//                live mode's orbit), size = {w, h} (default: the scene's) } -> GBuffer
+// scene:gbuffer{ view = 1, pose = 1, attributes = {"normal", "view"}, camera = Camera (instead of a
+//                view: live mode's orbit), size = {w, h} (default: the scene's) } -> GBuffer
 int w_gbuffer(lua_State* L) {
   LuaScene& s = self(L);
-  Options o(L, 2, "scene:gbuffer", {"view", "attributes", "camera", "size"});
+  Options o(L, 2, "scene:gbuffer", {"view", "pose", "attributes", "camera", "size"});
   if (o.has("view") && o.has("camera")) throw Error("scene:gbuffer: give 'view' or 'camera', not both");
   int view = view_index(o, s);
+  int pose = pose_index(o, s);
   std::vector<std::string> attributes = {"normal", "view"};
   if (o.has("attributes")) {
     int a = o.push("attributes");
@@ -149,16 +281,16 @@ int w_gbuffer(lua_State* L) {
     if (!test_type(L, c, "Camera")) throw Error(o.where("camera") + ": Camera expected, got " + type_name_at(L, c));
     camera = &check<scene::Camera>(L, c, "Camera");  // stays on the stack, alive, until we return
   }
-  push(L, std::make_shared<scene::GBuffer>(scene::render_gbuffer(s.scene.mesh_list(), *camera, w, h, attributes)),
+  push(L, std::make_shared<scene::GBuffer>(scene::render_gbuffer(s.scene.draws(pose), *camera, w, h, attributes)),
        kGBufferType);
   return 1;
 }
 
 // scene:dataset{ inputs = {"normal", "view"}, target = model, color = "rgb", views = {1, 2, ...},
-//                split = 0.8, seed = 1, samples = 64149 | "all" } -> Dataset (cached by content)
+//                poses = {1, 2, ...}, split = 0.8, seed = 1, samples = 64149 | "all" } -> Dataset (cached)
 int w_dataset(lua_State* L) {
   LuaScene& s = self(L);
-  Options o(L, 2, "scene:dataset", {"inputs", "target", "color", "views", "split", "seed", "samples"});
+  Options o(L, 2, "scene:dataset", {"inputs", "target", "color", "views", "poses", "split", "seed", "samples"});
   data::DatasetRequest r;
   int t = o.push("target");
   if (lua_isnil(L, t)) throw Error("scene:dataset option 'target' is required (a lighting model, e.g. sn.lighting.phong{})");
@@ -170,17 +302,22 @@ int w_dataset(lua_State* L) {
     lua_pop(L, 1);
   }
   r.color = shading::parse_color_space(o.string("color", "rgb"));
-  if (o.has("views")) {
-    int v = o.push("views");
-    auto views = check_numbers(L, v, o.where("views").c_str());
+  // 1-based indices from Lua -> 0-based, each within 1..count.
+  auto indices = [&](const char* key, std::size_t count, const char* noun) {
+    std::vector<int> out;
+    int v = o.push(key);
+    auto list = check_numbers(L, v, o.where(key).c_str());
     lua_pop(L, 1);
-    for (double x : views) {
-      if (x < 1 || x > double(s.scene.views.size()) || x != std::floor(x))
-        throw Error(o.where("views") + ": view " + io::number_text(x) + " is outside the scene's views 1.." +
-                    std::to_string(s.scene.views.size()));
-      r.views.push_back(int(x) - 1);
+    for (double x : list) {
+      if (x < 1 || x > double(count) || x != std::floor(x))
+        throw Error(o.where(key) + ": " + noun + " " + io::number_text(x) + " is outside the scene's " + noun + "s 1.." +
+                    std::to_string(count));
+      out.push_back(int(x) - 1);
     }
-  }
+    return out;
+  };
+  if (o.has("views")) r.views = indices("views", s.scene.views.size(), "view");
+  if (o.has("poses")) r.poses = indices("poses", s.scene.poses.size(), "pose");
   r.split = o.number("split", 0.8);
   long long seed = o.integer("seed", 1);
   if (seed < 0) throw Error(o.where("seed") + " must be >= 0");
@@ -206,6 +343,25 @@ int w_views(lua_State* L) {
   lua_createtable(L, int(s.scene.views.size()), 0);
   for (std::size_t i = 0; i < s.scene.views.size(); ++i) {
     push(L, std::make_shared<scene::Camera>(s.scene.views[i]), "Camera");
+    lua_rawseti(L, -2, int(i + 1));
+  }
+  return 1;
+}
+
+// scene:poses() -> { {4 rows of 4 numbers}, ... }
+int w_poses(lua_State* L) {
+  LuaScene& s = self(L);
+  lua_createtable(L, int(s.scene.poses.size()), 0);
+  for (std::size_t i = 0; i < s.scene.poses.size(); ++i) {
+    lua_createtable(L, 4, 0);
+    for (int r = 0; r < 4; ++r) {
+      lua_createtable(L, 4, 0);
+      for (int c = 0; c < 4; ++c) {
+        lua_pushnumber(L, s.scene.poses[i][c][r]);
+        lua_rawseti(L, -2, c + 1);
+      }
+      lua_rawseti(L, -2, r + 1);
+    }
     lua_rawseti(L, -2, int(i + 1));
   }
   return 1;
@@ -240,7 +396,7 @@ int w_meshes(lua_State* L) {
   LuaScene& s = self(L);
   lua_createtable(L, int(s.scene.meshes.size()), 0);
   for (std::size_t i = 0; i < s.scene.meshes.size(); ++i) {
-    push(L, s.scene.meshes[i], "Mesh");
+    push(L, s.scene.meshes[i].mesh, "Mesh");
     lua_rawseti(L, -2, int(i + 1));
   }
   return 1;
@@ -264,8 +420,10 @@ int w_tostring(lua_State* L) {
   }
   const auto& s = ud->ptr->scene;
   std::string names;
-  for (const auto& m : s.meshes) names += (names.empty() ? "" : ", ") + m->name;
-  lua_pushfstring(L, "Scene(%s; %d views of %dx%d)", names.c_str(), int(s.views.size()), s.width, s.height);
+  for (const auto& m : s.meshes) names += (names.empty() ? "" : ", ") + m.mesh->name;
+  const std::string poses = s.poses.size() > 1 ? " x " + std::to_string(s.poses.size()) + " poses" : "";
+  lua_pushfstring(L, "Scene(%s; %d views%s of %dx%d)", names.c_str(), int(s.views.size()), poses.c_str(), s.width,
+                  s.height);
   return 1;
 }
 
@@ -415,7 +573,8 @@ int w_dataset_cache_clear(lua_State*) {
 
 void open_scene(lua_State* L) {
   static const luaL_Reg methods[] = {SN_FN("gbuffer", w_gbuffer), SN_FN("dataset", w_dataset),
-                                     SN_FN("views", w_views),     SN_FN("light", w_light),
+                                     SN_FN("views", w_views),     SN_FN("poses", w_poses),
+                                     SN_FN("light", w_light),
                                      SN_FN("set_light", w_set_light), SN_FN("size", w_size),
                                      SN_FN("bounds", w_bounds),   SN_FN("meshes", w_meshes),
                                      SN_FN("notes", w_notes),     {nullptr, nullptr}};

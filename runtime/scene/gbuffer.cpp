@@ -61,11 +61,11 @@ void check_attributes(const std::vector<std::string>& attributes) {
   }
 }
 
-GBuffer render_gbuffer(const std::vector<const Mesh*>& meshes, const Camera& camera, int width, int height,
+GBuffer render_gbuffer(const std::vector<MeshDraw>& draws, const Camera& camera, int width, int height,
                        const std::vector<std::string>& attributes) {
   check_attributes(attributes);
-  if (meshes.empty()) throw std::invalid_argument("a G-buffer needs at least one mesh");
-  for (const Mesh* m : meshes) {
+  if (draws.empty()) throw std::invalid_argument("a G-buffer needs at least one mesh");
+  for (const auto& [m, model] : draws) {
     for (const auto& a : attributes) {
       if (a == "uv" && !m->has_uvs)
         throw std::invalid_argument("attribute 'uv': mesh '" + m->name +
@@ -90,9 +90,9 @@ GBuffer render_gbuffer(const std::vector<const Mesh*>& meshes, const Camera& cam
   g.target->bind();
   g.target->clear({0, 0, 0, 0});
   const double aspect = camera.aspect_for(width, height);
-  for (const Mesh* m : meshes) {
+  for (const auto& [m, model] : draws) {
     GpuMesh& gpu = upload(*m);
-    set_standard_uniforms(*prog, camera, aspect, glm::dmat4(1.0), gpu);
+    set_standard_uniforms(*prog, camera, aspect, model, gpu);
     draw(*prog, gpu, Cull::none);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/glm.hpp>
+
 #include "gl/render_target.h"
 
 namespace sn::scene {
@@ -39,11 +41,16 @@ struct GBuffer {
 // Checks an attribute list: known names, no repeats, 1..6 of them; throws naming the problem.
 void check_attributes(const std::vector<std::string>& attributes);
 
-// Rasterises `meshes` (already in world space) seen by `camera` into a width x height G-buffer
-// holding `attributes`. Back faces get their normal flipped towards the eye (two-sided
+// One mesh drawn with a model matrix (world = model * object).
+struct MeshDraw {
+  const Mesh* mesh;
+  glm::dmat4 model{1.0};
+};
+
+// Rasterises `draws` seen by `camera` into a width x height G-buffer holding `attributes`. Back faces get their normal flipped towards the eye (two-sided
 // surfaces such as cloth). Throws when a mesh lacks what an attribute needs: "uv" without
 // texture coordinates, "base_color" without a base-colour texture.
-GBuffer render_gbuffer(const std::vector<const Mesh*>& meshes, const Camera& camera, int width, int height,
+GBuffer render_gbuffer(const std::vector<MeshDraw>& draws, const Camera& camera, int width, int height,
                        const std::vector<std::string>& attributes);
 
 // How many G-buffer passes ran in this process (the dataset cache test watches it).

@@ -6,24 +6,50 @@
 
 namespace sn::scene {
 
-Bounds Scene::bounds() const {
+namespace {
+
+void grow(Bounds& b, bool& empty, const Mesh& m, const glm::dmat4& to_world) {
+  for (const auto& p : m.positions) {
+    const glm::dvec3 w = glm::dvec3(to_world * glm::dvec4(glm::dvec3(p), 1.0));
+    b.min = empty ? w : glm::min(b.min, w);
+    b.max = empty ? w : glm::max(b.max, w);
+    empty = false;
+  }
+}
+
+}  // namespace
+
+Bounds Scene::placed_bounds() const {
   if (meshes.empty()) throw std::invalid_argument("the scene has no mesh");
-  Bounds b = meshes[0]->bounds;
-  for (const auto& m : meshes) b.min = glm::min(b.min, m->bounds.min), b.max = glm::max(b.max, m->bounds.max);
+  Bounds b;
+  bool empty = true;
+  for (const auto& m : meshes) grow(b, empty, *m.mesh, m.transform);
   return b;
 }
 
-std::vector<const Mesh*> Scene::mesh_list() const {
-  std::vector<const Mesh*> v;
-  for (const auto& m : meshes) v.push_back(m.get());
+Bounds Scene::bounds() const {
+  if (meshes.empty()) throw std::invalid_argument("the scene has no mesh");
+  Bounds b;
+  bool empty = true;
+  for (const auto& pose : poses)
+    for (const auto& m : meshes) grow(b, empty, *m.mesh, pose * m.transform);
+  return b;
+}
+
+std::vector<MeshDraw> Scene::draws(int pose) const {
+  if (pose < 0 || pose >= int(poses.size()))
+    throw std::out_of_range("pose " + std::to_string(pose + 1) + " is outside the scene's poses 1.." +
+                            std::to_string(poses.size()));
+  std::vector<MeshDraw> v;
+  for (const auto& m : meshes) v.push_back({m.mesh.get(), poses[size_t(pose)] * m.transform});
   return v;
 }
 
-GBuffer Scene::gbuffer(int view, const std::vector<std::string>& attributes) const {
+GBuffer Scene::gbuffer(int view, const std::vector<std::string>& attributes, int pose) const {
   if (view < 0 || view >= int(views.size()))
     throw std::out_of_range("view " + std::to_string(view + 1) + " is outside the scene's views 1.." +
                             std::to_string(views.size()));
-  return render_gbuffer(mesh_list(), views[view], width, height, attributes);
+  return render_gbuffer(draws(pose), views[view], width, height, attributes);
 }
 
 std::vector<Camera> framing_orbit(const Bounds& b, int count, double elevation, double fov_y,

@@ -48,7 +48,7 @@ dvec3 px(const io::Image& img, int x, int y) { return {img.at(x, y, 0), img.at(x
 TEST(GBuffer, MatchesTheAnalyticSphere) {
   gl::current();
   Fixture f;
-  auto g = scene::render_gbuffer({&f.sphere}, f.camera, W, H, {"normal", "view", "world_position", "position", "uv"});
+  auto g = scene::render_gbuffer({{&f.sphere}}, f.camera, W, H, {"normal", "view", "world_position", "position", "uv"});
   ASSERT_EQ(g.target->attachments(), 5);
   io::Image normal = g.target->read(0), view = g.target->read(1), world = g.target->read(2), object = g.target->read(3),
             uv = g.target->read(4);
@@ -95,9 +95,9 @@ TEST(GBuffer, MatchesTheAnalyticSphere) {
 TEST(GBuffer, RasterisesOnlyTheRequestedAttributesInOrder) {
   gl::current();
   Fixture f;
-  auto g1 = scene::render_gbuffer({&f.sphere}, f.camera, W, H, {"normal"});
+  auto g1 = scene::render_gbuffer({{&f.sphere}}, f.camera, W, H, {"normal"});
   EXPECT_EQ(g1.target->attachments(), 1);
-  auto g2 = scene::render_gbuffer({&f.sphere}, f.camera, W, H, {"uv", "normal"});
+  auto g2 = scene::render_gbuffer({{&f.sphere}}, f.camera, W, H, {"uv", "normal"});
   ASSERT_EQ(g2.target->attachments(), 2);
   EXPECT_EQ(g2.attachment("normal"), 1);
   io::Image a = g2.target->read(0), b = g1.target->read(0), n = g2.target->read(1);
@@ -109,7 +109,7 @@ TEST(GBuffer, RasterisesOnlyTheRequestedAttributesInOrder) {
 TEST(GBuffer, GatherCompactsExactlyTheCoveredPixels) {
   gl::current();
   Fixture f;
-  auto g = scene::render_gbuffer({&f.sphere}, f.camera, W, H, {"normal", "view"});
+  auto g = scene::render_gbuffer({{&f.sphere}}, f.camera, W, H, {"normal", "view"});
   io::Image n = g.target->read(0), v = g.target->read(1);
   std::size_t covered = 0;
   for (int y = 0; y < H; ++y)
@@ -136,27 +136,27 @@ TEST(GBuffer, MissingAttributesAreClearErrors) {
   ASSERT_NE(shared, nullptr);
   scene::Mesh box = scene::load_mesh(std::string(shared) + "/meshes/Box.gltf");
   try {
-    scene::render_gbuffer({&box}, f.camera, W, H, {"normal", "uv"});
+    scene::render_gbuffer({{&box}}, f.camera, W, H, {"normal", "uv"});
     FAIL() << "uv on a mesh without texture coordinates must throw";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("attribute 'uv': mesh '"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("has no texture coordinates"), std::string::npos) << e.what();
   }
-  EXPECT_THROW(scene::render_gbuffer({&f.sphere}, f.camera, W, H, {"base_color"}), std::invalid_argument);
+  EXPECT_THROW(scene::render_gbuffer({{&f.sphere}}, f.camera, W, H, {"base_color"}), std::invalid_argument);
   try {
-    scene::render_gbuffer({&f.sphere}, f.camera, W, H, {"normals"});
+    scene::render_gbuffer({{&f.sphere}}, f.camera, W, H, {"normals"});
     FAIL();
   } catch (const std::invalid_argument& e) {
     EXPECT_EQ(std::string(e.what()),
               "unknown G-buffer attribute 'normals' (valid: normal, view, position, world_position, uv, base_color)");
   }
-  EXPECT_THROW(scene::render_gbuffer({&f.sphere}, f.camera, W, H, {"view", "view"}), std::invalid_argument);
+  EXPECT_THROW(scene::render_gbuffer({{&f.sphere}}, f.camera, W, H, {"view", "view"}), std::invalid_argument);
 }
 
 TEST(TruthImage, EveryCoveredPixelMatchesTheTwin) {
   gl::current();
   Fixture f;
-  auto g = scene::render_gbuffer({&f.sphere}, f.camera, W, H, {"normal", "view"});
+  auto g = scene::render_gbuffer({{&f.sphere}}, f.camera, W, H, {"normal", "view"});
   io::Image n = g.target->read(0), v = g.target->read(1);
   scene::Light light = scene::make_light({0.5, 0.7, 0.6}, {1, 0.9, 0.8});
   for (auto m : {shading::Model::phong, shading::Model::ggx, shading::Model::toon3}) {
@@ -184,7 +184,7 @@ TEST(TruthImage, EveryCoveredPixelMatchesTheTwin) {
 
 scene::Scene sphere_scene() {
   scene::Scene s;
-  s.meshes.push_back(std::make_shared<scene::Mesh>(scene::sphere(1.0, 64, 32)));
+  s.meshes.push_back({std::make_shared<scene::Mesh>(scene::sphere(1.0, 64, 32))});
   s.width = 64, s.height = 48;
   s.views = scene::framing_orbit(s.bounds(), 3, 20);
   s.light = scene::make_light({0.5, 0.7, 0.6}, {1, 1, 1});
@@ -265,9 +265,9 @@ TEST(Dataset, CacheKeyCoversMeshContent) {
   data::DatasetRequest r;
   r.target = shading::default_params(shading::Model::phong);
   std::string k = data::dataset_key(s, r);
-  auto edited = std::make_shared<scene::Mesh>(*s.meshes[0]);
+  auto edited = std::make_shared<scene::Mesh>(*s.meshes[0].mesh);
   edited->positions[10].x += 1e-6f;
-  s.meshes[0] = edited;
+  s.meshes[0].mesh = edited;
   EXPECT_NE(data::dataset_key(s, r), k);
 }
 
