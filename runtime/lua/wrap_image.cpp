@@ -1,5 +1,6 @@
 // sn.image.*: float images in memory, PNG/EXR files through OpenImageIO, differences and MSE.
 #include "io/image.h"
+#include "io/ssim.h"
 #include "lua/binding.h"
 #include "lua/module.h"
 
@@ -73,21 +74,34 @@ int w_diff(lua_State* L) {
   return 1;
 }
 
-// sn.image.mse(a, b [, { channels = 3, mask = img, mask_channel = 4 }])
-int w_mse(lua_State* L) {
-  Image& a = check<Image>(L, 1, kType);
-  Image& b = check<Image>(L, 2, kType);
+// What sn.image.mse and sn.image.ssim compare: { channels = all, mask = img, mask_channel = 4 }.
+struct Compared {
   int channels = -1, mask_channel = 3;
   const Image* mask = nullptr;
-  if (!lua_isnoneornil(L, 3)) {
-    Options o(L, 3, "sn.image.mse", {"channels", "mask", "mask_channel"});
-    channels = int(o.integer("channels", -1));
-    mask_channel = int(o.integer("mask_channel", 4)) - 1;
-    int m = o.push("mask");
-    if (!lua_isnil(L, m)) mask = &check<Image>(L, m, kType);
-    lua_pop(L, 1);
-  }
-  lua_pushnumber(L, io::mse(a, b, channels, mask, mask_channel));
+};
+Compared compared(lua_State* L, const char* what) {
+  Compared c;
+  if (lua_isnoneornil(L, 3)) return c;
+  Options o(L, 3, what, {"channels", "mask", "mask_channel"});
+  c.channels = int(o.integer("channels", -1));
+  c.mask_channel = int(o.integer("mask_channel", 4)) - 1;
+  int m = o.push("mask");
+  if (!lua_isnil(L, m)) c.mask = &check<Image>(L, m, kType);  // stays referenced by the options table
+  lua_pop(L, 1);
+  return c;
+}
+
+// sn.image.mse(a, b [, options]) -> mean squared error
+int w_mse(lua_State* L) {
+  Compared c = compared(L, "sn.image.mse");
+  lua_pushnumber(L, io::mse(check<Image>(L, 1, kType), check<Image>(L, 2, kType), c.channels, c.mask, c.mask_channel));
+  return 1;
+}
+
+// sn.image.ssim(a, b [, options]) -> mean SSIM (io/ssim.h)
+int w_ssim(lua_State* L) {
+  Compared c = compared(L, "sn.image.ssim");
+  lua_pushnumber(L, io::ssim(check<Image>(L, 1, kType), check<Image>(L, 2, kType), c.channels, c.mask, c.mask_channel));
   return 1;
 }
 
@@ -105,7 +119,7 @@ void open_image(lua_State* L) {
                                      SN_FN("set", w_set), {nullptr, nullptr}};
   define_box_type<Image>(L, kType, methods, wrap<w_tostring>);
   static const luaL_Reg fns[] = {SN_FN("load", w_load), SN_FN("new", w_new), SN_FN("diff", w_diff),
-                                 SN_FN("mse", w_mse), {nullptr, nullptr}};
+                                 SN_FN("mse", w_mse), SN_FN("ssim", w_ssim), {nullptr, nullptr}};
   lua_newtable(L);
   luaL_register(L, nullptr, fns);
   lua_setfield(L, -2, "image");

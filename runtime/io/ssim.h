@@ -1,0 +1,20 @@
+// The structural similarity index (SSIM) of Wang, Bovik, Sheikh and Simoncelli (IEEE TIP 2004),
+// computed as their paper and scikit-image's structural_similarity(gaussian_weights=True,
+// sigma=1.5, use_sample_covariance=False, data_range=1) do: local means, variances and the
+// covariance under an 11x11 Gaussian window (sigma 1.5, cut at 3.5 sigma, normalised; the image
+// is mirrored at its edges, "reflect"), C1 = (0.01 L)^2, C2 = (0.03 L)^2 with L = 1, and
+//   SSIM(x, y) = (2 mx my + C1)(2 sxy + C2) / ((mx^2 + my^2 + C1)(sx^2 + sy^2 + C2))
+// averaged over pixels at least 5 pixels from the border, then over channels. 1 means equal.
+#pragma once
+#include "io/image.h"
+
+namespace sn::io {
+
+constexpr int kSsimRadius = 5;  // the window is 2 * 5 + 1 pixels wide
+
+// Channels [0, channels) (all when -1). With `mask`, only pixels whose mask channel is > 0.5
+// are averaged (the window still sees their neighbours). Throws when the images differ in size,
+// are narrower or lower than the window, or no pixel is left to average.
+double ssim(const Image& a, const Image& b, int channels = -1, const Image* mask = nullptr, int mask_channel = 3);
+
+}  // namespace sn::io

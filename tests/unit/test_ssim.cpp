@@ -1,0 +1,64 @@
+// SSIM against scikit-image 0.19.3 (Debian 12's python3-skimage): structural_similarity(a, b,
+// gaussian_weights=True, sigma=1.5, use_sample_covariance=False, data_range=1.0, channel_axis=2)
+// on the float32 images built below (40x28, 3 channels), printed with repr().
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "io/ssim.h"
+
+namespace {
+
+using sn::io::Image;
+
+// kind 0: a plus a cosine ripple; 1: a darkened (0.8 a + 0.05); 2: a shifted, sheared pattern.
+std::pair<Image, Image> pair(int kind) {
+  Image a(40, 28, 3), b(40, 28, 3);
+  for (int y = 0; y < 28; ++y)
+    for (int x = 0; x < 40; ++x)
+      for (int c = 0; c < 3; ++c) {
+        const double va = 0.5 + 0.4 * std::sin(0.3 * x + 0.2 * y + c);
+        const double vb = kind == 0   ? va + 0.1 * std::cos(0.7 * x - 0.4 * y + 2 * c)
+                          : kind == 1 ? 0.8 * va + 0.05
+                                      : 0.5 + 0.4 * std::sin(0.3 * x + 0.25 * y + c + 0.5);
+        a.at(x, y, c) = float(va), b.at(x, y, c) = float(vb);
+      }
+  return {a, b};
+}
+
+TEST(Ssim, MatchesScikitImage) {
+  const double reference[] = {0.8793921326774964, 0.9705250907118232, 0.22787864961837564};
+  for (int k = 0; k < 3; ++k) {
+    auto [a, b] = pair(k);
+    EXPECT_NEAR(sn::io::ssim(a, b), reference[k], 1e-9) << "pair " << k;
+  }
+}
+
+TEST(Ssim, EqualImagesAreOneAndAFullMaskChangesNothing) {
+  auto [a, b] = pair(0);
+  EXPECT_NEAR(sn::io::ssim(a, a), 1.0, 1e-12);
+  Image all(40, 28, 4, 1.f);
+  EXPECT_EQ(sn::io::ssim(a, b, -1, &all, 3), sn::io::ssim(a, b));
+  // A mask over the left half averages only there: a different number, still within (0, 1].
+  Image left(40, 28, 4, 0.f);
+  for (int y = 0; y < 28; ++y)
+    for (int x = 0; x < 20; ++x) left.at(x, y, 3) = 1.f;
+  const double half = sn::io::ssim(a, b, -1, &left, 3);
+  EXPECT_NE(half, sn::io::ssim(a, b));
+  EXPECT_GT(half, 0.0);
+  EXPECT_LE(half, 1.0);
+}
+
+TEST(Ssim, RefusesWhatItCannotMeasure) {
+  auto [a, b] = pair(0);
+  Image small(10, 28, 3);
+  EXPECT_THROW(sn::io::ssim(small, small), std::invalid_argument);  // narrower than the window
+  EXPECT_THROW(sn::io::ssim(a, small), std::invalid_argument);
+  Image none(40, 28, 4, 0.f);
+  EXPECT_THROW(sn::io::ssim(a, b, -1, &none, 3), std::invalid_argument);
+  a.at(3, 4, 1) = std::nanf("");
+  EXPECT_THROW(sn::io::ssim(a, b), std::invalid_argument);
+}
+
+}  // namespace
