@@ -11,26 +11,37 @@ namespace {
 
 constexpr double kSigma = 1.5, kC1 = 0.01 * 0.01, kC2 = 0.03 * 0.03;
 
-// scipy.ndimage "reflect": d c b a | a b c d | d c b a.
-int reflect(int i, int n) {
-  while (i < 0 || i >= n) i = i < 0 ? -i - 1 : 2 * n - i - 1;
-  return i;
-}
+// The window of a pixel at least kSsimRadius from the border never leaves the image, so the
+// averaged pixels need no edge rule ("reflect" in scikit-image): only those are filtered.
+// Horizontal pass over every row for the interior columns, then vertical for the interior rows;
+// the five planes (x, y, x^2, y^2, xy) in one sweep.
+struct Moments {
+  double x, y, xx, yy, xy;
+};
 
-// Separable Gaussian filter of a w x h plane.
-std::vector<double> blur(const std::vector<double>& in, int w, int h, const double* k) {
-  std::vector<double> tmp(in.size()), out(in.size());
+std::vector<Moments> blur_interior(const std::vector<double>& a, const std::vector<double>& b, int w, int h,
+                                   const double* k) {
+  const int r = kSsimRadius;
+  std::vector<Moments> rows(size_t(w) * h), out(size_t(w) * h);
   for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      double s = 0;
-      for (int d = -kSsimRadius; d <= kSsimRadius; ++d) s += k[d + kSsimRadius] * in[size_t(y) * w + reflect(x + d, w)];
-      tmp[size_t(y) * w + x] = s;
+    for (int x = r; x < w - r; ++x) {
+      Moments m{0, 0, 0, 0, 0};
+      for (int d = -r; d <= r; ++d) {
+        const size_t i = size_t(y) * w + x + d;
+        const double kv = k[d + r], va = a[i], vb = b[i];
+        m.x += kv * va, m.y += kv * vb, m.xx += kv * va * va, m.yy += kv * vb * vb, m.xy += kv * va * vb;
+      }
+      rows[size_t(y) * w + x] = m;
     }
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      double s = 0;
-      for (int d = -kSsimRadius; d <= kSsimRadius; ++d) s += k[d + kSsimRadius] * tmp[size_t(reflect(y + d, h)) * w + x];
-      out[size_t(y) * w + x] = s;
+  for (int y = r; y < h - r; ++y)
+    for (int x = r; x < w - r; ++x) {
+      Moments m{0, 0, 0, 0, 0};
+      for (int d = -r; d <= r; ++d) {
+        const Moments& q = rows[size_t(y + d) * w + x];
+        const double kv = k[d + r];
+        m.x += kv * q.x, m.y += kv * q.y, m.xx += kv * q.xx, m.yy += kv * q.yy, m.xy += kv * q.xy;
+      }
+      out[size_t(y) * w + x] = m;
     }
   return out;
 }
@@ -57,24 +68,22 @@ double ssim(const Image& a, const Image& b, int channels, const Image* mask, int
   const size_t n = size_t(w) * h;
   double total = 0;
   for (int c = 0; c < channels; ++c) {
-    std::vector<double> x(n), y(n), xx(n), yy(n), xy(n);
+    std::vector<double> x(n), y(n);
     for (size_t i = 0; i < n; ++i) {
       x[i] = a.pixels[i * a.channels + c], y[i] = b.pixels[i * b.channels + c];
       if (!std::isfinite(x[i]) || !std::isfinite(y[i]))
         throw std::invalid_argument("ssim: pixel (" + std::to_string(i % w + 1) + ", " + std::to_string(i / w + 1) +
                                     ") channel " + std::to_string(c + 1) + " is not a finite number");
-      xx[i] = x[i] * x[i], yy[i] = y[i] * y[i], xy[i] = x[i] * y[i];
     }
-    auto mx = blur(x, w, h, k), my = blur(y, w, h, k), mxx = blur(xx, w, h, k), myy = blur(yy, w, h, k),
-         mxy = blur(xy, w, h, k);
+    const auto m = blur_interior(x, y, w, h, k);
     double sum = 0;
     size_t count = 0;
     for (int py = kSsimRadius; py < h - kSsimRadius; ++py)
       for (int px = kSsimRadius; px < w - kSsimRadius; ++px) {
         if (mask && mask->at(px, py, mask_channel) <= 0.5f) continue;
-        const size_t i = size_t(py) * w + px;
-        const double vx = mxx[i] - mx[i] * mx[i], vy = myy[i] - my[i] * my[i], cxy = mxy[i] - mx[i] * my[i];
-        sum += (2 * mx[i] * my[i] + kC1) * (2 * cxy + kC2) / ((mx[i] * mx[i] + my[i] * my[i] + kC1) * (vx + vy + kC2));
+        const Moments& q = m[size_t(py) * w + px];
+        const double vx = q.xx - q.x * q.x, vy = q.yy - q.y * q.y, cxy = q.xy - q.x * q.y;
+        sum += (2 * q.x * q.y + kC1) * (2 * cxy + kC2) / ((q.x * q.x + q.y * q.y + kC1) * (vx + vy + kC2));
         ++count;
       }
     if (count == 0) throw std::invalid_argument("ssim: the mask leaves no pixel at least 5 pixels inside the border");

@@ -1,8 +1,9 @@
 // The structural similarity index (SSIM) of Wang, Bovik, Sheikh and Simoncelli (IEEE TIP 2004),
 // computed as their paper and scikit-image's structural_similarity(gaussian_weights=True,
 // sigma=1.5, use_sample_covariance=False, data_range=1) do: local means, variances and the
-// covariance under an 11x11 Gaussian window (sigma 1.5, cut at 3.5 sigma, normalised; the image
-// is mirrored at its edges, "reflect"), C1 = (0.01 L)^2, C2 = (0.03 L)^2 with L = 1, and
+// covariance under an 11x11 Gaussian window (sigma 1.5, cut at 3.5 sigma, normalised; no edge
+// rule is needed: only pixels whose window lies inside the image are averaged), C1 = (0.01 L)^2,
+// C2 = (0.03 L)^2 with L = 1, and
 //   SSIM(x, y) = (2 mx my + C1)(2 sxy + C2) / ((mx^2 + my^2 + C1)(sx^2 + sy^2 + C2))
 // averaged over pixels at least 5 pixels from the border, then over channels. 1 means equal.
 #pragma once
