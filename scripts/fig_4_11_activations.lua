@@ -59,12 +59,12 @@ for _, a in ipairs(acts) do
   local layer_text = {}
   for l, f in ipairs(per_layer) do layer_text[l] = string.format("%.2f", f) end
   local final = y[epochs]
-  rows[#rows + 1] = {
+  rows[#rows + 1] = exp.with_unseen({
     activation = a.label, best_val_mse = best, final_val_mse = final,
     vs_zeros = best and best / base.zeros or nil, vs_constant = best and best / base.constant or nil,
     stalled = best and (best > 0.9 * base.constant and "yes" or "no") or nil,
     dead_mean = stats.mean(per_layer), dead_max = stats.max(per_layer), dead_per_layer = table.concat(layer_text, " "),
-  }
+  }, records, ids)
 end
 series[#series + 1] = { name = "all-zeros output", x = { 1, epochs }, y = { base.zeros, base.zeros }, color = "#888888" }
 series[#series + 1] = { name = "constant predictor", x = { 1, epochs }, y = { base.constant, base.constant }, color = "#bbbbbb" }
@@ -74,7 +74,7 @@ E:plot("plots/fig_4_11_activations.png", {
 
 E.R:table {
   title = "Figure 4.11 — activations: best and final validation MSE, and dead units",
-  columns = {
+  columns = exp.add_unseen_columns({
     { key = "activation", align = "left" },
     { key = "best_val_mse", header = "min val MSE", format = "%.4g" },
     { key = "final_val_mse", header = "final val MSE", format = "%.4g" },
@@ -84,11 +84,12 @@ E.R:table {
     { key = "dead_mean", header = "dead units (mean over layers)", format = "%.2f" },
     { key = "dead_max", header = "dead units (worst layer)", format = "%.2f" },
     { key = "dead_per_layer", header = "dead units per hidden layer", align = "left" },
-  },
+  }, "final_val_mse"),
   rows = rows,
   notes = {
-    string.format("Median of %d seeds; %s; default (Xavier) initialisation for every activation.",
-                  seeds, exp.recipe(epochs, adam)),
+    string.format("Median of %d seeds; %s; default (Xavier) initialisation for every activation; training data: %s.",
+                  seeds, exp.recipe(epochs, adam), E:data_note()),
+    exp.unseen_note(),
     string.format("Our all-zeros output MSE is %.6f and the constant predictor's %.6f (the thesis' all-zeros MSE on its data: %.5f).",
                   base.zeros, base.constant, thesis.fig_4_11.stall_mse),
     "Dead units, per hidden layer over the training rows: ReLU / leaky ReLU units never positive; tanh units with |a| > 0.99 and sigmoid units below 0.01 or above 0.99 on more than 99% of the rows.",

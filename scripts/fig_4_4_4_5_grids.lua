@@ -46,7 +46,7 @@ local function figure(list, file, title)
         row[key] = (row[key] or 0) + m.mse / (m.mesh == "training mesh" and #meshes[1].views or #meshes[2].views)
       end
     end
-    rows[#rows + 1] = row
+    rows[#rows + 1] = exp.with_unseen(row, records, { n.id })
   end
 end
 figure(fig44, "figures/fig_4_4_depth.png", "Figure 4.4 — GGX, width 6: 4 to 14 hidden layers")
@@ -59,10 +59,11 @@ E.R:table {
     { key = "val_mse", header = "min val MSE", format = "%.4g" },
     { key = "train_mesh_mse", header = "image MSE, training mesh", format = "%.4g" },
     { key = "test_mesh_mse", header = "image MSE, test mesh (mean of views)", format = "%.4g" },
+    exp.unseen_columns[1], exp.unseen_columns[2],
   },
   rows = rows,
-  notes = { string.format("One seed per network; %s, tanh. Image MSE over covered pixels, RGB.",
-                          exp.recipe(epochs)) },
+  notes = { string.format("One seed per network; %s, tanh; training data: %s. Image MSE over covered pixels, RGB.",
+                          exp.recipe(epochs), E:data_note()), exp.unseen_note() },
 }
 E:finish {
   records = records,

@@ -65,11 +65,13 @@ local function series_for(ids, label_of, figure)
     local best, best_e = math.huge, nil
     for e = 1, epochs do if y[e] == y[e] and y[e] < best then best, best_e = y[e], e end end
     local final = y[epochs]
-    rows[#rows + 1] = {
+    local run_ids = {}
+    for seed = 1, seeds do run_ids[seed] = string.format("%s-s%02d", id, seed) end
+    rows[#rows + 1] = exp.with_unseen({
       figure = figure, layers = a.layers, width = a.width, best_val_mse = best_e and best or nil, best_epoch = best_e,
       final_val_mse = final, rise_after_best = (best_e and final == final) and final / best or nil,
       epoch_to_2x_best = nil,
-    }
+    }, records, run_ids)
     -- How fast it gets there: the first epoch within 2x of its own best.
     if best_e then
       for e = 1, epochs do
@@ -95,17 +97,18 @@ E:plot("plots/fig_4_7_width.png", {
 
 E.R:table {
   title = "Figures 4.6 and 4.7 — where each validation curve bottoms out and ends",
-  columns = {
+  columns = exp.add_unseen_columns({
     { key = "figure" }, { key = "layers", header = "hidden layers" }, { key = "width" },
     { key = "best_val_mse", header = "min val MSE", format = "%.4g" }, { key = "best_epoch", header = "at epoch" },
     { key = "epoch_to_2x_best", header = "first epoch within 2x of min" },
     { key = "final_val_mse", header = "final val MSE", format = "%.4g" },
     { key = "rise_after_best", header = "final / min", format = "%.3f" },
-  },
+  }, "rise_after_best"),
   rows = rows,
   notes = {
-    string.format("Per-epoch median of %d seeds; %s, tanh. Constant predictor: %.6f.",
-                  seeds, exp.recipe(epochs, adam), base.constant),
+    string.format("Per-epoch median of %d seeds; %s, tanh; training data: %s. Constant predictor: %.6f.",
+                  seeds, exp.recipe(epochs, adam), E:data_note(), base.constant),
+    exp.unseen_note() .. " Unseen-mesh columns: each run's best-epoch weights, median over seeds.",
     "final / min > 1: the validation MSE rose again after its minimum (the thesis sees this for wider layers).",
   },
 }

@@ -35,6 +35,8 @@ for _, c in ipairs(cases) do
       rows[#rows + 1] = { figure = c.figure, network = c.label, mesh = m.mesh, view = m.view, image_mse = m.mse,
                           val_mse = rec.result.best_val_mse }
     end
+    rows[#rows + 1] = { figure = c.figure, network = c.label, mesh = "unseen meshes (mean)", image_mse = rec.result.unseen_mse,
+                        ssim = rec.result.unseen_ssim, val_mse = rec.result.best_val_mse }
   end
 end
 -- How much of the test mesh lies outside what training saw: the share of its samples whose
@@ -60,12 +62,14 @@ E.R:table {
   title = "Figures 4.3 and 4.8 — image MSE on the training mesh and on the test mesh",
   columns = {
     { key = "figure" }, { key = "network", align = "left" }, { key = "mesh", align = "left" }, { key = "view" },
-    { key = "image_mse", header = "image MSE", format = "%.4g" }, { key = "val_mse", header = "min val MSE (training data)", format = "%.4g" },
+    { key = "image_mse", header = "image MSE", format = "%.4g" }, { key = "ssim", header = "SSIM", format = "%.4f" },
+    { key = "val_mse", header = "min val MSE (training data)", format = "%.4g" },
   },
   rows = rows,
   notes = {
-    string.format("One seed; %s, tanh. Image MSE over covered pixels, RGB.",
-                  exp.recipe(epochs)),
+    string.format("One seed; %s, tanh; training data: %s. Image MSE over covered pixels, RGB.",
+                  exp.recipe(epochs), E:data_note()),
+    exp.unseen_note(),
     string.format("Coverage: no training normal points further up than y = %.3f; %.1f%% of the test mesh's samples do. Those are where the networks extrapolate.",
                   max_train_y, 100 * outside_share),
   },

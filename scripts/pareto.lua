@@ -46,15 +46,15 @@ for _, l in ipairs(sizes) do
   end
 end
 
--- Pareto front of points {cost, mse}: sorted by cost, each point better than all cheaper ones.
-local function pareto(points, cost)
+-- Pareto front of points over (cost, err): sorted by cost, each point better than all cheaper ones.
+local function pareto(points, cost, err)
   local sorted = {}
-  for _, p in ipairs(points) do if p.val_mse and p[cost] then sorted[#sorted + 1] = p end end
-  table.sort(sorted, function(a, b) return a[cost] < b[cost] or (a[cost] == b[cost] and a.val_mse < b.val_mse) end)
+  for _, p in ipairs(points) do if p[err] and p[cost] then sorted[#sorted + 1] = p end end
+  table.sort(sorted, function(a, b) return a[cost] < b[cost] or (a[cost] == b[cost] and a[err] < b[err]) end)
   local best, front = math.huge, {}
   for _, p in ipairs(sorted) do
-    if p.val_mse < best then
-      best = p.val_mse
+    if p[err] < best then
+      best = p[err]
       front[#front + 1] = p
     end
   end
@@ -73,37 +73,46 @@ for _, m in ipairs(models) do
         if records[id] then times[#times + 1] = records[id].result.wall_time end
       end
       local mse = exp.median_of(records, ids, "best_val_mse")
-      points[#points + 1] = {
+      points[#points + 1] = exp.with_unseen({
         model = m, layers = l, width = w, arch = l .. "x" .. w, parameters = exp.param_count(6, exp.rep(w, l), 3),
         val_mse = mse, train_s = stats.median(times), render_ns = render_ns[l .. "x" .. w],
-      }
+      }, records, ids)
     end
   end
-  local front_t, front_r = pareto(points, "train_s"), pareto(points, "render_ns")
-  local on_t, on_r = {}, {}
-  for _, p in ipairs(front_t) do on_t[p] = true end
-  for _, p in ipairs(front_r) do on_r[p] = true end
-  for _, p in ipairs(points) do
-    p.pareto_train = on_t[p] and "yes" or ""
-    p.pareto_render = on_r[p] and "yes" or ""
-    rows[#rows + 1] = p
+  -- Error on the training data's validation rows, and on meshes no network saw (the error a
+  -- user of the network meets).
+  local fronts = {
+    { key = "pareto_train", cost = "train_s", err = "val_mse" },
+    { key = "pareto_render", cost = "render_ns", err = "val_mse" },
+    { key = "pareto_unseen", cost = "render_ns", err = "unseen_mse" },
+  }
+  for _, f in ipairs(fronts) do
+    f.front = pareto(points, f.cost, f.err)
+    local on = {}
+    for _, p in ipairs(f.front) do on[p] = true end
+    for _, p in ipairs(points) do p[f.key] = on[p] and "yes" or "" end
   end
-  local function plot(cost, front, xlabel, file)
+  for _, p in ipairs(points) do rows[#rows + 1] = p end
+  local function plot(cost, err, front, xlabel, ylabel, file)
     local all = { name = "all architectures", x = {}, y = {}, style = "points", labels = {}, color = "#1f77b4" }
     for _, p in ipairs(points) do
-      if p.val_mse and p[cost] then
-        all.x[#all.x + 1], all.y[#all.y + 1], all.labels[#all.labels + 1] = p[cost], p.val_mse, p.arch
+      if p[err] and p[cost] then
+        all.x[#all.x + 1], all.y[#all.y + 1], all.labels[#all.labels + 1] = p[cost], p[err], p.arch
       end
     end
     local f = { name = "Pareto-optimal", x = {}, y = {}, style = "linespoints", color = "#d62728" }
-    for _, p in ipairs(front) do f.x[#f.x + 1], f.y[#f.y + 1] = p[cost], p.val_mse end
-    E:plot(file, { title = string.format("%s: median validation MSE against %s (labels: layers x width)",
-                                         m == "ggx" and "GGX" or "Phong", xlabel),
-                   xlabel = xlabel, ylabel = "median min. validation MSE", logx = true, logy = true,
+    for _, p in ipairs(front) do f.x[#f.x + 1], f.y[#f.y + 1] = p[cost], p[err] end
+    E:plot(file, { title = string.format("%s: %s against %s (labels: layers x width)",
+                                         m == "ggx" and "GGX" or "Phong", ylabel, xlabel),
+                   xlabel = xlabel, ylabel = ylabel, logx = true, logy = true,
                    series = { all, f }, width = 900, height = 600 })
   end
-  plot("train_s", front_t, "training time per network (s)", "plots/pareto_train_" .. m .. ".png")
-  plot("render_ns", front_r, "rendering cost (ns per fragment)", "plots/pareto_render_" .. m .. ".png")
+  plot("train_s", "val_mse", fronts[1].front, "training time per network (s)", "median min. validation MSE",
+       "plots/pareto_train_" .. m .. ".png")
+  plot("render_ns", "val_mse", fronts[2].front, "rendering cost (ns per fragment)", "median min. validation MSE",
+       "plots/pareto_render_" .. m .. ".png")
+  plot("render_ns", "unseen_mse", fronts[3].front, "rendering cost (ns per fragment)",
+       "median image MSE on unseen meshes", "plots/pareto_unseen_" .. m .. ".png")
 end
 
 E.R:table {
@@ -113,12 +122,15 @@ E.R:table {
     { key = "val_mse", header = "median min val MSE", format = "%.4g" },
     { key = "train_s", header = "train s / network", format = "%.3f" },
     { key = "render_ns", header = "render ns / fragment", format = "%.1f" },
+    exp.unseen_columns[1], exp.unseen_columns[2],
     { key = "pareto_train", header = "Pareto (train time)" }, { key = "pareto_render", header = "Pareto (render)" },
+    { key = "pareto_unseen", header = "Pareto (render, unseen-mesh error)" },
   },
   rows = rows,
   notes = {
-    string.format("Median over %d seeds; %s, tanh; each network trained alone (%s backend).",
-                  seeds, exp.recipe(epochs), E.backend),
+    string.format("Median over %d seeds; %s, tanh; each network trained alone (%s backend); training data: %s.",
+                  seeds, exp.recipe(epochs), E.backend, E:data_note()),
+    exp.unseen_note(),
     string.format("Rendering: %d frames drawn at %dx%d (%d covered fragments) in one call, less a one-frame call: drawing only, no read-back; %s.",
                   frames, size[1], size[2], covered, sn.gl_info().renderer),
   },
@@ -126,7 +138,7 @@ E.R:table {
 -- The answer in short: per model, the Pareto-optimal architectures from cheapest to most accurate.
 local short = {}
 for _, r in ipairs(rows) do
-  if r.pareto_train == "yes" or r.pareto_render == "yes" then short[#short + 1] = r end
+  if r.pareto_train == "yes" or r.pareto_render == "yes" or r.pareto_unseen == "yes" then short[#short + 1] = r end
 end
 table.sort(short, function(a, b)
   if a.model ~= b.model then return a.model > b.model end
@@ -140,7 +152,9 @@ E.R:table {
     { key = "val_mse", header = "median min val MSE", format = "%.4g" },
     { key = "train_s", header = "train s", format = "%.3f" },
     { key = "render_ns", header = "render ns / fragment", format = "%.1f" },
+    exp.unseen_columns[1],
     { key = "pareto_train", header = "best for training time" }, { key = "pareto_render", header = "best for rendering" },
+    { key = "pareto_unseen", header = "best for rendering, unseen meshes" },
   },
   rows = short,
 }

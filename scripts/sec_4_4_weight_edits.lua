@@ -131,8 +131,10 @@ E.R:table {
   },
   rows = rows,
   notes = {
-    string.format("Fitted network: min val MSE %.6f after %s, tanh.",
-                  rec.result.best_val_mse, exp.recipe(epochs)),
+    string.format("Fitted network: min val MSE %.6f after %s, tanh; training data: %s.",
+                  rec.result.best_val_mse, exp.recipe(epochs), E:data_note()),
+    string.format("Fitted network on the unseen meshes: image MSE %.4g, SSIM %.4f. %s", rec.result.unseen_mse or 0 / 0,
+                  rec.result.unseen_ssim or 0 / 0, exp.unseen_note()),
     "Chromaticity = rgb / (r + g + b) per pixel; both measures over pixels covered in both renderings.",
   },
 }
@@ -147,5 +149,6 @@ E:finish {
   records = records,
   config = { model = "toon3", hidden = exp.rep(12, 8), epochs = epochs, batch = exp.batch, adam = exp.adam, data = desc,
              edits = (function() local t = {} for i, e in ipairs(edits) do t[i] = { id = e.id, label = e.label } end return t end)() },
-  summary = { rows = rows, fitted_val_mse = rec.result.best_val_mse },
+  summary = { rows = rows, fitted_val_mse = rec.result.best_val_mse, fitted_unseen_mse = rec.result.unseen_mse,
+              fitted_unseen_ssim = rec.result.unseen_ssim },
 }

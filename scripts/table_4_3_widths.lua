@@ -40,15 +40,15 @@ for _, a in ipairs(archs) do
   for seed = 1, seeds do ids[seed] = string.format("%s-s%02d", a.id, seed) end
   local m, found, bad = exp.median_of(records, ids, "best_val_mse")
   local t = thesis.table_4_3[a.name]
-  rows[#rows + 1] = {
+  rows[#rows + 1] = exp.with_unseen({
     widths = a.name, hidden = exp.arch_name(a.hidden), parameters = exp.param_count(6, a.hidden, 3),
     val_mse = m, thesis_val_mse = t, ratio = (m and t) and m / t or nil,
     vs_constant = m and m / base.constant or nil, runs = found, diverged = bad,
-  }
+  }, records, ids)
 end
 E.R:table {
   title = "Table 4.3 — GGX, 8 hidden layers: fixed against varying widths",
-  columns = {
+  columns = exp.add_unseen_columns({
     { key = "widths", header = "hidden widths", align = "left" }, { key = "hidden", header = "layers", align = "left" },
     { key = "parameters", header = "parameters" },
     { key = "val_mse", header = "val MSE (ours)", format = "%.4g" },
@@ -56,11 +56,12 @@ E.R:table {
     { key = "ratio", header = "ours / thesis", format = "%.2f" },
     { key = "vs_constant", header = "ours / constant predictor", format = "%.4f" },
     { key = "runs", header = "runs" }, { key = "diverged", header = "diverged" },
-  },
+  }, "vs_constant"),
   rows = rows,
   notes = {
-    string.format("Median over %d seeds of each run's minimum validation MSE over %s, tanh.",
-                  seeds, exp.recipe(epochs)),
+    string.format("Median over %d seeds of each run's minimum validation MSE over %s, tanh; training data: %s.",
+                  seeds, exp.recipe(epochs), E:data_note()),
+    exp.unseen_note(),
     string.format("Constant predictor on the same validation rows: MSE %.6f; all-zeros output: %.6f.", base.constant, base.zeros),
   },
 }

@@ -40,10 +40,10 @@ for _, s in ipairs(spaces) do
     end
     local m, found, bad = exp.median_of(records, ids, "best_val_mse")
     local t = thesis.table_4_4[s.id][w]
-    rows[#rows + 1] = {
+    rows[#rows + 1] = exp.with_unseen({
       space = s.label, width = w, val_mse = m, thesis_val_mse = t, ratio = (m and t) and m / t or nil,
       rgb_val_mse = require("lib.stats").median(rgb_mses), runs = found, diverged = bad,
-    }
+    }, records, ids)
   end
 end
 local base = E:baseline(descs.rgb)
@@ -55,18 +55,19 @@ E.R:table {
     { title = "the same networks' validation MSE in RGB (outputs converted back)", rows = "space", cols = "width",
       row_header = "space", value = "rgb_val_mse", format = "%.4g" },
   },
-  columns = {
+  columns = exp.add_unseen_columns({
     { key = "space", align = "left" }, { key = "width" },
     { key = "val_mse", header = "val MSE, own space (ours)", format = "%.4g" },
     { key = "thesis_val_mse", header = "val MSE (thesis)", format = "%.4g" },
     { key = "ratio", header = "ours / thesis", format = "%.2f" },
     { key = "rgb_val_mse", header = "val MSE in RGB", format = "%.4g" },
     { key = "runs", header = "runs" }, { key = "diverged", header = "diverged" },
-  },
+  }, "rgb_val_mse"),
   rows = rows,
   notes = {
-    string.format("Median over %d seeds; %s, tanh. The RGB column evaluates each run's best-epoch weights.",
-                  seeds, exp.recipe(epochs)),
+    string.format("Median over %d seeds; %s, tanh; training data: %s. The RGB column evaluates each run's "
+                  .. "best-epoch weights.", seeds, exp.recipe(epochs), E:data_note()),
+    exp.unseen_note(),
     string.format("RGB constant predictor on the validation rows: MSE %.6f.", base.constant),
     "The thesis printed RGB only at width 8.",
   },

@@ -1,5 +1,6 @@
 -- The command line every experiment script shares:
---   shadenet scripts/NAME.lua [--quick] [--shard i/n] [--out DIR] [--backend cpu|gl|auto] [--help]
+--   shadenet scripts/NAME.lua [--quick] [--shard i/n] [--out DIR] [--backend cpu|gl|auto]
+--                             [--data poses|cloth] [--help]
 -- An unknown option is an error listing the valid ones. Without --shard, a Slurm job array
 -- (SLURM_ARRAY_TASK_ID / SLURM_ARRAY_TASK_COUNT) picks the shard, so `sbatch --array=0-7`
 -- (or 1-8) spreads a sweep over 8 machines with no extra flag.
@@ -10,6 +11,7 @@ local common = {
   { flag = "--shard", value = "i/n", help = "run only slice i of n of the sweep (1 <= i <= n)" },
   { flag = "--out", value = "DIR", help = "write results to DIR instead of results/NAME" },
   { flag = "--backend", value = "cpu|gl|auto", help = "training backend (default: the script's choice)" },
+  { flag = "--data", value = "poses|cloth", help = "training data: the cloth in 5 poses (default, covers the normal sphere) or the thesis' hanging cloth alone" },
   { flag = "--help", help = "print this help" },
 }
 
@@ -53,7 +55,7 @@ function cli.slurm_shard(getenv)
 end
 
 -- cli.parse(args, name [, extra_flags]) -> options
---   options = { quick, shard = {index, count} | nil, out, backend, name }
+--   options = { quick, shard = {index, count} | nil, out, backend, data, name }
 -- `extra_flags` adds script-specific flags, same shape as `common` above (value flags give a
 -- string, others true).
 function cli.parse(args, name, extra, getenv)
@@ -100,6 +102,13 @@ function cli.parse(args, name, extra, getenv)
       error(string.format("%s: unknown backend '%s' (valid: cpu, gl, auto)", where, o.extra.backend), 0)
     end
     o.backend = o.extra.backend
+  end
+  if o.extra.data then
+    local ok = { poses = true, cloth = true }
+    if not ok[o.extra.data] then
+      error(string.format("%s: unknown --data '%s' (valid: poses, cloth)", where, o.extra.data), 0)
+    end
+    o.data = o.extra.data
   end
   if o.extra.shard then
     o.shard = cli.parse_shard(o.extra.shard, where)

@@ -3,6 +3,7 @@
 -- beside the thesis' value, with a plot of MSE against width per depth.
 local exp = require "lib.experiment"
 local thesis = require "lib.thesis"
+local stats = require "lib.stats"
 
 local M = {}
 
@@ -33,12 +34,12 @@ function M.run(E, o)
       local list = ids[layers .. "x" .. width]
       local m, found, bad = exp.median_of(records, list, "best_val_mse")
       local t = o.thesis[layers] and o.thesis[layers][width]
-      rows[#rows + 1] = {
+      rows[#rows + 1] = exp.with_unseen({
         layers = layers, width = width, val_mse = m, thesis_val_mse = t,
         ratio = (m and t) and m / t or nil, runs = found, diverged = bad,
         best_epoch = exp.median_of(records, list, "best_epoch"),
         vs_constant = m and m / base.constant or nil,
-      }
+      }, records, list)
     end
   end
   -- Do the same architectures do well here and in the thesis? Spearman's rank correlation of
@@ -56,12 +57,15 @@ function M.run(E, o)
   local d2 = 0
   for i in pairs(ro) do d2 = d2 + (ro[i] - rt[i]) ^ 2 end
   local spearman = n > 2 and 1 - 6 * d2 / (n * (n * n - 1)) or nil
+  local ratios = {}
+  for _, r in ipairs(rows) do ratios[#ratios + 1] = r.ratio end
+  local median_ratio = stats.median(ratios)
   E.R:table {
     title = o.title,
     grids = { { title = "median minimum validation MSE, ours (thesis)", rows = "layers", cols = "width",
                 row_header = "hidden layers", col_header = "width", value = "val_mse", thesis = "thesis_val_mse",
                 format = "%.4g" } },
-    columns = {
+    columns = exp.add_unseen_columns({
       { key = "layers", header = "hidden layers" }, { key = "width", header = "width" },
       { key = "val_mse", header = "val MSE (ours)", format = "%.4g" },
       { key = "thesis_val_mse", header = "val MSE (thesis)", format = "%.4g" },
@@ -69,15 +73,17 @@ function M.run(E, o)
       { key = "vs_constant", header = "ours / constant predictor", format = "%.4f" },
       { key = "best_epoch", header = "median best epoch", format = "%.1f" },
       { key = "runs", header = "runs" }, { key = "diverged", header = "diverged" },
-    },
+    }, "vs_constant"),
     rows = rows,
     notes = {
-      string.format("Median over %d seeds of each run's minimum validation MSE over %s, tanh.",
-                    seeds, exp.recipe(epochs)),
+      string.format("Median over %d seeds of each run's minimum validation MSE over %s, tanh; training data: %s.",
+                    seeds, exp.recipe(epochs), E:data_note()),
+      exp.unseen_note(),
       string.format("Constant predictor (training mean) on the same validation rows: MSE %.6f; all-zeros output: %.6f.",
                     base.constant, base.zeros),
       spearman and string.format("Rank correlation (Spearman) of our cells with the thesis' over the %d cells: %.3f.",
                                  n, spearman) or nil,
+      median_ratio and string.format("Median over the cells of ours / thesis: %.3g.", median_ratio) or nil,
     },
   }
 
@@ -105,7 +111,8 @@ function M.run(E, o)
     records = records,
     config = { model = o.model, sizes = sizes, seeds = seeds, epochs = epochs, batch = exp.batch, adam = exp.adam,
                data = desc },
-    summary = { rows = rows, constant_mse = base.constant, zeros_mse = base.zeros, spearman_vs_thesis = spearman },
+    summary = { rows = rows, constant_mse = base.constant, zeros_mse = base.zeros, spearman_vs_thesis = spearman,
+                median_ratio_vs_thesis = median_ratio, data = E.data_choice },
   }
 end
 

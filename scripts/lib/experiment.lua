@@ -42,6 +42,7 @@ function exp.start(name, args, o)
   local self = setmetatable({
     name = name, opts = opts, quick = opts.quick, R = R, dir = R.dir, args = list,
     backend = opts.backend or o.backend or "auto",
+    data_choice = opts.data or "poses",
     t0 = sn.clock(), timings = {}, datasets = {}, scenes = {}, sweeps = {}, baselines = {},
     load_at_start = results.load_average(),
   }, E)
@@ -70,6 +71,26 @@ end
 -- The meshes: the cloth the thesis trains on, and a different mesh to test generalisation.
 exp.meshes = { train = "meshes/cloth.glb", test = "meshes/test_blob.glb" }
 
+-- The default training data (--data poses): the cloth in 5 poses, upright and tilted by +-60
+-- degrees about x and about z, each seen from the same 8 views. The hanging cloth alone (--data
+-- cloth, the thesis' data) has no normal pointing further up than y = 0.40, so its networks never
+-- see the highlight zone of most other meshes; tilted, its normals cover the sphere.
+exp.poses = { {}, { rotate = { 60, 1, 0, 0 } }, { rotate = { -60, 1, 0, 0 } },
+              { rotate = { 60, 0, 0, 1 } }, { rotate = { -60, 0, 0, 1 } } }
+
+-- Meshes no network trains on, for the generalisation every script reports: the test blob, two
+-- glTF sample models and two procedural shapes, each seen from three elevations.
+exp.unseen_meshes = {
+  { label = "test blob", mesh = "meshes/test_blob.glb" },
+  { label = "Duck", mesh = "../shared/meshes/Duck.gltf" },
+  { label = "Box", mesh = "../shared/meshes/Box.gltf" },
+  { label = "sphere", mesh = function() return sn.mesh.sphere {} end },
+  { label = "torus", mesh = function() return sn.mesh.torus {} end },
+}
+-- One camera per ring, at three elevations and three azimuths (rings of 3, camera k of ring k).
+exp.unseen_rings = { { count = 3, elevation = -30 }, { count = 3, elevation = 20 }, { count = 3, elevation = 60 } }
+exp.unseen_views = { 1, 5, 9 }
+
 -- The scene the thesis' samples come from: the cloth mesh seen from an orbit of views. Full mode
 -- samples 64,149 covered pixels like the thesis; quick mode a few thousand from small images.
 function E:scene_options(o)
@@ -85,7 +106,7 @@ end
 
 function exp.make_scene(so)
   return sn.scene { mesh = so.mesh, size = so.size, views = { count = so.views, elevation = so.elevation },
-                    light = so.light }
+                    light = so.light, poses = so.poses }
 end
 
 -- The scene for options `o` (cached per process by its options).
@@ -130,8 +151,23 @@ function E:data_desc(o)
     samples = o.samples or self:pick(8000, 64149),
     split = o.split or 0.8,
     seed = o.seed or 1,
-    scene = self:scene_options(o),
+    scene = self:training_scene_options(o),
   }
+end
+
+-- "the cloth in 5 poses (...)" or "the hanging cloth": what --data chose, for table notes.
+function E:data_note()
+  if self.data_choice == "poses" then
+    return "the cloth in 5 poses (upright, tilted +-60 degrees about x and about z), 8 views each (--data poses)"
+  end
+  return "the hanging cloth alone, 8 views (--data cloth, the thesis' data)"
+end
+
+-- The scene options of training data: the mesh in the poses --data chooses (o.data overrides).
+function E:training_scene_options(o)
+  local so = self:scene_options(o)
+  if (o.data or self.data_choice) == "poses" then so.poses = o.poses or exp.poses end
+  return so
 end
 
 -- E:data(options or description) -> Dataset, description. Built on first use only: a sweep
@@ -189,6 +225,97 @@ function E:baseline(o)
                                                   zeros = self.baselines[key].zeros }
   end
   return self.baselines[key]
+end
+
+-- ---- generalisation: meshes the networks never saw -------------------------------------------
+
+-- The unseen scenes under `light`, built once per process.
+function E:unseen_scenes(light)
+  local key = json.encode(light)
+  self.unseen = self.unseen or {}
+  if not self.unseen[key] then
+    local size = self:pick({ 96, 72 }, { 160, 120 })
+    local list = {}
+    for _, m in ipairs(exp.unseen_meshes) do
+      local mesh = type(m.mesh) == "function" and m.mesh() or m.mesh
+      list[#list + 1] = { label = m.label, truths = {}, gbuffers = {},
+                          scene = sn.scene { mesh = mesh, size = size, views = exp.unseen_rings, light = light } }
+    end
+    self.unseen[key] = list
+  end
+  return self.unseen[key]
+end
+
+-- Whether a network reading `inputs` can be rendered on any mesh (normal and view only; uv and
+-- position mean something else on every mesh) for a ground truth `model`.
+function exp.generalises(inputs, model)
+  for _, a in ipairs(inputs) do
+    if a ~= "normal" and a ~= "view" then return false end
+  end
+  return exp.model(model):name() ~= "textured_phong"
+end
+
+-- E:unseen_error(net, desc) -> { mse, ssim, meshes = { {label, mse, ssim}, ... } } or nil when
+-- the network cannot be rendered on other meshes (exp.generalises). Image MSE over covered pixels
+-- and masked SSIM of the network's render (clamped to [0, 1] as a display shows it) against the
+-- ground truth, averaged over the views of each unseen mesh, then over the meshes.
+function E:unseen_error(net, desc)
+  if not exp.generalises(desc.inputs, desc.model) then return nil end
+  local model = exp.model(desc.model)
+  local out = { mse = 0, ssim = 0, meshes = {} }
+  local list = self:unseen_scenes(desc.scene.light)
+  for _, u in ipairs(list) do
+    local mse, ssim = 0, 0
+    for _, v in ipairs(exp.unseen_views) do
+      local tk = desc.truth
+      u.truths[tk] = u.truths[tk] or {}
+      local truth = u.truths[tk][v]
+      if not truth then
+        truth = self:time("unseen", u.scene.render, u.scene, model, { view = v })
+        u.truths[tk][v] = truth
+      end
+      u.gbuffers[v] = u.gbuffers[v] or u.scene:gbuffer { view = v, attributes = { "normal", "view" } }
+      local mine = self:time("unseen", function() return sn.image.clamp(net:render(u.gbuffers[v])) end)
+      mse = mse + sn.image.mse(truth, mine, { channels = 3, mask = truth })
+      ssim = ssim + self:time("unseen", sn.image.ssim, truth, mine, { channels = 3, mask = truth })
+    end
+    mse, ssim = mse / #exp.unseen_views, ssim / #exp.unseen_views
+    out.meshes[#out.meshes + 1] = { label = u.label, mse = mse, ssim = ssim }
+    out.mse, out.ssim = out.mse + mse / #list, out.ssim + ssim / #list
+  end
+  return out
+end
+
+-- Table columns for the unseen-mesh error, and a row's values: medians over the runs `ids`.
+exp.unseen_columns = {
+  { key = "unseen_mse", header = "image MSE, unseen meshes", format = "%.4g" },
+  { key = "unseen_ssim", header = "SSIM, unseen meshes", format = "%.4f" },
+}
+function exp.with_unseen(row, records, ids)
+  row.unseen_mse = exp.median_of(records, ids, "unseen_mse")
+  row.unseen_ssim = exp.median_of(records, ids, "unseen_ssim")
+  return row
+end
+
+-- `columns` with the unseen-mesh columns inserted after the column keyed `after`.
+function exp.add_unseen_columns(columns, after)
+  local out = {}
+  for _, c in ipairs(columns) do
+    out[#out + 1] = c
+    if c.key == after then
+      for _, u in ipairs(exp.unseen_columns) do out[#out + 1] = u end
+    end
+  end
+  return out
+end
+
+-- A note for tables: which meshes and views the unseen-mesh columns average over.
+function exp.unseen_note()
+  local names = {}
+  for i, m in ipairs(exp.unseen_meshes) do names[i] = m.label end
+  return string.format("Unseen meshes (no network trains on them): %s, each from 3 views at elevations -30, 20 and 60 "
+                       .. "degrees; image MSE over covered pixels and SSIM (sn.image.ssim), the network's render clamped "
+                       .. "to [0, 1].", table.concat(names, ", "))
 end
 
 -- ---- networks and runs ----------------------------------------------------------------------
@@ -360,7 +487,9 @@ function E:train_group(group, tick)
     local o = out[first[i]]
     local p = nil
     if r.config.keep_params then p = nets[first[i]]:params() end
+    local unseen = stats.finite(o.best_val_mse) and self:unseen_error(nets[first[i]], c.data) or nil
     res[i] = {
+      unseen_mse = unseen and unseen.mse, unseen_ssim = unseen and unseen.ssim,
       best_val_mse = o.best_val_mse, best_epoch = o.best_epoch,
       val_mse = o.val_mse, train_mse = o.train_mse,
       wall_time = o.wall_time, job_nets = #nets, steps = o.steps, sample_steps_per_s = o.sample_steps_per_s,
