@@ -12,11 +12,13 @@ local t_start = sn.clock()
 -- 1. Training data that covers the directions a mesh can face. A network learns the rows it
 --    sees: the hanging cloth alone has no normal pointing further up than y = 0.40, so trained
 --    on it a network never sees the highlight most other meshes have. Tilting the cloth by
---    +-60 degrees about x and about z (5 poses, each seen from 8 views) covers the sphere.
+--    +-60 degrees about x and about z (5 poses), each seen from three heights (rings of 8 views at
+--    -30, 20 and 60 degrees), covers the sphere of normals and the views around them.
 local poses = { {}, { rotate = { 60, 1, 0, 0 } }, { rotate = { -60, 1, 0, 0 } },
                 { rotate = { 60, 0, 0, 1 } }, { rotate = { -60, 0, 0, 1 } } }
 local cloth = sn.scene { mesh = "meshes/cloth.glb", size = { 640, 480 }, poses = poses,
-                         views = { count = 8, elevation = 20 } }
+                         views = { { count = 8, elevation = -30 }, { count = 8, elevation = 20 },
+                                   { count = 8, elevation = 60 } } }
 
 -- 2. Meshes to look at: the cloth (upright) and five meshes no network trains on, each from
 --    three elevations (-30, 20 and 60 degrees; one camera per ring).
