@@ -22,6 +22,7 @@ namespace {
 
 constexpr const char* kFormat = "shadenet-dataset";
 constexpr int kVersion = 1;
+constexpr uint64_t kMaxRows = uint64_t(1) << 31;  // as sn.dataset{...}: keeps every size product in range
 
 // A hash of everything a trainer reads: equal rows, sets, widths, colour and names, equal key.
 std::string content_key(const Dataset& d) {
@@ -213,6 +214,7 @@ std::shared_ptr<Dataset> load_numpy(const DatasetPaths& p) {
     }
   }
   const uint64_t train = s.count("rows", "train", 1), val = s.count("rows", "val", 0);
+  if (train > kMaxRows || val > kMaxRows) s.fail("more than 2^31 rows in a set");
   s.text(nullptr, "source_key", "");  // provenance for people; the loaded key is the content's
 
   const fs::path folder = fs::path(p.main).parent_path();

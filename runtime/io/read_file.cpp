@@ -12,7 +12,8 @@ namespace sn::io {
 
 std::string read_file(const std::string& path, const std::string& what) {
   const std::string head = "cannot read " + what + " '" + path + "': ";
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  // O_NONBLOCK: opening a FIFO would otherwise wait for a writer; regular files ignore it.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
   if (fd < 0) throw std::runtime_error(head + (errno == ENOENT ? "no such file" : std::strerror(errno)));
   struct stat st {};
   if (::fstat(fd, &st) != 0) {

@@ -2,6 +2,7 @@
 // writes it, round trips that keep every bit, and a clear error for every damaged file.
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cfloat>
@@ -239,6 +240,7 @@ TEST(DatasetFile, SidecarErrorsNameTheFileAndField) {
   EXPECT_EQ(load_err(edit("\"version\": 1", "\"version\": 2")), at + ": dataset file version 2; this build reads version 1");
   EXPECT_EQ(load_err(edit("\"train\": 5", "\"train\": \"5\"")), at + ": field 'rows.train' must be an integer of at least 1, got \"5\"");
   EXPECT_EQ(load_err(edit("\"val\": 2", "\"val\": -2")), at + ": field 'rows.val' must be an integer of at least 0, got -2");
+  EXPECT_EQ(load_err(edit("\"train\": 5", "\"train\": 18446744073709551615")), at + ": more than 2^31 rows in a set");
   EXPECT_EQ(load_err(edit("\"width\": 5,", "")), at + ": missing field 'inputs.width'");
   EXPECT_EQ(load_err(edit("\"color\": \"hsv\"", "\"color\": \"cmyk\"")),
             at + ": field 'targets.color': unknown colour space 'cmyk' (valid: rgb, hsv, cie, cie_xyz, cie_lab)");
@@ -249,6 +251,9 @@ TEST(DatasetFile, SidecarErrorsNameTheFileAndField) {
   write(at, good);
   EXPECT_EQ(message_of([&] { load_dataset(scratch("side/none.json")); }),
             "cannot read dataset '" + scratch("side/none.json") + "': no such file");
+  const std::string fifo = scratch("side/fifo.json");
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);  // no writer: opening it must not wait for one
+  EXPECT_EQ(message_of([&] { load_dataset(fifo); }), "cannot read dataset '" + fifo + "': not a regular file");
   fs::create_directories(scratch("side/dir.json"));
   EXPECT_EQ(message_of([&] { load_dataset(scratch("side/dir.json")); }),
             "cannot read dataset '" + scratch("side/dir.json") + "': it is a directory");
