@@ -15,11 +15,7 @@ namespace sn::data {
 
 namespace {
 
-std::string hex64(uint64_t v) {
-  char b[20];
-  snprintf(b, sizeof b, "%016llx", (unsigned long long)v);
-  return b;
-}
+using io::hex64;
 
 std::string vec3_text(const glm::dvec3& v) { return io::exact_text(v.x) + "," + io::exact_text(v.y) + "," + io::exact_text(v.z); }
 

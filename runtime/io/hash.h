@@ -2,6 +2,7 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,13 @@ inline uint64_t fnv1a(const std::string& s) {
   Fnv1a f;
   f.text(s);
   return f.h;
+}
+
+// 16 lowercase hex digits: how keys print a hash.
+inline std::string hex64(uint64_t v) {
+  char b[20];
+  std::snprintf(b, sizeof b, "%016llx", (unsigned long long)v);
+  return b;
 }
 
 }  // namespace sn::io

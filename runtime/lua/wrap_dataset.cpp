@@ -7,7 +7,9 @@
 #include "gl/buffer.h"
 #include "lua/binding.h"
 #include "lua/module.h"
+#include "data/combine.h"
 #include "data/dataset.h"
+#include "data/dataset_file.h"
 #include "nn/shuffle.h"
 
 namespace sn::lua {
@@ -176,12 +178,130 @@ int w_tostring(lua_State* L) {
   return 1;
 }
 
+// ---- combining, saving, loading (engine: data/combine.h, data/dataset_file.h) ----
+
+// Runs f(); an engine error gets the Lua function's name in front.
+template <class F>
+auto named(const char* fn, F&& f) {
+  try {
+    return f();
+  } catch (const std::exception& e) {
+    throw Error(std::string(fn) + ": " + e.what());
+  }
+}
+
+// sn.dataset.concat{ a, b, ... } -> Dataset
+int w_concat(lua_State* L) {
+  const char* fn = "sn.dataset.concat";
+  if (!lua_istable(L, 1))
+    throw Error(std::string(fn) + ": a list of Datasets expected ({a, b, ...}), got " + type_name_at(L, 1));
+  const int n = int(lua_objlen(L, 1));
+  int keys = 0;
+  lua_pushnil(L);
+  while (lua_next(L, 1)) ++keys, lua_pop(L, 1);
+  if (keys != n) throw Error(std::string(fn) + ": a list {a, b, ...} expected; the table has keys besides 1.." + std::to_string(n));
+  if (n == 0) throw Error(std::string(fn) + ": the list is empty; give at least one Dataset");
+  std::vector<std::shared_ptr<Dataset>> held;
+  std::vector<const Dataset*> parts;
+  for (int i = 1; i <= n; ++i) {
+    lua_rawgeti(L, 1, i);
+    auto* box = static_cast<Box<Dataset>*>(test_type(L, -1, kType));
+    if (!box) throw Error(std::string(fn) + ": item " + std::to_string(i) + " is a " + type_name_at(L, -1) + ", Dataset expected");
+    if (!box->ptr) throw Error(std::string(fn) + ": dataset " + std::to_string(i) + " was released; it can no longer be used");
+    held.push_back(box->ptr);
+    parts.push_back(box->ptr.get());
+    lua_pop(L, 1);
+  }
+  push(L, named(fn, [&] { return data::concat(parts); }), kType);
+  return 1;
+}
+
+// ds:subset{ count = n | fraction = f, seed = s, where = { input, axis, min, max } } -> Dataset
+int w_subset(lua_State* L) {
+  const char* fn = "dataset:subset";
+  const Dataset& d = self(L);
+  Options o(L, 2, fn, {"count", "fraction", "seed", "where"});
+  data::SubsetRequest r;
+  if (o.has("count")) {
+    const long long c = o.integer("count");
+    if (c < 1) throw Error(o.where("count") + " must be at least 1, got " + std::to_string(c));
+    r.count = std::size_t(c);
+  }
+  if (o.has("fraction")) r.fraction = o.number("fraction");
+  if (o.has("seed")) {
+    const long long s = o.integer("seed");
+    if (s < 0) throw Error(o.where("seed") + " must be a non-negative integer, got " + std::to_string(s));
+    if (!r.count && !r.fraction) throw Error(o.where("seed") + " chooses the rows of count or fraction; give one of them");
+    r.seed = uint64_t(s);
+  }
+  if (o.has("where")) {
+    const int wi = o.push("where");
+    Options w(L, wi, "dataset:subset option 'where'", {"input", "axis", "min", "max"});
+    data::RowFilter f;
+    f.input = w.string("input");
+    const int ai = w.push("axis");
+    if (lua_type(L, ai) == LUA_TSTRING) {
+      const std::string a = lua_tostring(L, ai);
+      const std::string letters = "xyzuv";
+      const auto at = a.size() == 1 ? letters.find(a[0]) : std::string::npos;
+      if (at == std::string::npos)
+        throw Error(w.where("axis") + ": unknown axis '" + a + "' (valid: x, y, z, u, v or a 1-based index)");
+      f.component = int(at % 3);  // u, v are components 1, 2 like x, y
+    } else if (lua_isnil(L, ai)) {
+      throw Error(w.where("axis") + " is required (x, y, z, u, v or a 1-based index)");
+    } else {
+      f.component = int(check_integer(L, ai, w.where("axis").c_str())) - 1;
+    }
+    lua_pop(L, 1);
+    if (!w.has("min") && !w.has("max")) throw Error("dataset:subset option 'where': give min, max or both");
+    f.min = w.number("min", f.min);
+    f.max = w.number("max", f.max);
+    lua_pop(L, 1);
+    r.where = f;
+  }
+  if (!r.count && !r.fraction && !r.where) throw Error(std::string(fn) + ": give count, fraction or where");
+  push(L, named(fn, [&] { return data::subset(d, r); }), kType);
+  return 1;
+}
+
+// ds:split{ split = 0.8, seed = 1 } -> Dataset
+int w_split(lua_State* L) {
+  const Dataset& d = self(L);
+  if (lua_isnoneornil(L, 2)) {
+    lua_settop(L, 1);
+    lua_newtable(L);
+  }
+  Options o(L, 2, "dataset:split", {"split", "seed"});
+  const double split = o.number("split", 0.8);
+  const long long seed = o.integer("seed", 1);
+  if (seed < 0) throw Error(o.where("seed") + " must be a non-negative integer, got " + std::to_string(seed));
+  push(L, named("dataset:split", [&] { return data::resplit(d, split, uint64_t(seed)); }), kType);
+  return 1;
+}
+
+// ds:export(path) -> the path to load it from (the sidecar or the CSV file)
+int w_export(lua_State* L) {
+  const Dataset& d = self(L);
+  const std::string path = check_string(L, 2, "dataset:export path");
+  const auto p = named("dataset:export", [&] { return data::export_dataset(d, path); });
+  lua_pushstring(L, p.main.c_str());
+  return 1;
+}
+
+// sn.dataset.load(path) -> Dataset
+int w_load(lua_State* L) {
+  const std::string path = check_string(L, 1, "sn.dataset.load path");
+  push(L, named("sn.dataset.load", [&] { return data::load_dataset(path); }), kType);
+  return 1;
+}
+
 }  // namespace
 
 void open_dataset(lua_State* L) {
   static const luaL_Reg methods[] = {SN_FN("counts", w_counts),   SN_FN("inputs", w_inputs),
                                      SN_FN("outputs", w_outputs), SN_FN("color", w_color),
                                      SN_FN("input_names", w_input_names), SN_FN("row", w_row),
+                                     SN_FN("subset", w_subset), SN_FN("split", w_split), SN_FN("export", w_export),
                                      {nullptr, nullptr}};
   define_box_type<Dataset>(L, kType, methods, wrap<w_tostring>);
   // sn.dataset is a table of dataset functions that is also callable: sn.dataset{...} makes one.
@@ -190,6 +310,10 @@ void open_dataset(lua_State* L) {
   lua_pushcfunction(L, wrap<w_call>);
   lua_setfield(L, -2, "__call");
   lua_setmetatable(L, -2);
+  lua_pushcfunction(L, wrap<w_concat>);
+  lua_setfield(L, -2, "concat");
+  lua_pushcfunction(L, wrap<w_load>);
+  lua_setfield(L, -2, "load");
   lua_setfield(L, -2, "dataset");
 }
 

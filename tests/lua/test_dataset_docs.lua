@@ -3,7 +3,7 @@
 local docs = require "doc_examples"
 
 local outputs = {}
-local count = docs.run("docs/lua-api/datasets.md", 4, function(_, printed) outputs[#outputs + 1] = printed end)
+local count = docs.run("docs/lua-api/datasets.md", 9, function(_, printed) outputs[#outputs + 1] = printed end)
 
 local function has(pattern)
   for _, lines in ipairs(outputs) do
@@ -16,4 +16,18 @@ end
 has("^Dataset%(6 %-> 3 rgb, 4000 train / 1000 val%) 4000 1000$")
 has("^Dataset%(6 %-> 3 rgb, 80 train / 20 val%) 80 20$")
 has("^2 1 2 2$")
+-- Combining, saving and loading
+has("^Dataset%(6 %-> 3 rgb, 4000 train / 1000 val%)$")
+has("^sn%.dataset%.concat: dataset 2 has colour space hsv, dataset 1 has rgb$")
+has("^Dataset%(6 %-> 3 rgb, 80 train / 20 val%)$")
+has("^Dataset%(6 %-> 3 rgb, 400 train / 100 val%)$")
+has("^true 400 100$")
+has("^5 5$")
+has("^false dataset:split: 10 rows split 0%.95 leave no validation rows$")
+has("^out/docs_cloth%.json Dataset%(6 %-> 3 rgb, 4000 train / 1000 val%)$")
+has("^true$")
+has("^normal_x,normal_y,normal_z,uv_u,uv_v,h,s,v,set$")
+has("^0,0,1,0%.25,0%.5,0%.1,0%.2,0%.3,train$")
+has("^0,1,0,0%.75,0%.1,1,0%.5,0,val$")
+has("^Dataset%(5 %-> 3 hsv, 1 train / 1 val%)$")
 print(count .. " examples ran")

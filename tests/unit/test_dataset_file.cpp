@@ -1,0 +1,315 @@
+// Dataset files (io/npy.h, data/dataset_file.h): the .npy header byte for byte as numpy.save
+// writes it, round trips that keep every bit, and a clear error for every damaged file.
+#include <gtest/gtest.h>
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cfloat>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <limits>
+
+#include "data/dataset_file.h"
+#include "io/npy.h"
+#include "io/read_file.h"
+
+namespace sn::data {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Scratch {
+  fs::path dir = fs::temp_directory_path() / ("shadenet_dsfile_" + std::to_string(::getpid()));
+  ~Scratch() {
+    std::error_code ec;
+    fs::remove_all(dir, ec);
+  }
+};
+std::string scratch(const std::string& name) {
+  static Scratch s;
+  fs::create_directories(s.dir);
+  return (s.dir / name).string();
+}
+
+void write(const std::string& path, const std::string& bytes) {
+  std::ofstream f(path, std::ios::binary);
+  f << bytes;
+}
+
+std::string message_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+bool same_bits(const std::vector<float>& a, const std::vector<float>& b) {
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0);
+}
+
+// Values a text format could lose: signed zero, subnormals, the extremes, long mantissas.
+Dataset awkward(std::vector<std::string> names = {"normal", "uv"}, shading::ColorSpace color = shading::ColorSpace::hsv) {
+  Dataset d;
+  d.inputs = 5;
+  d.outputs = 3;
+  d.color = color;
+  d.input_names = std::move(names);
+  d.key = "dataset-0123456789abcdef";
+  const float special[] = {-0.0f, 1e-45f, FLT_MIN / 2, FLT_MIN, FLT_MAX, -FLT_MAX, 0.1f, 1.0f / 3, 16777217.0f, 3.14159274f};
+  for (int r = 0; r < 7; ++r)
+    for (int k = 0; k < 5; ++k) (r < 5 ? d.train_x : d.val_x).push_back(special[(r * 5 + k) % 10] * (k % 2 ? -1 : 1));
+  for (int r = 0; r < 7; ++r)
+    for (int k = 0; k < 3; ++k) (r < 5 ? d.train_y : d.val_y).push_back(std::nextafter(float(r) / 7, 2.0f) + float(k));
+  return d;
+}
+
+void expect_equal(const Dataset& a, const Dataset& b) {
+  EXPECT_EQ(a.inputs, b.inputs);
+  EXPECT_EQ(a.outputs, b.outputs);
+  EXPECT_EQ(a.color, b.color);
+  EXPECT_EQ(a.input_names, b.input_names);
+  EXPECT_TRUE(same_bits(a.train_x, b.train_x));
+  EXPECT_TRUE(same_bits(a.train_y, b.train_y));
+  EXPECT_TRUE(same_bits(a.val_x, b.val_x));
+  EXPECT_TRUE(same_bits(a.val_y, b.val_y));
+}
+
+// ---- .npy ----
+
+TEST(Npy, HeaderIsByteForByteWhatNumpySaveWrites) {
+  // numpy 1.24.2: io.BytesIO after np.save(b, np.zeros((3, 2), '<f4')): 128 bytes before the data.
+  const std::string dict = "{'descr': '<f4', 'fortran_order': False, 'shape': (3, 2), }";
+  const std::string expect = std::string("\x93NUMPY\x01\x00\x76\x00", 10) + dict + std::string(58, ' ') + "\n";
+  EXPECT_EQ(io::npy_header(3, 2), expect);
+  // (64149, 6): 54 spaces; (12345678901234567, 3): 42 (numpy's room to grow the first axis shrinks).
+  EXPECT_EQ(io::npy_header(64149, 6),
+            std::string("\x93NUMPY\x01\x00\x76\x00", 10) + "{'descr': '<f4', 'fortran_order': False, 'shape': (64149, 6), }" +
+                std::string(54, ' ') + "\n");
+  EXPECT_EQ(io::npy_header(12345678901234567ull, 3).size(), 128u);
+  EXPECT_EQ(io::npy_header(12345678901234567ull, 3).substr(10 + 75, 42), std::string(42, ' '));
+}
+
+TEST(Npy, RoundTripKeepsEveryBit) {
+  const std::vector<float> v = {-0.0f, 1e-45f, FLT_MAX, 0.1f, -2.5f, 7.0f};
+  const std::string bytes = io::npy_bytes(v.data(), 3, 2);
+  EXPECT_EQ(bytes.size(), 128u + 24u);
+  io::NpyArray a = io::parse_npy(bytes, "a.npy");
+  EXPECT_EQ(a.rows, 3u);
+  EXPECT_EQ(a.cols, 2u);
+  EXPECT_TRUE(same_bits(a.data, v));
+}
+
+TEST(Npy, ForeignAndDamagedFilesAreClearErrors) {
+  const std::vector<float> v = {1, 2, 3, 4, 5, 6};
+  const std::string good = io::npy_bytes(v.data(), 3, 2);
+  auto with_dict = [&](const std::string& dict) {
+    std::string h = dict + std::string(117 - dict.size(), ' ') + "\n";
+    return std::string("\x93NUMPY\x01\x00\x76\x00", 10) + h + good.substr(128);
+  };
+  auto err = [](const std::string& bytes) { return message_of([&] { io::parse_npy(bytes, "a.npy"); }); };
+  EXPECT_EQ(err("PK\x03\x04 not numpy"), "a.npy: not a NumPy .npy file (no \\x93NUMPY magic)");
+  std::string v9 = good;
+  v9[6] = 9;
+  EXPECT_EQ(err(v9), "a.npy: .npy format version 9.0 is not one this build reads (1.0, 2.0, 3.0)");
+  EXPECT_EQ(err(good.substr(0, 60)), "a.npy: truncated .npy header (60 bytes, the header alone needs 128)");
+  EXPECT_EQ(err(good.substr(0, good.size() - 3)), "a.npy: 21 data bytes, but shape (3, 2) of float32 needs 24 (truncated)");
+  EXPECT_EQ(err(good + "xx"), "a.npy: 26 data bytes, but shape (3, 2) of float32 needs 24");
+  EXPECT_EQ(err(with_dict("{'descr': '<f8', 'fortran_order': False, 'shape': (3, 2), }")),
+            "a.npy: dtype '<f8' is not float32 ('<f4'); save the array as a.astype('<f4')");
+  EXPECT_EQ(err(with_dict("{'descr': '>f4', 'fortran_order': False, 'shape': (3, 2), }")),
+            "a.npy: dtype '>f4' is not float32 ('<f4'); save the array as a.astype('<f4')");
+  EXPECT_EQ(err(with_dict("{'descr': '<f4', 'fortran_order': True, 'shape': (3, 2), }")),
+            "a.npy: the array is in Fortran order; save a C-ordered one (numpy.ascontiguousarray)");
+  EXPECT_EQ(err(with_dict("{'descr': '<f4', 'fortran_order': False, 'shape': (6,), }")),
+            "a.npy: shape (6,) is not 2-D (rows, columns)");
+  EXPECT_EQ(err(with_dict("{'descr': '<f4', 'fortran_order': False, 'shape': (1, 3, 2), }")),
+            "a.npy: shape (1, 3, 2) is not 2-D (rows, columns)");
+  EXPECT_EQ(err(with_dict("{'descr': '<f4', 'fortran_order': False, }")), "a.npy: malformed .npy header (missing 'shape')");
+  EXPECT_EQ(err(with_dict("{'descr': '<f4, 'fortran_order': False, 'shape': (3, 2), }")),
+            "a.npy: malformed .npy header (expected ',' or '}')");
+  // Keys in another order and without the trailing comma are still numpy's format.
+  io::NpyArray a = io::parse_npy(with_dict("{'shape': (3, 2), \"fortran_order\": False, 'descr': '<f4'}"), "a.npy");
+  EXPECT_TRUE(same_bits(a.data, v));
+}
+
+// ---- whole datasets ----
+
+TEST(DatasetFile, PathsPickTheFormat) {
+  EXPECT_EQ(dataset_paths("out/cloth.json").inputs, "out/cloth.inputs.npy");
+  EXPECT_EQ(dataset_paths("out/cloth.json").targets, "out/cloth.targets.npy");
+  EXPECT_EQ(dataset_paths("out/cloth").main, "out/cloth.json");
+  EXPECT_EQ(dataset_paths("out/cloth").inputs, "out/cloth.inputs.npy");
+  EXPECT_EQ(dataset_paths("x.csv").format, DatasetFormat::csv);
+  EXPECT_EQ(message_of([] { dataset_paths("out/cloth.npy"); }),
+            "'out/cloth.npy': unknown dataset file type '.npy' (.json: NumPy arrays with a JSON sidecar; .csv; no extension: .json)");
+  EXPECT_EQ(message_of([] { dataset_paths("out/"); }),
+            "'out/' names no file (expected e.g. out/cloth.json, out/cloth.csv or out/cloth)");
+}
+
+TEST(DatasetFile, NumpyRoundTripIsBitExact) {
+  const Dataset d = awkward();
+  const std::string at = scratch("np/awkward");
+  DatasetPaths p = export_dataset(d, at);
+  EXPECT_EQ(p.main, at + ".json");
+  auto back = load_dataset(p.main);
+  expect_equal(d, *back);
+  // Training rows first, then validation rows, in one array each.
+  io::NpyArray x = io::parse_npy(io::read_file(p.inputs), p.inputs);
+  EXPECT_EQ(x.rows, 7u);
+  EXPECT_EQ(x.cols, 5u);
+  EXPECT_EQ(std::memcmp(x.data.data() + 25, d.val_x.data(), 10 * sizeof(float)), 0);
+  const std::string side = io::read_file(p.main);
+  EXPECT_NE(side.find("\"format\": \"shadenet-dataset\""), std::string::npos) << side;
+  EXPECT_NE(side.find("\"file\": \"awkward.inputs.npy\""), std::string::npos) << side;
+  EXPECT_NE(side.find("\"source_key\": \"dataset-0123456789abcdef\""), std::string::npos) << side;
+  EXPECT_NE(side.find("\"train\": 5"), std::string::npos) << side;
+}
+
+TEST(DatasetFile, CsvRoundTripIsBitExact) {
+  for (auto color : {shading::ColorSpace::rgb, shading::ColorSpace::hsv, shading::ColorSpace::cie_xyz, shading::ColorSpace::cie_lab}) {
+    const Dataset d = awkward({"normal", "uv"}, color);
+    const std::string at = scratch("awkward.csv");
+    export_dataset(d, at);
+    expect_equal(d, *load_dataset(at));
+  }
+  Dataset unnamed = awkward({});
+  export_dataset(unnamed, scratch("unnamed.csv"));
+  expect_equal(unnamed, *load_dataset(scratch("unnamed.csv")));
+}
+
+TEST(DatasetFile, CsvColumns) {
+  EXPECT_EQ(csv_header(awkward({"normal", "uv"}, shading::ColorSpace::rgb)), "normal_x,normal_y,normal_z,uv_u,uv_v,r,g,b,set");
+  EXPECT_EQ(csv_header(awkward({}, shading::ColorSpace::cie_lab)), "x1,x2,x3,x4,x5,L,a,b,set");
+  EXPECT_EQ(csv_header(awkward({"uv", "world_position"}, shading::ColorSpace::cie_xyz)),
+            "uv_u,uv_v,world_position_x,world_position_y,world_position_z,X,Y,Z,set");
+  Dataset one = awkward({}, shading::ColorSpace::rgb);
+  one.outputs = 1;
+  EXPECT_EQ(csv_header(one), "x1,x2,x3,x4,x5,y1,set");
+  const std::string at = scratch("small.csv");
+  write(at, "x1,y1,y2\n0.5,1,2\n-1e-3, 3 ,4\r\n\n");
+  auto d = load_dataset(at);
+  EXPECT_EQ(d->outputs, 2);
+  EXPECT_EQ(d->train_count(), 2u);  // no set column: every row trains
+  EXPECT_EQ(d->train_x, (std::vector<float>{0.5f, -1e-3f}));
+  EXPECT_EQ(d->train_y, (std::vector<float>{1, 2, 3, 4}));
+  Dataset odd = awkward({"normal", "shading"});
+  EXPECT_NE(message_of([&] { csv_header(odd); }).find("CSV column names cannot carry these inputs: input name 'shading'"),
+            std::string::npos);
+}
+
+TEST(DatasetFile, KeyIsTheContentsHash) {
+  const Dataset d = awkward();
+  export_dataset(d, scratch("k.csv"));
+  export_dataset(d, scratch("k.json"));
+  const std::string a = load_dataset(scratch("k.csv"))->key, b = load_dataset(scratch("k.json"))->key;
+  EXPECT_EQ(a, b);
+  EXPECT_EQ(a.rfind("file-", 0), 0u);
+  Dataset e = d;
+  e.train_y[4] = 0.25f;
+  export_dataset(e, scratch("k.json"));
+  EXPECT_NE(load_dataset(scratch("k.json"))->key, a);
+}
+
+TEST(DatasetFile, SidecarErrorsNameTheFileAndField) {
+  const Dataset d = awkward();
+  const std::string at = scratch("side/s.json");
+  auto p = export_dataset(d, at);
+  const std::string good = io::read_file(at);
+  auto load_err = [&](const std::string& text) {
+    write(at, text);
+    return message_of([&] { load_dataset(at); });
+  };
+  auto edit = [&](const std::string& from, const std::string& to) {
+    std::string t = good;
+    const auto i = t.find(from);
+    EXPECT_NE(i, std::string::npos) << from;
+    return t.replace(i, from.size(), to);
+  };
+  EXPECT_EQ(load_err("{\"format\": "), at + ": malformed JSON: [json.exception.parse_error.101] parse error at line 1, column 12: "
+                                            "syntax error while parsing value - unexpected end of input; expected '[', '{', or a literal");
+  EXPECT_EQ(load_err("[1]"), at + ": not a dataset sidecar (a JSON object expected)");
+  EXPECT_EQ(load_err(edit("\"format\": \"shadenet-dataset\",", "")), at + ": missing field 'format'");
+  EXPECT_EQ(load_err(edit("shadenet-dataset", "other")),
+            at + ": not a shadenet dataset sidecar (format 'other', expected 'shadenet-dataset')");
+  EXPECT_EQ(load_err(edit("\"version\": 1", "\"version\": 2")), at + ": dataset file version 2; this build reads version 1");
+  EXPECT_EQ(load_err(edit("\"train\": 5", "\"train\": \"5\"")), at + ": field 'rows.train' must be an integer of at least 1, got \"5\"");
+  EXPECT_EQ(load_err(edit("\"val\": 2", "\"val\": -2")), at + ": field 'rows.val' must be an integer of at least 0, got -2");
+  EXPECT_EQ(load_err(edit("\"train\": 5", "\"train\": 18446744073709551615")), at + ": more than 2^31 rows in a set");
+  EXPECT_EQ(load_err(edit("\"width\": 5,", "")), at + ": missing field 'inputs.width'");
+  EXPECT_EQ(load_err(edit("\"color\": \"hsv\"", "\"color\": \"cmyk\"")),
+            at + ": field 'targets.color': unknown colour space 'cmyk' (valid: rgb, hsv, cie, cie_xyz, cie_lab)");
+  EXPECT_EQ(load_err(edit("\"val\": 2", "\"val\": 3")),
+            p.inputs + ": shape (7, 5) does not match the sidecar " + at + ": (8, 5) (rows.train + rows.val, inputs.width)");
+  EXPECT_EQ(load_err(edit("s.targets.npy", "gone.npy")),
+            "cannot read dataset array '" + scratch("side/gone.npy") + "': no such file");
+  write(at, good);
+  EXPECT_EQ(message_of([&] { load_dataset(scratch("side/none.json")); }),
+            "cannot read dataset '" + scratch("side/none.json") + "': no such file");
+  const std::string fifo = scratch("side/fifo.json");
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);  // no writer: opening it must not wait for one
+  EXPECT_EQ(message_of([&] { load_dataset(fifo); }), "cannot read dataset '" + fifo + "': not a regular file");
+  fs::create_directories(scratch("side/dir.json"));
+  EXPECT_EQ(message_of([&] { load_dataset(scratch("side/dir.json")); }),
+            "cannot read dataset '" + scratch("side/dir.json") + "': it is a directory");
+  // A NaN in an array names its row and column.
+  Dataset nan = d;
+  nan.val_x[6] = std::numeric_limits<float>::quiet_NaN();
+  nan.val_x[7] = 1;
+  auto q = export_dataset(nan, scratch("side/nan"));
+  EXPECT_EQ(message_of([&] { load_dataset(q.main); }), q.inputs + ": row 7 column 2 is NaN");
+}
+
+TEST(DatasetFile, CsvErrorsNameFileAndLine) {
+  const std::string at = scratch("bad.csv");
+  auto err = [&](const std::string& text) {
+    write(at, text);
+    return message_of([&] { load_dataset(at); });
+  };
+  EXPECT_EQ(err(""), at + ": empty file (a header line expected)");
+  EXPECT_EQ(err("x1,r,g,b,set\n1,2,3,4,train\n1,2,3,train\n"), at + ":3: 4 columns, the header has 5");
+  EXPECT_EQ(err("x1,r,g,b,set\n1,2,3,4,train\n\n1,2,abc,4,val\n"), at + ":4: column 'g': 'abc' is not a number");
+  EXPECT_EQ(err("x1,r,g,b,set\n1,2,,4,train\n"), at + ":2: column 'g': '' is not a number");
+  EXPECT_EQ(err("x1,r,g,b,set\n1,2,nan,4,train\n"), at + ":2: column 'g' is NaN");
+  EXPECT_EQ(err("x1,r,g,b,set\n1,2,-inf,4,train\n"), at + ":2: column 'g' is infinite");
+  EXPECT_EQ(err("x1,r,g,b,set\n1,2,1e39,4,train\n"), at + ":2: column 'g': 1e39 is outside float32's range");
+  EXPECT_EQ(err("x1,r,g,b,set\n1,2,3,4,test\n"), at + ":2: set 'test' is neither train nor val");
+  EXPECT_EQ(err("x1,r,g,b,set\n1,2,3,4,val\n"), at + ": no training rows (every row is set = val)");
+  EXPECT_EQ(err("x1,r,g,b,set\n"), at + ": no training rows (no data lines)");
+  EXPECT_EQ(err("x1,red,green,blue,set\n"),
+            at + ":1: cannot tell the target columns: the header must end in r,g,b / h,s,v / X,Y,Z / L,a,b / y1..ym, then set");
+  EXPECT_EQ(err("r,g,b,set\n"), at + ":1: no input columns before the targets");
+  EXPECT_NE(err("colour,r,g,b,set\n1,2,3,4,train\n").find(at + ":1: input column 'colour' is not <attribute>_<component>"),
+            std::string::npos);
+  EXPECT_EQ(err("normal_x,normal_z,normal_y,r,g,b,set\n"),
+            at + ":1: input 'normal' needs the columns normal_x..normal_z in order; column 2 is 'normal_z', expected 'normal_y'");
+}
+
+TEST(DatasetFile, UnwritablePathLeavesNothingBehind) {
+  const std::string blocker = scratch("blocker");
+  write(blocker, "a file, so nothing can be written below it");
+  const Dataset d = awkward();
+  EXPECT_EQ(message_of([&] { export_dataset(d, blocker + "/sub/x.json"); }),
+            "cannot write dataset array '" + blocker + "/sub/x.inputs.npy': cannot create folder '" + blocker +
+                "/sub': Not a directory");
+  EXPECT_EQ(message_of([&] { export_dataset(d, blocker + "/x.csv"); }),
+            "cannot write dataset '" + blocker + "/x.csv': cannot create folder '" + blocker + "': Not a directory");
+  // Re-exporting where an array cannot be written removes the old sidecar first: no sidecar
+  // ever points at a mix of old and new arrays.
+  const std::string at = scratch("again/a.json");
+  export_dataset(d, at);
+  ASSERT_TRUE(fs::exists(at));
+  fs::remove(scratch("again/a.targets.npy"));
+  fs::create_directories(scratch("again/a.targets.npy/x"));  // a non-empty folder where the array goes
+  EXPECT_NE(message_of([&] { export_dataset(d, at); }).find("cannot write dataset array '" + scratch("again/a.targets.npy") + "'"),
+            std::string::npos);
+  EXPECT_FALSE(fs::exists(at));
+}
+
+}  // namespace
+}  // namespace sn::data
