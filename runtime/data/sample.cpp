@@ -142,18 +142,18 @@ void validate(const SampleRequest& r) {
                                 " reads a base colour from a texture, which a sampled direction has not: "
                                 "build its dataset from a textured mesh with scene:dataset{...}");
   if (r.n < 2 || r.n > kMaxSampleRows)
-    throw std::invalid_argument("sampled dataset: n must lie in 2.." + std::to_string(kMaxSampleRows) + ", got " +
+    throw std::invalid_argument("a sampled dataset has 2.." + std::to_string(kMaxSampleRows) + " rows, not " +
                                 std::to_string(r.n));
   if (!(r.split > 0 && r.split < 1))
     throw std::invalid_argument("dataset split must lie strictly between 0 and 1 (the training share), got " +
                                 io::number_text(r.split));
   const std::size_t n_train = std::size_t(std::llround(r.split * double(r.n)));
   if (n_train == 0 || n_train == r.n)
-    throw std::invalid_argument("sampled dataset: " + std::to_string(r.n) + " rows split " + io::number_text(r.split) +
+    throw std::invalid_argument("a sampled dataset of " + std::to_string(r.n) + " rows split " + io::number_text(r.split) +
                                 " leaves no " + (n_train == 0 ? "training" : "validation") + " rows");
   const double len = glm::length(r.axis);
   if (!std::isfinite(len) || len < 1e-12)
-    throw std::invalid_argument("sampled dataset: the hemisphere's axis must be a non-zero, finite direction, got {" +
+    throw std::invalid_argument("the hemisphere's axis must be a non-zero, finite direction, got {" +
                                 io::number_text(r.axis.x) + ", " + io::number_text(r.axis.y) + ", " +
                                 io::number_text(r.axis.z) + "}");
 }
