@@ -3,7 +3,7 @@
 local docs = require "doc_examples"
 
 local outputs = {}
-local count = docs.run("docs/lua-api/datasets.md", 4, function(_, printed) outputs[#outputs + 1] = printed end)
+local count = docs.run("docs/lua-api/datasets.md", 5, function(_, printed) outputs[#outputs + 1] = printed end)
 
 local function has(pattern)
   for _, lines in ipairs(outputs) do
@@ -16,4 +16,6 @@ end
 has("^Dataset%(6 %-> 3 rgb, 4000 train / 1000 val%) 4000 1000$")
 has("^Dataset%(6 %-> 3 rgb, 80 train / 20 val%) 80 20$")
 has("^2 1 2 2$")
+has("^Dataset%(6 %-> 3 rgb, 2400 train / 600 val%) 2400 600$")
+has("^mean n%.v 0%.67$")
 print(count .. " examples ran")
