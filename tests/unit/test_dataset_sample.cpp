@@ -224,9 +224,10 @@ TEST(DatasetSample, SplitKeepsEveryRowOnce) {
 // Every target against the double-precision twin shading::shade of the same float inputs, within
 // 1e-5 per channel (the lighting twin test's bound); rows within 1e-4 of a branch of the model
 // (n.l = 0, n.v = 0) are skipped, where float may take the other side.
-void expect_targets_match_twin(Model m, sn::shading::ColorSpace color, NormalDomain nd, ViewDomain vd) {
+void expect_targets_match_twin(Model m, sn::shading::ColorSpace color, NormalDomain nd, ViewDomain vd,
+                               std::size_t rows = 20000) {
   sn::gl::current();
-  SampleRequest r = request(nd, vd, 20000, 7);
+  SampleRequest r = request(nd, vd, rows, 7);
   std::map<std::string, std::vector<double>> params;
   if (m == Model::ggx) params = {{"roughness", {0.3}}, {"f0", {1.0, 0.71, 0.29}}, {"diffuse", {0.2, 0.1, 0.05}}};
   if (m == Model::phong) params = {{"shininess", {40}}};
@@ -257,8 +258,8 @@ void expect_targets_match_twin(Model m, sn::shading::ColorSpace color, NormalDom
   }
   printf("[ %s ] %d rows compared, %d near a branch skipped, max |gpu - twin| = %.3g\n",
          sn::shading::model_spec(m).name, compared, skipped, max_err);
-  EXPECT_LT(skipped, 20000 / 50);
-  EXPECT_EQ(compared + skipped, 20000);
+  EXPECT_LT(skipped, int(rows / 50));
+  EXPECT_EQ(std::size_t(compared + skipped), rows);
   EXPECT_GT(max_err, 0.0);  // the GPU really ran
 }
 
@@ -270,6 +271,12 @@ TEST(DatasetSample, GgxTargetsMatchTheTwin) {
 }
 TEST(DatasetSample, GgxTargetsMatchTheTwinInXyz) {
   expect_targets_match_twin(Model::ggx, sn::shading::ColorSpace::cie_xyz, NormalDomain::lit, ViewDomain::uniform);
+}
+
+// The GPU shades 2^20 rows at a time: rows of the second, partial chunk must be theirs too.
+TEST(DatasetSample, RowsPastTheFirstGpuChunkAreShaded) {
+  expect_targets_match_twin(Model::phong, sn::shading::ColorSpace::rgb, NormalDomain::sphere, ViewDomain::uniform,
+                            (std::size_t(1) << 20) + 4097);
 }
 
 TEST(DatasetSample, BadRequestsAreRefusedWithReasons) {
