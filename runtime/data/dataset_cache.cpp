@@ -19,16 +19,6 @@ using io::hex64;
 
 std::string vec3_text(const glm::dvec3& v) { return io::exact_text(v.x) + "," + io::exact_text(v.y) + "," + io::exact_text(v.z); }
 
-// The shaders every dataset number passes through; an edit to any of them is a new dataset.
-std::string shader_hash() {
-  io::Fnv1a f;
-  for (const char* file : {"mesh.vert", "gbuffer.frag", "gather.comp", "eval_lighting.comp"}) {
-    std::string text = gl::preprocess(file, {}).text;
-    f.bytes(text.data(), text.size());
-  }
-  return hex64(f.h);
-}
-
 struct Cache {
   std::list<std::pair<std::string, std::shared_ptr<Dataset>>> entries;  // most recent first
   std::size_t builds = 0, hits = 0;
@@ -39,6 +29,15 @@ Cache& cache() {
 }
 
 }  // namespace
+
+std::string shader_sources_hash(std::initializer_list<const char*> files) {
+  io::Fnv1a f;
+  for (const char* file : files) {
+    std::string text = gl::preprocess(file, {}).text;
+    f.bytes(text.data(), text.size());
+  }
+  return hex64(f.h);
+}
 
 uint64_t mesh_content_hash(const scene::Mesh& m) {
   io::Fnv1a f;
@@ -82,12 +81,16 @@ std::string dataset_key(const scene::Scene& s, const DatasetRequest& r) {
   for (const auto& a : r.inputs) k += " " + a;
   k += "\ncolor " + std::string(shading::color_space_name(r.color));
   k += "\nsplit " + io::exact_text(r.split) + " seed " + std::to_string(r.seed) + " samples " + std::to_string(r.samples);
-  k += "\nshaders " + shader_hash();
+  // The shaders every number of a scene dataset passes through.
+  k += "\nshaders " + shader_sources_hash({"mesh.vert", "gbuffer.frag", "gather.comp", "eval_lighting.comp"});
   return k;
 }
 
 std::shared_ptr<Dataset> cached_dataset(const scene::Scene& s, const DatasetRequest& r) {
-  std::string key = dataset_key(s, r);
+  return cached(dataset_key(s, r), [&] { return build_dataset(s, r); });
+}
+
+std::shared_ptr<Dataset> cached(const std::string& key, const std::function<std::shared_ptr<Dataset>()>& build) {
   Cache& c = cache();
   for (auto it = c.entries.begin(); it != c.entries.end(); ++it) {
     if (it->first == key) {
@@ -96,7 +99,7 @@ std::shared_ptr<Dataset> cached_dataset(const scene::Scene& s, const DatasetRequ
       return c.entries.front().second;
     }
   }
-  auto d = build_dataset(s, r);
+  auto d = build();
   io::Fnv1a f;
   f.bytes(key.data(), key.size());
   d->key = "dataset-" + hex64(f.h);

@@ -4,6 +4,8 @@
 // identical request returns the dataset already built and renders nothing; any change builds anew.
 #pragma once
 #include <cstddef>
+#include <functional>
+#include <initializer_list>
 #include <memory>
 #include <string>
 
@@ -21,8 +23,15 @@ uint64_t mesh_content_hash(const scene::Mesh& m);
 
 std::shared_ptr<Dataset> cached_dataset(const scene::Scene& s, const DatasetRequest& r);
 
+// The one LRU every kind of dataset request shares (scene datasets above, sampled ones in
+// data/sample.h): the dataset held under `key` (a full key text), or build()'s, stamped with
+// Dataset::key and held. Keys of different kinds must differ in their first line.
+std::shared_ptr<Dataset> cached(const std::string& key, const std::function<std::shared_ptr<Dataset>()>& build);
+// Hex FNV-1a of these shaders' preprocessed sources (includes expanded), for keys.
+std::string shader_sources_hash(std::initializer_list<const char*> files);
+
 struct DatasetStats {
-  std::size_t builds = 0;   // datasets rendered and shaded
+  std::size_t builds = 0;   // datasets built (rendered or sampled) and shaded
   std::size_t hits = 0;     // requests answered from the cache
   std::size_t gbuffer_renders = 0;
   std::size_t cached = 0;   // datasets held now

@@ -35,6 +35,7 @@ int open_core(lua_State* L) {
   open_mlp(L);
   open_mlp_gl(L);
   open_dataset(L);
+  open_dataset_sample(L);
   open_train(L);
   open_lighting(L);
   open_scene(L);

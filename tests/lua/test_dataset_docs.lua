@@ -3,7 +3,7 @@
 local docs = require "doc_examples"
 
 local outputs = {}
-local count = docs.run("docs/lua-api/datasets.md", 9, function(_, printed) outputs[#outputs + 1] = printed end)
+local count = docs.run("docs/lua-api/datasets.md", 10, function(_, printed) outputs[#outputs + 1] = printed end)
 
 local function has(pattern)
   for _, lines in ipairs(outputs) do
@@ -30,4 +30,7 @@ has("^normal_x,normal_y,normal_z,uv_u,uv_v,h,s,v,set$")
 has("^0,0,1,0%.25,0%.5,0%.1,0%.2,0%.3,train$")
 has("^0,1,0,0%.75,0%.1,1,0%.5,0,val$")
 has("^Dataset%(5 %-> 3 hsv, 1 train / 1 val%)$")
+-- Sampling the domain
+has("^Dataset%(6 %-> 3 rgb, 2400 train / 600 val%) 2400 600$")
+has("^mean n%.v 0%.67$")
 print(count .. " examples ran")
