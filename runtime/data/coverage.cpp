@@ -169,8 +169,10 @@ std::vector<float> scene_directions(const scene::Scene& s) {
       }
   }
   if (out.empty())
-    throw std::invalid_argument("the scene covers no pixel in any of its " + std::to_string(s.views.size()) +
-                                " views: nothing to measure");
+    throw std::invalid_argument("the scene covers no pixel in " +
+                                (s.views.size() == 1 ? std::string("its one view")
+                                                     : "any of its " + std::to_string(s.views.size()) + " views") +
+                                ": nothing to measure");
   return out;
 }
 

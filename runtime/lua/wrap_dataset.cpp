@@ -182,6 +182,7 @@ void open_dataset(lua_State* L) {
   static const luaL_Reg methods[] = {SN_FN("counts", w_counts),   SN_FN("inputs", w_inputs),
                                      SN_FN("outputs", w_outputs), SN_FN("color", w_color),
                                      SN_FN("input_names", w_input_names), SN_FN("row", w_row),
+                                     SN_FN("coverage", dataset_coverage),
                                      {nullptr, nullptr}};
   define_box_type<Dataset>(L, kType, methods, wrap<w_tostring>);
   // sn.dataset is a table of dataset functions that is also callable: sn.dataset{...} makes one.
