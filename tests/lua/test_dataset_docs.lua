@@ -3,7 +3,7 @@
 local docs = require "doc_examples"
 
 local outputs = {}
-local count = docs.run("docs/lua-api/datasets.md", 4, function(_, printed) outputs[#outputs + 1] = printed end)
+local count = docs.run("docs/lua-api/datasets.md", 5, function(_, printed) outputs[#outputs + 1] = printed end)
 
 local function has(pattern)
   for _, lines in ipairs(outputs) do
@@ -16,4 +16,6 @@ end
 has("^Dataset%(6 %-> 3 rgb, 4000 train / 1000 val%) 4000 1000$")
 has("^Dataset%(6 %-> 3 rgb, 80 train / 20 val%) 80 20$")
 has("^2 1 2 2$")
+-- Coverage: the cloth fills about a third of the normal sphere, and most of a sphere lies outside it.
+has("^normals: 3%d%% of bins, highest y 0%.[34]%d; views: 4%d%%; sphere rows outside: [56]%d%%$")
 print(count .. " examples ran")
