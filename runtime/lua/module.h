@@ -29,4 +29,7 @@ void open_train(lua_State* L);
 void open_lighting(lua_State* L);  // sn.lighting.*, sn.color.*
 void open_scene(lua_State* L);     // sn.scene, sn.render_truth, sn.dataset_stats
 
+// Dataset methods that live in their own files; open_dataset lists them.
+int dataset_coverage(lua_State* L);  // ds:coverage{...}, wrap_coverage.cpp
+
 }  // namespace sn::lua

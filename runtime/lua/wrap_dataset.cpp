@@ -302,6 +302,7 @@ void open_dataset(lua_State* L) {
                                      SN_FN("outputs", w_outputs), SN_FN("color", w_color),
                                      SN_FN("input_names", w_input_names), SN_FN("row", w_row),
                                      SN_FN("subset", w_subset), SN_FN("split", w_split), SN_FN("export", w_export),
+                                     SN_FN("coverage", dataset_coverage),
                                      {nullptr, nullptr}};
   define_box_type<Dataset>(L, kType, methods, wrap<w_tostring>);
   // sn.dataset is a table of dataset functions that is also callable: sn.dataset{...} makes one.

@@ -8,6 +8,7 @@
 #include "io/text.h"
 #include "lua/binding.h"
 #include "lua/lighting_binding.h"
+#include "lua/lua_scene.h"
 #include "lua/module.h"
 #include "scene/gather.h"
 #include "scene/gbuffer.h"
@@ -19,14 +20,8 @@ namespace sn::lua {
 
 namespace {
 
-constexpr const char* kType = "Scene";
+constexpr const char* kType = kSceneType;
 constexpr const char* kGBufferType = "GBuffer";
-
-// A scene plus what building it noticed (computed normals), for scene:notes().
-struct LuaScene {
-  scene::Scene scene;
-  std::vector<std::string> notes;
-};
 
 LuaScene& self(lua_State* L) { return check<LuaScene>(L, 1, kType); }
 
