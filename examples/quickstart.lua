@@ -2,8 +2,8 @@
 -- models, then compare them with the models on the mesh they learned from and on five meshes
 -- they never saw. Run from the repository root:
 --   build/shadenet examples/quickstart.lua [OUT_DIR]      (default results/quickstart)
--- It writes OUT_DIR/quickstart.png (per model: truth, network and error on every mesh) and
--- OUT_DIR/table.md, and prints where they are. About a minute on a 2-core machine without a GPU.
+-- It writes OUT_DIR/quickstart.png (per model: truth, network and error on every mesh),
+-- OUT_DIR/coverage.png (what the training rows cover) and OUT_DIR/table.md, and prints where they are. About a minute on a 2-core machine without a GPU.
 local sn = require "shadenet"
 
 local out = arg and arg[1] or "results/quickstart"
@@ -58,6 +58,16 @@ for _, c in ipairs(cases) do
   -- 4. A dataset: world normal + view direction -> the model's RGB at 64,149 covered pixels,
   --    split 4:1 into training and validation rows.
   local data = cloth:dataset { inputs = { "normal", "view" }, target = c.model, seed = 1 }
+  if c == cases[1] then
+    -- What the rows cover (ds:coverage): the share of the sphere of normals and of the view
+    -- hemisphere they fill, and how much of the test blob lies outside; drawn as a figure.
+    sn.fs.mkdir(out)
+    local cov = data:coverage { against = meshes[2].scene, figure = out .. "/coverage.png",
+                                title = "training rows (cloth, 5 poses x 3 rings) against the test blob" }
+    print(string.format("coverage: %.0f%% of the normal sphere, %.0f%% of the view hemisphere; %.1f%% of the test "
+                        .. "blob's pixels fall outside (normals y %.2f..%.2f)", 100 * cov.normal.fraction,
+                        100 * cov.view.fraction, 100 * cov.outside.either, cov.normal.y_min, cov.normal.y_max))
+  end
   local net = sn.mlp { inputs = 6, hidden = c.hidden, outputs = 3, activation = "tanh", seed = 1 }
 
   -- 5. Train with the thesis' settings: 20 epochs, minibatches of 8, Adam(0.00025, 0.8, 0.9).
@@ -138,4 +148,5 @@ assert(f:write(table.concat(lines, "\n"), "\n"))
 assert(f:close())
 assert(os.rename(tmp, out .. "/table.md"))
 
-print(string.format("wrote %s/quickstart.png and %s/table.md in %.0f s", out, out, sn.clock() - t_start))
+print(string.format("wrote %s/quickstart.png, %s/coverage.png and %s/table.md in %.0f s", out, out, out,
+                    sn.clock() - t_start))

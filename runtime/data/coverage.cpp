@@ -154,8 +154,8 @@ std::vector<DirectionRows> dataset_directions(const Dataset& d, const std::strin
 std::vector<float> scene_directions(const scene::Scene& s) {
   if (s.views.empty()) throw std::invalid_argument("the scene has no views to measure");
   std::vector<float> out;
-  for (int v = 0; v < int(s.views.size()); ++v) {
-    scene::GBuffer g = s.gbuffer(v, {"normal", "view"});
+  for (int pose = 0; pose < int(s.poses.size()); ++pose) for (int v = 0; v < int(s.views.size()); ++v) {
+    scene::GBuffer g = s.gbuffer(v, {"normal", "view"}, pose);
     scene::Samples smp = scene::gather(g);
     if (smp.count == 0) continue;
     const std::vector<float> n = scene::download_vec4(*smp.attributes[0], smp.count);

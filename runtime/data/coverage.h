@@ -62,7 +62,7 @@ struct DirectionRows {
 // Throws naming the dataset's inputs when it has no such inputs 3 wide; `what` starts the message.
 std::vector<DirectionRows> dataset_directions(const Dataset& d, const std::string& what);
 
-// Every covered pixel of every view of a scene as 6 floats (normal, view), from G-buffers
+// Every covered pixel of every view in every pose of a scene as 6 floats (normal, view), from G-buffers
 // gathered on the GPU (no lighting is evaluated).
 std::vector<float> scene_directions(const scene::Scene& s);
 

@@ -83,7 +83,7 @@ int dataset_coverage(lua_State* L) {
       }
       other_rows.push_back({scene_rows.data(), scene_rows.data() + 3, 6, scene_rows.size() / 6});
       std::string names;
-      for (const auto& m : s.scene.meshes) names += (names.empty() ? "" : ", ") + m->name;
+      for (const auto& m : s.scene.meshes) names += (names.empty() ? "" : ", ") + m.mesh->name;
       against_name = "the scene (" + names + ")";
     } else {
       throw Error(o.where("against") + ": a Dataset or a Scene expected, got " + type_name_at(L, ai));

@@ -1,4 +1,4 @@
--- expect: coverage_figure_unwritable\.lua:8: ds:coverage option 'figure': .*Not a directory
+-- expect: coverage_figure_unwritable\.lua:7: ds:coverage option 'figure': .*Not a directory
 local sn = require "shadenet"
 
 -- The figure's folder would have to be made inside a file.

@@ -8,7 +8,12 @@ local t0 = sn.clock()
 local out = C.ok("examples/quickstart.lua", { dir })
 local seconds = sn.clock() - t0
 assert(seconds < 180, "the quickstart takes under 3 minutes, took " .. seconds)
-assert(out:find("wrote " .. dir .. "/quickstart.png and " .. dir .. "/table.md", 1, true), "it prints where it wrote:\n" .. out)
+assert(out:find("wrote " .. dir .. "/quickstart.png, " .. dir .. "/coverage.png and " .. dir .. "/table.md", 1, true),
+       "it prints where it wrote:\n" .. out)
+-- The posed cloth's rows cover most of the normal sphere; little of the test blob is outside.
+local normals, views, outside = out:match("coverage: (%d+)%% of the normal sphere, (%d+)%% of the view hemisphere; ([%d.]+)%%")
+assert(tonumber(normals) > 80 and tonumber(outside) < 5, "coverage line: " .. tostring(normals) .. " " .. tostring(outside))
+assert(sn.image.load(dir .. "/coverage.png"), "the coverage figure")
 local img = sn.image.load(dir .. "/quickstart.png")
 local w, h = img:size()
 assert(w > 1000 and h > 900, "6 meshes x 6 rows")

@@ -327,7 +327,7 @@ TEST(Coverage, FigureShowsWhatOnlyTheOtherHas) {
 TEST(Coverage, SceneRowsAreItsCoveredPixels) {
   gl::current();
   scene::Scene s;
-  s.meshes.push_back(std::make_shared<scene::Mesh>(scene::sphere(1.0, 64, 32)));
+  s.meshes.push_back({std::make_shared<scene::Mesh>(scene::sphere(1.0, 64, 32))});
   s.width = 64, s.height = 48;
   s.views = scene::framing_orbit(s.bounds(), 3, 20);
   const std::vector<float> rows = data::scene_directions(s);
