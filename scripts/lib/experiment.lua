@@ -104,6 +104,7 @@ function E:scene_options(o)
     views = o.views or self:pick(4, 8),
     elevation = o.elevation or 20,
     light = o.light or { dir = { 0.5, 0.7, 0.6 } },
+    poses = o.poses,
   }
 end
 
