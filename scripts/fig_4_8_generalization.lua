@@ -39,24 +39,13 @@ for _, c in ipairs(cases) do
                         ssim = rec.result.unseen_ssim, val_mse = rec.result.best_val_mse }
   end
 end
--- How much of the test mesh lies outside what training saw: the share of its samples whose
--- normal points further up (world y) than any training normal does.
-local function normals_y(mesh)
-  local data = E:data { model = "phong", mesh = mesh }
-  local n = data:counts()
-  local ys = {}
-  for i = 1, n do
-    local x = data:row("train", i)
-    ys[i] = x[2]
-  end
-  return ys
-end
-local max_train_y = -1
-for _, y in ipairs(normals_y(exp.meshes.train)) do max_train_y = math.max(max_train_y, y) end
-local test_y = normals_y(exp.meshes.test)
-local outside = 0
-for _, y in ipairs(test_y) do if y > max_train_y then outside = outside + 1 end end
-local outside_share = outside / #test_y
+-- How much of the test mesh lies outside what training saw (ds:coverage: equal-area bins of
+-- normals and of views about the normal), drawn beside the figures.
+local train_data = E:data { model = "phong" }
+local test_scene = E:scene { mesh = exp.meshes.test }
+local cov = train_data:coverage { against = test_scene, figure = E.R:path("figures/coverage.png"),
+                                  title = "training rows (" .. E.data_choice .. ") against the test mesh" }
+E.R.written[#E.R.written + 1] = "figures/coverage.png"
 
 E.R:table {
   title = "Figures 4.3 and 4.8 — image MSE on the training mesh and on the test mesh",
@@ -70,12 +59,15 @@ E.R:table {
     string.format("One seed; %s, tanh; training data: %s. Image MSE over covered pixels, RGB.",
                   exp.recipe(epochs), E:data_note()),
     exp.unseen_note(),
-    string.format("Coverage: no training normal points further up than y = %.3f; %.1f%% of the test mesh's samples do. Those are where the networks extrapolate.",
-                  max_train_y, 100 * outside_share),
+    string.format("Coverage (figures/coverage.png): the training rows fill %.1f%% of the normal sphere's bins and %.1f%% "
+                  .. "of the view hemisphere's; their normals reach y = %.3f; %.1f%% of the test mesh's pixels fall in bins "
+                  .. "they leave empty. Those are where the networks extrapolate.", 100 * cov.normal.fraction,
+                  100 * cov.view.fraction, cov.normal.y_max, 100 * cov.outside.either),
   },
 }
 E:finish {
   records = records,
   config = { cases = cases, epochs = epochs, batch = exp.batch, adam = exp.adam },
-  summary = { rows = rows, max_train_normal_y = max_train_y, test_share_outside = outside_share },
+  summary = { rows = rows, max_train_normal_y = cov.normal.y_max, normal_coverage = cov.normal.fraction,
+              view_coverage = cov.view.fraction, test_share_outside = cov.outside.either },
 }
