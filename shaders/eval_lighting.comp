@@ -1,7 +1,9 @@
 // Shades compact sample buffers with one lighting model: one invocation per sample. Used to
 // build datasets (covered pixels gathered by shaders/gather.comp) and by the CPU-twin and
-// stress tests. Defines: LIGHTING_MODEL (lighting/model.glsl), COLOR_SPACE (color.glsl) for
-// the stored target, LIGHTING_RAW = 1 to store the unclamped RGB radiance instead.
+// stress tests. "lighting/model.glsl" is assembled per model by runtime/shading/lighting_gpu.cpp,
+// which also defines SURFACE_<ATTRIBUTE> for each attribute the model reads beyond normal and
+// view; COLOR_SPACE (color.glsl) is the stored target's space, LIGHTING_RAW = 1 stores the
+// unclamped RGB radiance instead.
 layout(local_size_x = 64) in;
 
 #include "lighting/model.glsl"
@@ -9,10 +11,26 @@ layout(local_size_x = 64) in;
 
 layout(std430, binding = 0) readonly buffer Normals { vec4 normals[]; };
 layout(std430, binding = 1) readonly buffer Views { vec4 views[]; };
-#if LIGHTING_MODEL == LIGHTING_TEXTURED_PHONG
-layout(std430, binding = 2) readonly buffer BaseColors { vec4 base_colors[]; };
+layout(std430, binding = 2) writeonly buffer Targets { vec4 targets[]; };
+// One binding per surface attribute, in the order of sn::shading::surface_attributes().
+#ifdef SURFACE_BASE_COLOR
+layout(std430, binding = 3) readonly buffer BaseColors { vec4 base_colors[]; };
 #endif
-layout(std430, binding = 3) writeonly buffer Targets { vec4 targets[]; };
+#ifdef SURFACE_UV
+layout(std430, binding = 4) readonly buffer Uvs { vec4 uvs[]; };
+#endif
+#ifdef SURFACE_POSITION
+layout(std430, binding = 5) readonly buffer Positions { vec4 positions[]; };
+#endif
+#ifdef SURFACE_WORLD_POSITION
+layout(std430, binding = 6) readonly buffer WorldPositions { vec4 world_positions[]; };
+#endif
+#ifdef SURFACE_TANGENT
+layout(std430, binding = 7) readonly buffer Tangents { vec4 tangents[]; };
+#endif
+#ifdef SURFACE_BITANGENT
+layout(std430, binding = 8) readonly buffer Bitangents { vec4 bitangents[]; };
+#endif
 
 uniform uint u_first;  // samples [u_first, u_first + u_count) in this dispatch
 uniform uint u_count;
@@ -21,14 +39,28 @@ void main() {
   uint i = gl_GlobalInvocationID.x;
   if (i >= u_count) return;
   i += u_first;
-#if LIGHTING_MODEL == LIGHTING_TEXTURED_PHONG
-  vec3 base = base_colors[i].rgb;
-#else
-  vec3 base = vec3(1.0);
+  Surface s = lighting_surface(normals[i].xyz, views[i].xyz);
+#ifdef SURFACE_BASE_COLOR
+  s.base_color = base_colors[i].rgb;
+#endif
+#ifdef SURFACE_UV
+  s.uv = uvs[i].xy;
+#endif
+#ifdef SURFACE_POSITION
+  s.position = positions[i].xyz;
+#endif
+#ifdef SURFACE_WORLD_POSITION
+  s.world_position = world_positions[i].xyz;
+#endif
+#ifdef SURFACE_TANGENT
+  s.tangent = safe_normalize(tangents[i].xyz);
+#endif
+#ifdef SURFACE_BITANGENT
+  s.bitangent = safe_normalize(bitangents[i].xyz);
 #endif
 #if LIGHTING_RAW
-  targets[i] = vec4(lighting_raw(normals[i].xyz, views[i].xyz, base), 1.0);
+  targets[i] = vec4(lighting_raw(s), 1.0);
 #else
-  targets[i] = vec4(color_from_rgb(lighting(normals[i].xyz, views[i].xyz, base)), 1.0);
+  targets[i] = vec4(color_from_rgb(lighting(s)), 1.0);
 #endif
 }

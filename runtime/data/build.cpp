@@ -58,9 +58,9 @@ std::shared_ptr<Dataset> build_dataset(const scene::Scene& s, const DatasetReque
     scene::Samples smp = scene::gather(g);
     if (smp.count == 0) continue;
     gl::Buffer targets(gl::ElemType::vec4, smp.count);
-    const bool textured = r.target.spec().textured;
-    shading::evaluate(r.target, s.light, *smp.attributes[index_of("normal")], *smp.attributes[index_of("view")],
-                      textured ? smp.attributes[index_of("base_color")].get() : nullptr, targets, smp.count, r.color);
+    shading::SampleBuffers model_in;
+    for (const auto& a : shading::model_attributes(r.target)) model_in[a] = smp.attributes[index_of(a)].get();
+    shading::evaluate(r.target, s.light, model_in, targets, smp.count, r.color);
     auto pixels = scene::download_pixels(smp);
     auto t = scene::download_vec4(targets, smp.count);
     std::vector<std::vector<float>> in;

@@ -7,6 +7,7 @@
 
 #include "gl/shader_source.h"
 #include "io/hash.h"
+#include "shading/lighting_gpu.h"
 #include "io/text.h"
 #include "scene/gbuffer.h"
 #include "scene/transform.h"
@@ -30,10 +31,10 @@ Cache& cache() {
 
 }  // namespace
 
-std::string shader_sources_hash(std::initializer_list<const char*> files) {
+std::string shader_sources_hash(std::initializer_list<const char*> files, const gl::Includes& includes) {
   io::Fnv1a f;
   for (const char* file : files) {
-    std::string text = gl::preprocess(file, {}).text;
+    std::string text = gl::preprocess(file, {}, includes).text;
     f.bytes(text.data(), text.size());
   }
   return hex64(f.h);
@@ -82,7 +83,8 @@ std::string dataset_key(const scene::Scene& s, const DatasetRequest& r) {
   k += "\ncolor " + std::string(shading::color_space_name(r.color));
   k += "\nsplit " + io::exact_text(r.split) + " seed " + std::to_string(r.seed) + " samples " + std::to_string(r.samples);
   // The shaders every number of a scene dataset passes through.
-  k += "\nshaders " + shader_sources_hash({"mesh.vert", "gbuffer.frag", "gather.comp", "eval_lighting.comp"});
+  k += "\nshaders " + shader_sources_hash({"mesh.vert", "gbuffer.frag", "gather.comp", "eval_lighting.comp"},
+                                         shading::lighting_includes(r.target.spec()));
   return k;
 }
 

@@ -11,6 +11,7 @@
 
 #include "data/build.h"
 #include "data/dataset.h"
+#include "gl/shader_source.h"
 #include "scene/mesh.h"
 #include "scene/scene.h"
 
@@ -27,8 +28,9 @@ std::shared_ptr<Dataset> cached_dataset(const scene::Scene& s, const DatasetRequ
 // data/sample.h): the dataset held under `key` (a full key text), or build()'s, stamped with
 // Dataset::key and held. Keys of different kinds must differ in their first line.
 std::shared_ptr<Dataset> cached(const std::string& key, const std::function<std::shared_ptr<Dataset>()>& build);
-// Hex FNV-1a of these shaders' preprocessed sources (includes expanded), for keys.
-std::string shader_sources_hash(std::initializer_list<const char*> files);
+// Hex FNV-1a of these shaders' preprocessed sources (includes expanded; `includes` served from
+// memory, e.g. a lighting model's assembly and its GLSL), for keys.
+std::string shader_sources_hash(std::initializer_list<const char*> files, const gl::Includes& includes = {});
 
 struct DatasetStats {
   std::size_t builds = 0;   // datasets built (rendered or sampled) and shaded

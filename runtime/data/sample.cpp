@@ -137,10 +137,11 @@ glm::dvec2 turn_cos_sin(double t) {
 }
 
 void validate(const SampleRequest& r) {
-  if (r.target.spec().textured)
-    throw std::invalid_argument(std::string("lighting model ") + r.target.spec().name +
-                                " reads a base colour from a texture, which a sampled direction has not: "
-                                "build its dataset from a textured mesh with scene:dataset{...}");
+  if (!r.target.spec().attributes.empty())
+    throw std::invalid_argument("lighting model " + r.target.spec().name + " reads the attribute '" +
+                                r.target.spec().attributes[0] +
+                                "', which a sampled (normal, view) pair has not: build its dataset from a mesh "
+                                "with scene:dataset{...}");
   if (r.n < 2 || r.n > kMaxSampleRows)
     throw std::invalid_argument("a sampled dataset has 2.." + std::to_string(kMaxSampleRows) + " rows, not " +
                                 std::to_string(r.n));
@@ -218,7 +219,7 @@ std::shared_ptr<Dataset> sample_dataset(const SampleRequest& r) {
       }
       to->upload(staging.data(), 0, m * 4);
     }
-    shading::evaluate(r.target, r.light, normals, views, nullptr, targets, m, r.color);
+    shading::evaluate(r.target, r.light, {{"normal", &normals}, {"view", &views}}, targets, m, r.color);
     const std::vector<float> t = scene::download_vec4(targets, m);
     for (std::size_t i = 0; i < m; ++i)
       for (int c = 0; c < 3; ++c) ys[(first + i) * 3 + c] = t[i * 4 + c];
@@ -271,7 +272,7 @@ std::string sample_key(const SampleRequest& r) {
   k += " seed ";
   k += std::to_string(r.seed);
   k += "\nshaders ";
-  k += shader_sources_hash({"eval_lighting.comp"});
+  k += shader_sources_hash({"eval_lighting.comp"}, shading::lighting_includes(r.target.spec()));
   return k;
 }
 

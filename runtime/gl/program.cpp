@@ -47,13 +47,13 @@ Program::Program(const ProgramDesc& desc) {
     throw std::invalid_argument("a program takes either 'compute' or 'vertex' + 'fragment'");
   try {
     if (compute_) {
-      shaders.push_back(compile(GL_COMPUTE_SHADER, preprocess(desc.compute, desc.defines)));
+      shaders.push_back(compile(GL_COMPUTE_SHADER, preprocess(desc.compute, desc.defines, desc.includes)));
       name_ = desc.compute;
     } else {
       if (desc.vertex.empty() || desc.fragment.empty())
         throw std::invalid_argument("a graphics program needs both 'vertex' and 'fragment'");
-      shaders.push_back(compile(GL_VERTEX_SHADER, preprocess(desc.vertex, desc.defines)));
-      shaders.push_back(compile(GL_FRAGMENT_SHADER, preprocess(desc.fragment, desc.defines)));
+      shaders.push_back(compile(GL_VERTEX_SHADER, preprocess(desc.vertex, desc.defines, desc.includes)));
+      shaders.push_back(compile(GL_FRAGMENT_SHADER, preprocess(desc.fragment, desc.defines, desc.includes)));
       name_ = desc.vertex + " + " + desc.fragment;
     }
   } catch (...) {
@@ -148,12 +148,12 @@ std::shared_ptr<Program> build_program(const ProgramDesc& desc) {
   // The key is the preprocessed text, so an edited file or include is a new program.
   std::string key;
   if (!desc.compute.empty()) {
-    key = stage_key("compute", preprocess(desc.compute, desc.defines));
+    key = stage_key("compute", preprocess(desc.compute, desc.defines, desc.includes));
   } else {
     if (desc.vertex.empty() || desc.fragment.empty())
       throw std::invalid_argument("a program takes either 'compute' or 'vertex' + 'fragment'");
-    key = stage_key("vertex", preprocess(desc.vertex, desc.defines)) +
-          stage_key("fragment", preprocess(desc.fragment, desc.defines));
+    key = stage_key("vertex", preprocess(desc.vertex, desc.defines, desc.includes)) +
+          stage_key("fragment", preprocess(desc.fragment, desc.defines, desc.includes));
   }
   auto& c = cache();
   auto it = c.find(key);
@@ -181,6 +181,7 @@ void set_program_fallback(std::function<void(const std::string&)> sink) { fallba
 std::shared_ptr<Program> get_program(const ProgramDesc& desc) {
   std::string request = desc.compute + "|" + desc.vertex + "|" + desc.fragment;
   for (const auto& [k, v] : desc.defines) request += "|" + k + "=" + v;
+  for (const auto& [k, v] : desc.includes) request += "|#include " + k;
   try {
     auto p = build_program(desc);
     last_good()[request] = p;

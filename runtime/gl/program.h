@@ -14,6 +14,7 @@ namespace sn::gl {
 struct ProgramDesc {
   std::string compute, vertex, fragment;  // paths; compute xor (vertex + fragment)
   Defines defines;
+  Includes includes;  // #include names served from memory (see shader_source.h)
 };
 
 struct UniformInfo {

@@ -51,6 +51,7 @@ std::string line_marker(int index, int line) {
 
 struct Expander {
   ShaderSource& out;
+  const Includes& memory;
   std::set<std::string> included;  // each file is pasted once (like #pragma once)
   std::vector<std::string> stack;
 
@@ -66,6 +67,14 @@ struct Expander {
     for (size_t i = 0; i < lines.size(); ++i) {
       std::smatch m;
       if (std::regex_match(lines[i], m, include_re)) {
+        if (auto it = memory.find(m[1].str()); it != memory.end()) {
+          for (const auto& s : stack)
+            if (s == it->first)
+              throw std::runtime_error(name + ":" + std::to_string(i + 1) + ": #include cycle through '" + s + "'");
+          if (included.insert(it->first).second) expand(it->first, it->second, dir);
+          out.text += line_marker(index, int(i) + 2);
+          continue;
+        }
         fs::path target = dir / m[1].str();
         if (!fs::exists(target)) target = fs::path(shader_root()) / "include" / m[1].str();
         if (!fs::exists(target)) target = fs::path(shader_root()) / m[1].str();
@@ -131,19 +140,20 @@ std::string display_path(const std::string& path) {
   return path;
 }
 
-ShaderSource preprocess(const std::string& path, const Defines& defines) {
+ShaderSource preprocess(const std::string& path, const Defines& defines, const Includes& includes) {
   std::string abs = resolve_shader_path(path);
   ShaderSource src;
   src.text = prolog(defines);
-  Expander ex{src, {fs::weakly_canonical(abs).string()}, {}};
+  Expander ex{src, includes, {fs::weakly_canonical(abs).string()}, {}};
   ex.expand(display_path(abs), read_file(abs), fs::path(abs).parent_path());
   return src;
 }
 
-ShaderSource preprocess_text(const std::string& name, const std::string& text, const Defines& defines) {
+ShaderSource preprocess_text(const std::string& name, const std::string& text, const Defines& defines,
+                             const Includes& includes) {
   ShaderSource src;
   src.text = prolog(defines);
-  Expander ex{src, {}, {}};
+  Expander ex{src, includes, {}, {}};
   ex.expand(name, text, fs::path(shader_root()));
   return src;
 }

@@ -9,6 +9,9 @@
 namespace sn::gl {
 
 using Defines = std::map<std::string, std::string>;
+// Text an #include "name" takes from memory instead of a file: generated code (a lighting
+// model's assembly) and sources given as strings. Looked up before any file.
+using Includes = std::map<std::string, std::string>;
 
 struct ShaderSource {
   std::string text;                              // what glShaderSource receives
@@ -26,13 +29,14 @@ std::string resolve_shader_path(const std::string& path);
 // when the file is inside it, e.g. "shaders/include/mlp.glsl").
 std::string display_path(const std::string& path);
 
-ShaderSource preprocess(const std::string& path, const Defines& defines);
+ShaderSource preprocess(const std::string& path, const Defines& defines, const Includes& includes = {});
 
 // Live mode watches every shader file programs read: when set, `observer` receives the absolute
 // path of each file preprocess() opens (the file itself and its #includes). Empty = off.
 void set_shader_file_observer(std::function<void(const std::string& absolute_path)> observer);
 // Same, from text held in memory (named `name` in messages).
-ShaderSource preprocess_text(const std::string& name, const std::string& text, const Defines& defines);
+ShaderSource preprocess_text(const std::string& name, const std::string& text, const Defines& defines,
+                             const Includes& includes = {});
 
 // Rewrites a Mesa or NVIDIA info log ("0:12(3): error: ..." / "0(12) : error ...") into
 // "shaders/FILE.glsl:LINE: error: ..." lines, each followed by the offending source line.

@@ -1,4 +1,5 @@
-// Shared by the bindings that take lighting models and lights (wrap_lighting.cpp, wrap_scene.cpp).
+// Shared by the bindings that take lighting models and lights (wrap_lighting.cpp,
+// wrap_lighting_define.cpp, wrap_scene.cpp).
 #pragma once
 #include "lua/binding.h"
 #include "scene/light.h"
@@ -13,5 +14,11 @@ constexpr const char* kLightingType = "Lighting";
 scene::Light check_light(lua_State* L, int idx, const char* what, const scene::Light& def = {});
 void push_light(lua_State* L, const scene::Light& l);
 void push_vec3(lua_State* L, const glm::dvec3& v);
+// Pushes a Lighting of model `m` with the parameters in the table at `idx` (nil = defaults).
+int make_lighting(lua_State* L, const shading::ModelPtr& m, int idx);
+
+// sn.lighting.define{...} and sn.lighting.check(model) (wrap_lighting_define.cpp).
+int w_define(lua_State* L);
+int w_check(lua_State* L);
 
 }  // namespace sn::lua

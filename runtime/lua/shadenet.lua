@@ -17,5 +17,6 @@ end
 
 require "shadenet.live"  -- sn.keep, sn.live.*, sn.record
 require "shadenet.scene"  -- scene:render
+require "shadenet.vec3"  -- sn.vec3 (for lighting twins)
 
 return sn

@@ -81,38 +81,49 @@ std::map<std::string, std::vector<double>> read_params(lua_State* L, int idx, co
   return given;
 }
 
-int make(lua_State* L, shading::Model m, int idx) {
-  push(L, std::make_shared<LightingParams>(shading::make_params(m, read_params(L, idx, shading::model_spec(m).name))),
-       kLightingType);
+}  // namespace
+
+int make_lighting(lua_State* L, const shading::ModelPtr& m, int idx) {
+  push(L, std::make_shared<LightingParams>(shading::make_params(m, read_params(L, idx, m->name.c_str()))), kLightingType);
   return 1;
 }
 
-template <shading::Model M>
+namespace {
+
+// sn.lighting.NAME{params}: the constructor __index hands out for every registered model.
 int w_make(lua_State* L) {
-  return make(L, M, 1);
+  return make_lighting(L, shading::find_model(lua_tostring(L, lua_upvalueindex(1))), 1);
 }
 
 // sn.lighting.new(name, {params}) -- the model chosen by a string (sweeps over models).
 int w_new(lua_State* L) {
-  return make(L, shading::model_spec(check_string(L, 1, "sn.lighting.new model name")).model, 2);
+  return make_lighting(L, shading::find_model(check_string(L, 1, "sn.lighting.new model name")), 2);
 }
 
-// sn.lighting.models() -> {"phong", "blinn_phong", ...}
+// sn.lighting.models() -> {"phong", "blinn_phong", ..., then defined models}
 int w_models(lua_State* L) {
-  const auto& specs = shading::model_specs();
-  lua_createtable(L, int(specs.size()), 0);
-  for (std::size_t i = 0; i < specs.size(); ++i) {
-    lua_pushstring(L, specs[i].name);
+  auto all = shading::models();
+  lua_createtable(L, int(all.size()), 0);
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    lua_pushstring(L, all[i]->name.c_str());
     lua_rawseti(L, -2, int(i + 1));
   }
   return 1;
 }
 
-// sn.lighting.unknown_name -> a clear error instead of "attempt to call a nil value".
-int w_unknown(lua_State* L) {
+// sn.lighting.NAME -> the constructor of a registered model, else a clear error instead of
+// "attempt to call a nil value".
+int w_index(lua_State* L) {
   std::string name = lua_isstring(L, 2) ? lua_tostring(L, 2) : type_name_at(L, 2);
+  for (const auto& m : shading::models())
+    if (m->name == name) {
+      lua_pushstring(L, name.c_str());
+      lua_pushcclosure(L, wrap<w_make>, 1);
+      return 1;
+    }
   throw Error("unknown lighting model 'sn.lighting." + name + "' (valid: " + shading::model_names() +
-              ", or sn.lighting.new(name, params), sn.lighting.models(), sn.lighting.stress)");
+              ", or sn.lighting.define{...}, sn.lighting.new(name, params), sn.lighting.models(), "
+              "sn.lighting.stress, sn.lighting.check)");
 }
 
 void push_value(lua_State* L, const std::array<double, 4>& v, int n) {
@@ -134,13 +145,13 @@ int w_params(lua_State* L) {
   lua_createtable(L, 0, int(s.params.size()));
   for (std::size_t i = 0; i < s.params.size(); ++i) {
     push_value(L, p.values[i], s.params[i].components);
-    lua_setfield(L, -2, s.params[i].name);
+    lua_setfield(L, -2, s.params[i].name.c_str());
   }
   return 1;
 }
 
 int w_name(lua_State* L) {
-  lua_pushstring(L, self(L).spec().name);
+  lua_pushstring(L, self(L).spec().name.c_str());
   return 1;
 }
 
@@ -148,7 +159,7 @@ int w_name(lua_State* L) {
 int w_with(lua_State* L) {
   const LightingParams& p = self(L);
   const auto& s = p.spec();
-  auto given = read_params(L, 2, s.name);
+  auto given = read_params(L, 2, s.name.c_str());
   for (std::size_t i = 0; i < s.params.size(); ++i)
     if (!given.count(s.params[i].name))
       given[s.params[i].name] = std::vector<double>(p.values[i].begin(), p.values[i].begin() + s.params[i].components);
@@ -173,27 +184,40 @@ glm::dvec3 vec3_option(const Options& o, const char* key, glm::dvec3 def) {
   return {v[0], v[1], v[2]};
 }
 
-// model:shade{ normal = {x,y,z}, view = {x,y,z}, light = {dir, color}, base = {r,g,b}, raw = false }
-//   -> {r, g, b} from the double-precision CPU twin
+// model:shade{ normal = {x,y,z}, view = {x,y,z}, light = {dir, color}, base = {r,g,b}, uv = {u,v},
+//   position, world_position, tangent, bitangent = {x,y,z}, raw = false }
+//   -> {r, g, b} from the double-precision twin
 int w_shade(lua_State* L) {
   const LightingParams& p = self(L);
-  Options o(L, 2, "model:shade", {"normal", "view", "light", "base", "raw"});
+  Options o(L, 2, "model:shade",
+            {"normal", "view", "light", "base", "uv", "position", "world_position", "tangent", "bitangent", "raw"});
   int li = o.push("light");
   Light light = check_light(L, li, "model:shade option 'light'");
   lua_pop(L, 1);
-  glm::dvec3 n = vec3_option(o, "normal", {0, 0, 0}), v = vec3_option(o, "view", {0, 0, 0});
   if (!o.has("normal") || !o.has("view")) throw Error("model:shade needs 'normal' and 'view'");
-  glm::dvec3 base = vec3_option(o, "base", glm::dvec3(1.0));
-  push_vec3(L, o.boolean("raw", false) ? shading::shade_raw(p, light, n, v, base) : shading::shade(p, light, n, v, base));
+  shading::Surface s = shading::make_surface(light, vec3_option(o, "normal", {0, 0, 0}), vec3_option(o, "view", {0, 0, 0}));
+  s.base_color = vec3_option(o, "base", glm::dvec3(1.0));
+  if (o.has("uv")) {
+    auto uv = o.numbers("uv", 2);
+    s.uv = {uv[0], uv[1]};
+  }
+  s.position = vec3_option(o, "position", glm::dvec3(0.0));
+  s.world_position = vec3_option(o, "world_position", glm::dvec3(0.0));
+  s.tangent = shading::safe_normalize(vec3_option(o, "tangent", glm::dvec3(0.0)));
+  s.bitangent = shading::safe_normalize(vec3_option(o, "bitangent", glm::dvec3(0.0)));
+  push_vec3(L, o.boolean("raw", false) ? shading::shade_raw(p, s) : shading::shade(p, s));
   return 1;
 }
 
-// model:evaluate{ normals = Buffer, views = Buffer, base_colors = Buffer, targets = Buffer,
-//                 count = n, light = {...}, color = "rgb", raw = false }
+// model:evaluate{ normals = Buffer, views = Buffer, targets = Buffer, count = n, light = {...},
+//                 color = "rgb", raw = false, and per attribute the model reads: base_colors, uvs,
+//                 positions, world_positions, tangents, bitangents = Buffer }
 // Shades `count` vec4 samples on the GPU (eval_lighting.comp) into `targets`.
 int w_evaluate(lua_State* L) {
   const LightingParams& p = self(L);
-  Options o(L, 2, "model:evaluate", {"normals", "views", "base_colors", "targets", "count", "light", "color", "raw"});
+  Options o(L, 2, "model:evaluate",
+            {"normals", "views", "targets", "count", "light", "color", "raw", "base_colors", "uvs", "positions",
+             "world_positions", "tangents", "bitangents"});
   auto buffer = [&](const char* key, bool required) -> gl::Buffer* {
     int i = o.push(key);
     gl::Buffer* b = nullptr;
@@ -203,8 +227,12 @@ int w_evaluate(lua_State* L) {
     return b;
   };
   gl::Buffer* n = buffer("normals", true);
-  gl::Buffer* v = buffer("views", true);
-  gl::Buffer* base = buffer("base_colors", false);
+  shading::SampleBuffers in{{"normal", n}, {"view", buffer("views", true)}};
+  for (const auto& a : p.spec().attributes) {
+    std::string key = a + "s";
+    in[a] = buffer(key.c_str(), false);
+    if (!in[a]) throw Error("model:evaluate: lighting model " + p.spec().name + " reads '" + a + "': give " + key + " = Buffer");
+  }
   gl::Buffer* out = buffer("targets", true);
   long long count = o.integer("count", (long long)n->count());
   if (count < 0) throw Error("model:evaluate option 'count' must be >= 0");
@@ -212,7 +240,7 @@ int w_evaluate(lua_State* L) {
   Light light = check_light(L, li, "model:evaluate option 'light'");
   lua_pop(L, 1);
   auto color = shading::parse_color_space(o.string("color", "rgb"));
-  shading::evaluate(p, light, *n, *v, base, *out, std::size_t(count), color, o.boolean("raw", false));
+  shading::evaluate(p, light, in, *out, std::size_t(count), color, o.boolean("raw", false));
   return 0;
 }
 
@@ -332,11 +360,8 @@ void open_lighting(lua_State* L) {
   define_box_type<LightingParams>(L, kLightingType, methods, wrap<w_tostring>, meta);
 
   static const luaL_Reg fns[] = {
-      SN_FN("phong", w_make<shading::Model::phong>),
-      SN_FN("blinn_phong", w_make<shading::Model::blinn_phong>),
-      SN_FN("ggx", w_make<shading::Model::ggx>),
-      SN_FN("toon3", w_make<shading::Model::toon3>),
-      SN_FN("textured_phong", w_make<shading::Model::textured_phong>),
+      SN_FN("define", w_define),
+      SN_FN("check", w_check),
       SN_FN("new", w_new),
       SN_FN("models", w_models),
       SN_FN("stress", w_stress),
@@ -344,8 +369,8 @@ void open_lighting(lua_State* L) {
       {nullptr, nullptr}};
   lua_newtable(L);
   luaL_register(L, nullptr, fns);
-  lua_newtable(L);  // metatable: unknown model names are errors that list the valid ones
-  lua_pushcfunction(L, wrap<w_unknown>);
+  lua_newtable(L);  // metatable: sn.lighting.NAME is a registered model's constructor, else an error
+  lua_pushcfunction(L, wrap<w_index>);
   lua_setfield(L, -2, "__index");
   lua_setmetatable(L, -2);
   lua_setfield(L, -2, "lighting");

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+
+#include "shading/lighting_params.h"
 
 namespace sn::shading {
 
@@ -92,26 +95,20 @@ dvec3 toon3(double s, const dvec3& c_a, const dvec3& c_d, const dvec3& c_s, doub
   return c_s;
 }
 
-dvec3 shade_raw(const LightingParams& p, const scene::Light& light, const dvec3& n_in, const dvec3& v_in, const dvec3& base) {
-  dvec3 n = safe_normalize(n_in), v = safe_normalize(v_in), l = light.dir;
-  switch (p.model) {
-    case Model::phong:
-      return light.color * phong(n, v, l, p.color("color"), p.scalar("ambient"), p.color("specular"),
-                                 p.scalar("shininess"));
-    case Model::blinn_phong:
-      return light.color * blinn_phong(n, v, l, p.color("color"), p.scalar("ambient"), p.color("specular"),
-                                       p.scalar("shininess"));
-    case Model::ggx:
-      return ggx(n, v, l, p.scalar("roughness"), p.color("f0"), p.color("diffuse"), p.color("ambient"), light.color);
-    case Model::toon3:
-      return toon3(phong_reflectance(n, v, l, p.scalar("ambient_weight"), p.scalar("specular_weight"),
-                                     p.scalar("shininess")),
-                   p.color("ambient"), p.color("diffuse"), p.color("specular"), p.scalar("a"), p.vec4("thresholds"));
-    case Model::textured_phong:
-      return light.color * phong(n, v, l, p.color("color") * glm::clamp(base, 0.0, 1.0), p.scalar("ambient"),
-                                 p.color("specular"), p.scalar("shininess"));
-  }
-  return dvec3(0.0);
+dvec3 shade_raw(const LightingParams& p, const Surface& s) { return p.spec().twin(s, p); }
+
+dvec3 shade(const LightingParams& p, const Surface& s) { return glm::clamp(shade_raw(p, s), 0.0, 1.0); }
+
+namespace {
+Surface surface_at(const scene::Light& light, const dvec3& n, const dvec3& v, const dvec3& base) {
+  Surface s = make_surface(light, n, v);
+  s.base_color = base;
+  return s;
+}
+}  // namespace
+
+dvec3 shade_raw(const LightingParams& p, const scene::Light& light, const dvec3& n, const dvec3& v, const dvec3& base) {
+  return shade_raw(p, surface_at(light, n, v, base));
 }
 
 dvec3 shade(const LightingParams& p, const scene::Light& light, const dvec3& n, const dvec3& v, const dvec3& base) {
@@ -119,37 +116,17 @@ dvec3 shade(const LightingParams& p, const scene::Light& light, const dvec3& n, 
 }
 
 dvec3 upper_bound(const LightingParams& p, const scene::Light& light) {
-  switch (p.model) {
-    case Model::phong:
-    case Model::blinn_phong:
-    case Model::textured_phong:  // the texture is in [0, 1]
-      return light.color * (p.color("color") + p.color("specular"));
-    case Model::ggx: {
-      // pi D <= 1 / alpha^2, V n.l <= 1 / (2 alpha), F <= 1.
-      double alpha = std::max(p.scalar("roughness") * p.scalar("roughness"), kMinAlpha);
-      dvec3 rho = p.color("diffuse");
-      return p.color("ambient") * (rho + p.color("f0")) + light.color * (rho + dvec3(0.5 / (alpha * alpha * alpha)));
-    }
-    case Model::toon3:
-      return glm::max(p.color("ambient"), glm::max(p.color("diffuse"), p.color("specular")));
-  }
-  return dvec3(0.0);
+  if (p.spec().bound) return p.spec().bound(p, light);
+  return dvec3(std::numeric_limits<double>::infinity());
 }
 
-bool near_discontinuity(const LightingParams& p, const scene::Light& light, const dvec3& n_in, const dvec3& v_in,
-                        double eps) {
-  dvec3 n = safe_normalize(n_in), v = safe_normalize(v_in);
-  double nl = glm::dot(n, light.dir), nv = glm::dot(n, v);
-  if (std::abs(nl) < eps) return true;
-  if (p.model == Model::ggx && std::abs(nv) < eps) return true;
-  if (p.model == Model::toon3) {
-    double s = phong_reflectance(n, v, light.dir, p.scalar("ambient_weight"), p.scalar("specular_weight"),
-                                 p.scalar("shininess"));
-    glm::dvec4 t = p.vec4("thresholds");
-    for (int k = 0; k < 4; ++k)
-      if (std::abs(s - t[k]) < eps) return true;
-  }
-  return false;
+bool near_discontinuity(const LightingParams& p, const Surface& s, double eps) {
+  if (std::abs(glm::dot(s.n, s.l)) < eps || std::abs(glm::dot(s.n, s.v)) < eps) return true;
+  return p.spec().near_branch && p.spec().near_branch(p, s, eps);
+}
+
+bool near_discontinuity(const LightingParams& p, const scene::Light& light, const dvec3& n, const dvec3& v, double eps) {
+  return near_discontinuity(p, make_surface(light, n, v), eps);
 }
 
 }  // namespace sn::shading

@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 
 #include "scene/light.h"
+#include "shading/lighting_model.h"
 #include "shading/lighting_params.h"
 
 namespace sn::shading {
@@ -51,16 +52,20 @@ glm::dvec3 ggx(const glm::dvec3& n, const glm::dvec3& v, const glm::dvec3& l, do
 glm::dvec3 toon3(double s_p, const glm::dvec3& c_a, const glm::dvec3& c_d, const glm::dvec3& c_s, double a,
                  const glm::dvec4& thresholds);
 
-// The model as a whole: n, v as given (normalised here), `base` the texture colour (textured
-// models only). shade() = clamp(shade_raw(), 0, 1).
+// The model as a whole, through its registered twin (lighting_model.h). shade() = clamp(shade_raw(), 0, 1).
+glm::dvec3 shade_raw(const LightingParams& p, const Surface& s);
+glm::dvec3 shade(const LightingParams& p, const Surface& s);
+// The same at (n, v) as given (normalised here) with `base` the texture colour (textured models).
 glm::dvec3 shade_raw(const LightingParams& p, const scene::Light& light, const glm::dvec3& n, const glm::dvec3& v,
                      const glm::dvec3& base = glm::dvec3(1.0));
 glm::dvec3 shade(const LightingParams& p, const scene::Light& light, const glm::dvec3& n, const glm::dvec3& v,
                  const glm::dvec3& base = glm::dvec3(1.0));
-// A per-channel bound on shade_raw over every input (base colours in [0, 1]).
+// A per-channel bound on shade_raw over every input (base colours in [0, 1]); +infinity for a
+// model whose definition gives none.
 glm::dvec3 upper_bound(const LightingParams& p, const scene::Light& light);
-// True when (n, v) lies within `eps` of a branch of the model (n.l = 0, n.v = 0, a toon
-// threshold), where float and double may legitimately take different sides.
+// True when the point lies within `eps` of a branch of the model (n.l = 0, n.v = 0, or one its
+// definition names, such as a toon3 threshold), where float and double may take different sides.
+bool near_discontinuity(const LightingParams& p, const Surface& s, double eps);
 bool near_discontinuity(const LightingParams& p, const scene::Light& light, const glm::dvec3& n, const glm::dvec3& v,
                         double eps);
 

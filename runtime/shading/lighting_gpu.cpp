@@ -3,6 +3,8 @@
 #include <epoxy/gl.h>
 
 #include <algorithm>
+#include <cctype>
+#include <regex>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -54,64 +56,139 @@ std::shared_ptr<gl::Buffer> upload(const std::vector<glm::vec3>& v) {
 
 }  // namespace
 
-gl::Defines lighting_defines(const LightingParams& p) { return {{"LIGHTING_MODEL", std::to_string(int(p.model))}}; }
+namespace {
+
+const char* glsl_type(int components) { return components == 1 ? "float" : components == 3 ? "vec3" : "vec4"; }
+
+std::string upper(const std::string& s) {
+  std::string u;
+  for (char c : s) u += char(std::toupper(static_cast<unsigned char>(c)));
+  return u;
+}
+
+// The name the definition's source is #included by: its file, or a label for a string.
+std::string source_include(const LightingModel& m) { return m.glsl_path.empty() ? m.glsl_name : m.glsl_path; }
+
+// Binding of each surface attribute's buffer in eval_lighting.comp.
+int attribute_binding(const std::string& a) {
+  const auto& all = surface_attributes();
+  return 3 + int(std::find(all.begin(), all.end(), a) - all.begin());
+}
+
+}  // namespace
+
+gl::Includes lighting_includes(const LightingModel& m) {
+  std::string g = "// Lighting model '" + m.name + "', assembled by runtime/shading/lighting_gpu.cpp.\n";
+  g += "#include \"lighting/common.glsl\"\n#include \"lighting/surface.glsl\"\n";
+  g += "struct Params {\n";
+  for (const auto& ps : m.params) g += std::string("  ") + glsl_type(ps.components) + " " + ps.name + ";\n";
+  if (m.params.empty()) g += "  float unused_;  // GLSL has no empty structs\n";
+  g += "};\nuniform vec3 u_light_dir;  // unit, towards the light\nuniform vec3 u_light_color;\n";
+  for (const auto& ps : m.params) g += std::string("uniform ") + glsl_type(ps.components) + " u_" + ps.name + ";\n";
+  g += "#include \"" + source_include(m) + "\"\n";
+  g += "Params lighting_params() {\n  Params p;\n";
+  for (const auto& ps : m.params) g += "  p." + ps.name + " = u_" + ps.name + ";\n";
+  if (m.params.empty()) g += "  p.unused_ = 0.0;\n";
+  g += "  return p;\n}\n";
+  g += "// n and v normalised, the light filled in; the caller sets the attributes the model reads.\n"
+       "Surface lighting_surface(vec3 n, vec3 v) {\n"
+       "  return Surface(safe_normalize(n), safe_normalize(v), u_light_dir, u_light_color, vec3(1.0), vec2(0.0),\n"
+       "                 vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));\n}\n"
+       "vec3 lighting_raw(Surface s) { return shade(s, lighting_params()); }\n"
+       "vec3 lighting(Surface s) { return clamp(lighting_raw(s), 0.0, 1.0); }\n";
+  gl::Includes inc{{"lighting/model.glsl", g}};
+  if (m.glsl_path.empty()) inc[m.glsl_name] = m.glsl_source;
+  return inc;
+}
+
+void use_lighting(gl::ProgramDesc& desc, const LightingParams& p) {
+  for (auto& [k, v] : lighting_includes(p.spec())) desc.includes[k] = v;
+  for (const auto& a : p.spec().attributes) desc.defines["SURFACE_" + upper(a)] = "1";
+}
 
 void set_lighting_uniforms(gl::Program& prog, const LightingParams& p, const scene::Light& light) {
   if (!(std::abs(glm::length(light.dir) - 1.0) < 1e-6))  // float-rounded unit vectors pass
     throw std::logic_error("the light direction must be unit length (build lights with make_light)");
-  prog.set_uniform("u_light_dir", {light.dir.x, light.dir.y, light.dir.z});
+  if (prog.uniform("u_light_dir")) prog.set_uniform("u_light_dir", {light.dir.x, light.dir.y, light.dir.z});
   if (prog.uniform("u_light_color"))  // toon3's colours are its own: it reads only the direction
     prog.set_uniform("u_light_color", {light.color.r, light.color.g, light.color.b});
-  const ModelSpec& s = p.spec();
+  const LightingModel& s = p.spec();
   for (std::size_t i = 0; i < s.params.size(); ++i) {
-    std::string name = std::string("u_") + s.params[i].name;
-    // A parameter the compiler found unused (e.g. base colours of a shader that never reads
-    // them) has no location; every name comes from the spec table, so this hides no typo.
+    std::string name = "u_" + s.params[i].name;
+    // A parameter the compiler found unused has no location; every name comes from the
+    // definition, so this hides no typo.
     if (!prog.uniform(name)) continue;
     prog.set_uniform(name, std::vector<double>(p.values[i].begin(), p.values[i].begin() + s.params[i].components));
   }
 }
 
-void evaluate(const LightingParams& p, const scene::Light& light, const gl::Buffer& normals, const gl::Buffer& views,
-              const gl::Buffer* base_colors, gl::Buffer& targets, std::size_t count, shading::ColorSpace color, bool raw) {
-  if (count == 0) return;
-  require_size(normals, count, "normals");
-  require_size(views, count, "views");
-  require_size(targets, count, "targets");
-  if (p.spec().textured) {
-    if (!base_colors)
-      throw std::invalid_argument(std::string("lighting model ") + p.spec().name + " needs base colours (a texture)");
-    require_size(*base_colors, count, "base colour");
-  }
-  gl::Defines d = lighting_defines(p);
-  d["COLOR_SPACE"] = std::to_string(int(color));
-  d["LIGHTING_RAW"] = raw ? "1" : "0";
+void compile_lighting(const LightingModel& m) {
+  static const std::regex entry(R"(vec3\s+shade\s*\(\s*(in\s+)?Surface\s+\w+\s*,\s*(in\s+)?Params\s+\w+\s*\))");
+  std::string text = m.glsl_text();
+  if (!std::regex_search(text, entry))
+    throw std::invalid_argument("lighting model '" + m.name + "': its glsl (" + gl::display_path(source_include(m)) +
+                                ") must define vec3 shade(Surface s, Params p) (docs/lua-api/ground-truth.md)");
   gl::ProgramDesc desc;
   desc.compute = "eval_lighting.comp";
-  desc.defines = d;
+  desc.defines = {{"COLOR_SPACE", "0"}, {"LIGHTING_RAW", "1"}};
+  LightingParams p;
+  p.model = std::make_shared<const LightingModel>(m);
+  use_lighting(desc, p);
+  gl::get_program(desc);
+}
+
+void evaluate(const LightingParams& p, const scene::Light& light, const SampleBuffers& in, gl::Buffer& targets,
+              std::size_t count, shading::ColorSpace color, bool raw) {
+  if (count == 0) return;
+  const LightingModel& m = p.spec();
+  auto get = [&](const std::string& a) -> const gl::Buffer& {
+    auto it = in.find(a);
+    if (it == in.end() || !it->second)
+      throw std::invalid_argument("lighting model " + m.name + " reads the attribute '" + a +
+                                  "', which these samples do not hold");
+    require_size(*it->second, count, (a + " samples").c_str());
+    return *it->second;
+  };
+  const gl::Buffer& normals = get("normal");
+  const gl::Buffer& views = get("view");
+  require_size(targets, count, "targets");
+  gl::ProgramDesc desc;
+  desc.compute = "eval_lighting.comp";
+  desc.defines = {{"COLOR_SPACE", std::to_string(int(color))}, {"LIGHTING_RAW", raw ? "1" : "0"}};
+  use_lighting(desc, p);
   auto prog = gl::get_program(desc);
   set_lighting_uniforms(*prog, p, light);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, normals.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, views.id());
-  if (base_colors) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, base_colors->id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, targets.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, targets.id());
+  for (const auto& a : m.attributes) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(attribute_binding(a)), get(a).id());
   dispatch_samples(*prog, count);
+}
+
+std::vector<glm::vec3> evaluate(const LightingParams& p, const scene::Light& light, const HostSamples& in,
+                                shading::ColorSpace color, bool raw) {
+  auto normals = in.find("normal");
+  std::size_t n = normals == in.end() ? 0 : normals->second.size();
+  std::vector<std::shared_ptr<gl::Buffer>> keep;
+  SampleBuffers buffers;
+  for (const auto& [a, v] : in) {
+    if (v.size() != n)
+      throw std::invalid_argument("evaluate: " + std::to_string(n) + " normals but " + std::to_string(v.size()) + " " + a +
+                                  " samples");
+    keep.push_back(upload(v));
+    buffers[a] = keep.back().get();
+  }
+  gl::Buffer out(gl::ElemType::vec4, std::max<std::size_t>(n, 1));
+  evaluate(p, light, buffers, out, n, color, raw);
+  return from_vec4(out, n);
 }
 
 std::vector<glm::vec3> evaluate(const LightingParams& p, const scene::Light& light, const std::vector<glm::vec3>& normals,
                                 const std::vector<glm::vec3>& views, const std::vector<glm::vec3>& base_colors,
                                 shading::ColorSpace color, bool raw) {
-  if (normals.size() != views.size())
-    throw std::invalid_argument("evaluate: " + std::to_string(normals.size()) + " normals but " +
-                                std::to_string(views.size()) + " view directions");
-  if (p.spec().textured && base_colors.size() != normals.size())
-    throw std::invalid_argument("evaluate: a textured model needs one base colour per sample");
-  std::size_t n = normals.size();
-  auto nb = upload(normals), vb = upload(views);
-  auto bb = p.spec().textured ? upload(base_colors) : nullptr;
-  gl::Buffer out(gl::ElemType::vec4, std::max<std::size_t>(n, 1));
-  evaluate(p, light, *nb, *vb, bb.get(), out, n, color, raw);
-  return from_vec4(out, n);
+  HostSamples in{{"normal", normals}, {"view", views}};
+  if (p.spec().reads("base_color")) in["base_color"] = base_colors;
+  return evaluate(p, light, in, color, raw);
 }
 
 void convert_colors(const gl::Buffer& in, gl::Buffer& out, std::size_t count, shading::ColorSpace space, bool to_rgb) {

@@ -2,6 +2,8 @@
 // shaders/convert_color.comp over sample buffers (vec4 per sample, .xyz used).
 #pragma once
 #include <cstddef>
+#include <map>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -14,19 +16,33 @@
 
 namespace sn::shading {
 
-// LIGHTING_MODEL for shaders/include/lighting/model.glsl.
-gl::Defines lighting_defines(const LightingParams& p);
+// Makes a program shade with the model: "lighting/model.glsl" assembled from its definition
+// (Params, the uniforms, its shade() function, lighting_surface/lighting_raw/lighting) and
+// SURFACE_<ATTRIBUTE> defined for each attribute it reads.
+void use_lighting(gl::ProgramDesc& desc, const LightingParams& p);
+// The assembled "lighting/model.glsl" (and the definition's source when it is a string).
+gl::Includes lighting_includes(const LightingModel& m);
 // Sets u_light_dir, u_light_color and "u_" + every parameter the program uses.
 void set_lighting_uniforms(gl::Program& prog, const LightingParams& p, const scene::Light& light);
+// Compiles the model's GLSL once (a small compute program), so a definition's error shows at
+// its own file:line before any dataset is built.
+void compile_lighting(const LightingModel& m);
 
-// Shades `count` samples: targets[i] = the model at (normals[i], views[i], base_colors[i]) in
-// colour space `color`, or the unclamped RGB radiance when `raw`. `base_colors` is read only by
-// textured models (may be null otherwise; throws when a textured model gets none).
-void evaluate(const LightingParams& p, const scene::Light& light, const gl::Buffer& normals, const gl::Buffer& views,
-              const gl::Buffer* base_colors, gl::Buffer& targets, std::size_t count,
-              shading::ColorSpace color = shading::ColorSpace::rgb, bool raw = false);
+// Per-sample vec4 buffers by G-buffer attribute: "normal" and "view", plus each attribute the
+// model reads ("base_color", "uv", "tangent", ...).
+using SampleBuffers = std::map<std::string, const gl::Buffer*>;
 
-// Host-side convenience (uploads, evaluates, downloads).
+// Shades `count` samples: targets[i] = the model at sample i in colour space `color`, or the
+// unclamped RGB radiance when `raw`. Throws naming an attribute the model reads that `in` lacks.
+void evaluate(const LightingParams& p, const scene::Light& light, const SampleBuffers& in, gl::Buffer& targets,
+              std::size_t count, shading::ColorSpace color = shading::ColorSpace::rgb, bool raw = false);
+
+// Host-side convenience (uploads, evaluates, downloads): per attribute, one vec3 per sample
+// (uv in .xy).
+using HostSamples = std::map<std::string, std::vector<glm::vec3>>;
+std::vector<glm::vec3> evaluate(const LightingParams& p, const scene::Light& light, const HostSamples& in,
+                                shading::ColorSpace color = shading::ColorSpace::rgb, bool raw = false);
+// The same for models that read normal, view and base_color at most.
 std::vector<glm::vec3> evaluate(const LightingParams& p, const scene::Light& light, const std::vector<glm::vec3>& normals,
                                 const std::vector<glm::vec3>& views, const std::vector<glm::vec3>& base_colors = {},
                                 shading::ColorSpace color = shading::ColorSpace::rgb, bool raw = false);

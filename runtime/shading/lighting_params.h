@@ -1,6 +1,6 @@
-// The lighting models a scene can be shaded with, their parameters, and each parameter's
-// domain. One table (model_specs) drives the Lua constructors, validation, the GLSL uniforms
-// ("u_" + name), the CPU twin and the dataset cache key, so a parameter exists in one place.
+// A lighting model with every parameter set: the value a Lua "Lighting" object holds, and what
+// datasets, truth images and the stress test are built from. Parameters come from the model's
+// definition (lighting_model.h); values are checked against each parameter's domain.
 #pragma once
 #include <array>
 #include <map>
@@ -9,51 +9,35 @@
 
 #include <glm/glm.hpp>
 
+#include "shading/lighting_model.h"
+
 namespace sn::shading {
 
-// The order is the value of LIGHTING_MODEL in shaders/include/lighting/model.glsl.
-enum class Model { phong, blinn_phong, ggx, toon3, textured_phong };
-
-struct ParamSpec {
-  const char* name;
-  int components;             // 1 scalar, 3 colour (a single number is spread over r, g, b), 4 thresholds
-  std::array<double, 4> def;  // default (first `components` used)
-  double min, max;            // every component must lie in [min, max]
-  const char* meaning;        // one line for error messages and docs
-};
-
-struct ModelSpec {
-  Model model;
-  const char* name;  // "phong", "blinn_phong", "ggx", "toon3", "textured_phong"
-  std::vector<ParamSpec> params;
-  bool textured;  // reads the mesh's base colour (G-buffer attribute "base_color")
-};
-
-const std::vector<ModelSpec>& model_specs();
-const ModelSpec& model_spec(Model m);
-// Throws "unknown lighting model 'x' (valid: phong, blinn_phong, ggx, toon3, textured_phong)".
-const ModelSpec& model_spec(const std::string& name);
-std::string model_names();  // "phong, blinn_phong, ..."
-
-// One model with every parameter set (defaults where not given), validated.
 struct LightingParams {
-  Model model = Model::phong;
-  std::vector<std::array<double, 4>> values;  // one per model_spec(model).params, same order
+  ModelPtr model;
+  std::vector<std::array<double, 4>> values;  // one per model->params, same order
 
-  const ModelSpec& spec() const { return model_spec(model); }
+  const LightingModel& spec() const;  // throws for a default-constructed (model-less) value
   double scalar(const char* name) const;
   glm::dvec3 color(const char* name) const;
   glm::dvec4 vec4(const char* name) const;
   // "ggx(roughness=0.3, f0={1, 0.71, 0.29}, diffuse={0, 0, 0}, ambient={0.05, 0.05, 0.05})"
   std::string describe() const;
-  // Exact text of every value (hex floats), for cache keys.
+  // Exact text of every value (hex floats), for cache keys. The model's GLSL is keyed by the
+  // caches themselves (they hash the shader sources a value passes through).
   std::string key() const;
 };
 
 // Builds a model from named values; each vector holds 1 number, or `components` numbers.
 // Throws naming the model and parameter for an unknown name (listing the valid ones), a wrong
-// number of values, a value outside its domain, or thresholds out of order.
-LightingParams make_params(Model m, const std::map<std::string, std::vector<double>>& given);
-inline LightingParams default_params(Model m) { return make_params(m, {}); }
+// number of values, a value outside its domain, or a failed cross-parameter check.
+LightingParams make_params(const ModelPtr& m, const std::map<std::string, std::vector<double>>& given);
+inline LightingParams make_params(const std::string& name, const std::map<std::string, std::vector<double>>& given) {
+  return make_params(find_model(name), given);
+}
+inline LightingParams default_params(const std::string& name) { return make_params(name, {}); }
+
+// "0.3" or "{1, 0.71, 0.29}": a parameter value as errors and describe() write it.
+std::string values_text(const std::array<double, 4>& v, int n);
 
 }  // namespace sn::shading

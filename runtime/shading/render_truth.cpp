@@ -12,7 +12,7 @@ namespace sn::shading {
 
 std::vector<std::string> model_attributes(const LightingParams& p) {
   std::vector<std::string> a = {"normal", "view"};
-  if (p.spec().textured) a.push_back("base_color");
+  for (const auto& x : p.spec().attributes) a.push_back(x);
   return a;
 }
 
@@ -21,20 +21,19 @@ io::Image render_truth(const scene::GBuffer& g, const LightingParams& p, const s
     bool held = false;
     for (const auto& h : g.attributes) held = held || h == a;
     if (!held)
-      throw std::invalid_argument(std::string("lighting model ") + p.spec().name + " reads the G-buffer attribute '" +
+      throw std::invalid_argument("lighting model " + p.spec().name + " reads the G-buffer attribute '" +
                                   a + "', which this G-buffer does not hold");
   }
   gl::ProgramDesc desc;
   desc.vertex = "fullscreen.vert";
   desc.fragment = "shade_truth.frag";
-  desc.defines = lighting_defines(p);
+  use_lighting(desc, p);
   auto prog = gl::get_program(desc);
   set_lighting_uniforms(*prog, p, light);
-  const char* samplers[] = {"u_normal", "u_view", "u_base_color"};
   auto names = model_attributes(p);
   for (std::size_t i = 0; i < names.size(); ++i) {
     glBindTextureUnit(GLuint(i), g.target->color_texture(g.attachment(names[i])));
-    prog->set_uniform(samplers[i], {double(i)});
+    prog->set_uniform("u_" + names[i], {double(i)});
   }
   gl::RenderTarget out(g.width, g.height, 1);
   out.bind();

@@ -10,15 +10,22 @@
 #include <glm/glm.hpp>
 
 #include "scene/light.h"
+#include "shading/lighting_gpu.h"
 #include "shading/lighting_params.h"
 
 namespace sn::shading {
 
 struct StressSample {
   glm::vec3 n, v, base;
+  glm::vec3 uv;  // .xy
+  glm::vec3 position, world_position;
+  glm::vec3 tangent, bitangent;  // a frame around n at varying angles; some zero, some along n
 };
 // The grid, built around the light direction (deterministic; about 30k samples).
 std::vector<StressSample> adversarial_grid(const scene::Light& light);
+// The grid as per-attribute sample lists (for evaluate), and one sample as the twin sees it.
+HostSamples stress_samples(const std::vector<StressSample>& grid);
+Surface stress_surface(const StressSample& x, const scene::Light& light);
 
 struct StressCounts {
   std::size_t nan = 0, inf = 0;
@@ -42,6 +49,19 @@ StressResult stress_test(const LightingParams& p, const scene::Light& light);
 StressResult stress_test(const LightingParams& p, const std::vector<scene::Light>& lights);
 // An oblique light, and one along +Y, for which n.l = 0 and n.v = 0 are exact in float.
 std::vector<scene::Light> stress_lights();
+
+// sn.lighting.check: the GPU shader against the twin (raw radiance) over the adversarial grid
+// and 20,000 random unit (n, v) pairs, skipping points within kTwinBranchEps of a branch
+// (near_discontinuity). The difference is
+// |gpu - twin| / max(1, |twin|) per channel; NaN or Inf on either side is infinite.
+constexpr double kTwinBranchEps = 1e-3;
+struct TwinCheck {
+  double max_difference = 0;
+  std::size_t compared = 0, skipped = 0;
+  Surface worst;  // where the largest difference is
+  glm::dvec3 worst_gpu{0.0}, worst_twin{0.0};
+};
+TwinCheck check_twin(const LightingParams& p, const std::vector<scene::Light>& lights);
 
 // The models the stress table covers: each model at its defaults and at the edges of its
 // domain (roughness 0, 1e-4, 1; exponents 0 and 1e6; weights at their maxima; equal thresholds).

@@ -1,4 +1,4 @@
--- expect: dataset_sample_textured\.lua:5: sn\.dataset\.sample: lighting model textured_phong reads a base colour from a texture, which a sampled direction has not: build its dataset from a textured mesh with scene:dataset\{\.\.\.\}
+-- expect: dataset_sample_textured\.lua:5: sn\.dataset\.sample: lighting model textured_phong reads the attribute 'base_color', which a sampled \(normal, view\) pair has not: build its dataset from a mesh with scene:dataset\{\.\.\.\}
 local sn = require "shadenet"
 
 -- A sampled (normal, view) has no texture to read a base colour from.

@@ -159,7 +159,7 @@ TEST(TruthImage, EveryCoveredPixelMatchesTheTwin) {
   auto g = scene::render_gbuffer({{&f.sphere}}, f.camera, W, H, {"normal", "view"});
   io::Image n = g.target->read(0), v = g.target->read(1);
   scene::Light light = scene::make_light({0.5, 0.7, 0.6}, {1, 0.9, 0.8});
-  for (auto m : {shading::Model::phong, shading::Model::ggx, shading::Model::toon3}) {
+  for (auto m : {"phong", "ggx", "toon3"}) {
     auto p = shading::default_params(m);
     io::Image img = shading::render_truth(g, p, light);
     int compared = 0;
@@ -178,7 +178,7 @@ TEST(TruthImage, EveryCoveredPixelMatchesTheTwin) {
       }
     EXPECT_GT(compared, W * H / 8);
   }
-  auto textured = shading::default_params(shading::Model::textured_phong);
+  auto textured = shading::default_params("textured_phong");
   EXPECT_THROW(shading::render_truth(g, textured, light), std::invalid_argument);  // needs base_color
 }
 
@@ -196,7 +196,7 @@ TEST(Dataset, RowsAreTheTwinOfTheirInputsInTheRequestedColourSpace) {
   auto s = sphere_scene();
   for (auto color : {shading::ColorSpace::rgb, shading::ColorSpace::hsv, shading::ColorSpace::cie_lab}) {
     data::DatasetRequest r;
-    r.target = shading::default_params(shading::Model::ggx);
+    r.target = shading::default_params("ggx");
     r.color = color;
     r.samples = 0;
     auto d = data::build_dataset(s, r);
@@ -230,7 +230,7 @@ TEST(Dataset, SplitIsDeterministicPerSeedAndSamplesCapTheRows) {
   gl::current();
   auto s = sphere_scene();
   data::DatasetRequest r;
-  r.target = shading::default_params(shading::Model::phong);
+  r.target = shading::default_params("phong");
   r.inputs = {"position", "uv", "normal"};
   r.samples = 1000;
   r.seed = 5;
@@ -251,7 +251,7 @@ TEST(Dataset, ZeroCoveredPixelsIsAnErrorNotAnEmptyDataset) {
   auto s = sphere_scene();
   s.views = {scene::Camera({0, 0, 5}, {0, 0, 10})};  // looking away from the sphere
   data::DatasetRequest r;
-  r.target = shading::default_params(shading::Model::phong);
+  r.target = shading::default_params("phong");
   try {
     data::build_dataset(s, r);
     FAIL();
@@ -263,7 +263,7 @@ TEST(Dataset, ZeroCoveredPixelsIsAnErrorNotAnEmptyDataset) {
 TEST(Dataset, CacheKeyCoversMeshContent) {
   auto s = sphere_scene();
   data::DatasetRequest r;
-  r.target = shading::default_params(shading::Model::phong);
+  r.target = shading::default_params("phong");
   std::string k = data::dataset_key(s, r);
   auto edited = std::make_shared<scene::Mesh>(*s.meshes[0].mesh);
   edited->positions[10].x += 1e-6f;

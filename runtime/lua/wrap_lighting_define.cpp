@@ -1,0 +1,224 @@
+// sn.lighting.define{...}: a lighting model from Lua + GLSL, registered exactly like the
+// built-ins (shading/lighting_model.h), and sn.lighting.check(model), which holds its GPU shader
+// to its twin. The twin of a defined model is a Lua function, called per point.
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "gl/shader_source.h"
+#include "io/text.h"
+#include "lua/binding.h"
+#include "lua/lighting_binding.h"
+#include "shading/lighting.h"
+#include "shading/lighting_gpu.h"
+#include "shading/stress.h"
+
+namespace sn::lua {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+void set_vec3(lua_State* L, const char* key, const glm::dvec3& v) {
+  push_vec3(L, v);
+  lua_setfield(L, -2, key);
+}
+
+void push_surface(lua_State* L, const shading::Surface& s) {
+  lua_createtable(L, 0, 10);
+  set_vec3(L, "n", s.n);
+  set_vec3(L, "v", s.v);
+  set_vec3(L, "l", s.l);
+  set_vec3(L, "light_color", s.light_color);
+  set_vec3(L, "base_color", s.base_color);
+  lua_createtable(L, 2, 0);
+  lua_pushnumber(L, s.uv.x), lua_rawseti(L, -2, 1);
+  lua_pushnumber(L, s.uv.y), lua_rawseti(L, -2, 2);
+  lua_setfield(L, -2, "uv");
+  set_vec3(L, "position", s.position);
+  set_vec3(L, "world_position", s.world_position);
+  set_vec3(L, "tangent", s.tangent);
+  set_vec3(L, "bitangent", s.bitangent);
+}
+
+void push_params(lua_State* L, const shading::LightingParams& p) {
+  const auto& spec = p.spec();
+  lua_createtable(L, 0, int(spec.params.size()));
+  for (std::size_t i = 0; i < spec.params.size(); ++i) {
+    int n = spec.params[i].components;
+    if (n == 1) {
+      lua_pushnumber(L, p.values[i][0]);
+    } else {
+      lua_createtable(L, n, 0);
+      for (int c = 0; c < n; ++c) lua_pushnumber(L, p.values[i][c]), lua_rawseti(L, -2, c + 1);
+    }
+    lua_setfield(L, -2, spec.params[i].name.c_str());
+  }
+}
+
+// The twin of a defined model: calls twin(surface, params) -> {r, g, b}. A wrong shape or a Lua
+// error is an exception naming the model; NaN comes back as it is (the stress test counts it).
+struct LuaTwin {
+  lua_State* L;
+  int ref;
+  std::string name;
+  glm::dvec3 operator()(const shading::Surface& s, const shading::LightingParams& p) const {
+    int top = lua_gettop(L);
+    lua_rawgeti(L, LUA_REGISTRYINDEX, ref);
+    push_surface(L, s);
+    push_params(L, p);
+    if (lua_pcall(L, 2, 1, 0) != 0) {
+      std::string e = lua_tostring(L, -1) ? lua_tostring(L, -1) : "(error object is not a string)";
+      lua_settop(L, top);
+      throw Error("lighting model '" + name + "': its twin failed: " + e);
+    }
+    glm::dvec3 out;
+    bool ok = lua_istable(L, -1) && lua_objlen(L, -1) == 3;
+    for (int c = 0; ok && c < 3; ++c) {
+      lua_rawgeti(L, -1, c + 1);
+      ok = lua_type(L, -1) == LUA_TNUMBER;
+      if (ok) out[c] = lua_tonumber(L, -1);
+      lua_pop(L, 1);
+    }
+    std::string got = ok ? "" : type_name_at(L, -1);
+    lua_settop(L, top);
+    if (!ok) throw Error("lighting model '" + name + "': its twin must return {r, g, b} (3 numbers), got " + got);
+    return out;
+  }
+};
+
+// Where the script calling sn.lighting.define is: "file.lua:LINE" and the file's folder.
+void caller(lua_State* L, std::string& where, std::string& dir) {
+  lua_Debug ar;
+  where = "sn.lighting.define", dir = ".";
+  if (lua_getstack(L, 1, &ar) && lua_getinfo(L, "Sl", &ar) && ar.source[0] == '@') {
+    where = std::string(ar.source + 1) + ":" + std::to_string(ar.currentline);
+    dir = fs::path(ar.source + 1).parent_path().string();
+  }
+}
+
+// params = { name = { default = x | {r,g,b}, range = {min, max}, type = "number"|"rgb"|"vec4", doc = "..." } }
+std::vector<shading::ParamSpec> read_param_schema(lua_State* L, int idx, const std::string& who) {
+  std::vector<shading::ParamSpec> out;
+  if (lua_isnil(L, idx)) return out;
+  if (!lua_istable(L, idx)) throw Error(who + ": 'params' must be a table { name = { default = ..., range = {min, max} } }");
+  lua_pushnil(L);
+  while (lua_next(L, idx)) {
+    if (lua_type(L, -2) != LUA_TSTRING) throw Error(who + ": 'params' keys must be parameter names");
+    std::string name = lua_tostring(L, -2);
+    std::string what = who + " parameter '" + name + "'";
+    Options o(L, lua_gettop(L), what.c_str(), {"default", "range", "type", "doc"});
+    shading::ParamSpec ps{name, 1, {0, 0, 0, 0}, 0, 0, o.string("doc", name)};
+    if (!o.has("default")) throw Error(what + ": 'default' is required");
+    int d = o.push("default");
+    std::vector<double> def = lua_type(L, d) == LUA_TNUMBER ? std::vector<double>{lua_tonumber(L, d)}
+                                                             : check_numbers(L, d, (what + " default").c_str());
+    lua_pop(L, 1);
+    int type = o.choice("type", {"number", "rgb", "vec4"}, def.size() == 3 ? 1 : def.size() == 4 ? 2 : 0);
+    ps.components = type == 0 ? 1 : type == 1 ? 3 : 4;
+    if (def.size() == 1 && ps.components == 3) def = {def[0], def[0], def[0]};
+    if (int(def.size()) != ps.components)
+      throw Error(what + ": the default has " + std::to_string(def.size()) + " numbers, its type '" +
+                  (type == 0 ? "number" : type == 1 ? "rgb" : "vec4") + "' needs " + std::to_string(ps.components));
+    for (int c = 0; c < ps.components; ++c) ps.def[c] = def[c];
+    if (!o.has("range")) throw Error(what + ": 'range' = {min, max} is required (the valid values)");
+    auto range = o.numbers("range", 2);
+    ps.min = range[0], ps.max = range[1];
+    out.push_back(ps);
+    lua_pop(L, 1);
+  }
+  // Lua tables have no order: parameters are kept sorted by name, so the struct is stable.
+  std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
+  return out;
+}
+
+}  // namespace
+
+// sn.lighting.define{ name, params, glsl, attributes, twin } -> Lighting at the defaults
+int w_define(lua_State* L) {
+  Options o(L, 1, "sn.lighting.define", {"name", "params", "glsl", "attributes", "twin"});
+  std::string where, dir;
+  caller(L, where, dir);
+  shading::LightingModel m;
+  if (!o.has("name")) throw Error("sn.lighting.define: 'name' is required");
+  m.name = o.string("name");
+  const std::string who = "sn.lighting.define '" + m.name + "'";
+  int pi = o.push("params");
+  m.params = read_param_schema(L, pi, who);
+  lua_pop(L, 1);
+  if (o.has("attributes")) {
+    int ai = o.push("attributes");
+    if (!lua_istable(L, ai)) throw Error(who + ": 'attributes' must be a list of names");
+    for (int i = 1; i <= int(lua_objlen(L, ai)); ++i) {
+      lua_rawgeti(L, ai, i);
+      m.attributes.push_back(check_string(L, -1, (who + " attribute").c_str()));
+      lua_pop(L, 1);
+    }
+    lua_pop(L, 1);
+  }
+  if (!o.has("glsl"))
+    throw Error(who + ": 'glsl' is required: a .glsl file or source text defining vec3 shade(Surface s, Params p)");
+  std::string glsl = o.string("glsl");
+  if (glsl.size() > 5 && glsl.compare(glsl.size() - 5, 5, ".glsl") == 0 && glsl.find('\n') == std::string::npos) {
+    fs::path beside = fs::path(dir) / glsl;
+    m.glsl_path = fs::exists(beside) ? fs::absolute(beside).string() : gl::resolve_shader_path(glsl);
+    m.glsl_path = fs::weakly_canonical(m.glsl_path).string();
+    if (m.glsl_path.find_first_of("\"<>") != std::string::npos)
+      throw Error(who + ": the glsl file's path must not hold quotes or angle brackets");
+  } else {
+    m.glsl_source = glsl;
+    m.glsl_name = where + " (glsl of " + m.name + ")";
+  }
+  int ti = o.push("twin");
+  if (!lua_isfunction(L, ti))
+    throw Error(who + ": 'twin' is required: function(s, p) returning {r, g, b} in double precision "
+                "(model:shade and sn.lighting.check use it)");
+  m.twin = LuaTwin{L, luaL_ref(L, LUA_REGISTRYINDEX), m.name};  // luaL_ref pops it
+
+  // Everything is checked before the model is registered: the schema and attributes, the twin
+  // at one point, then the GLSL compiled once (its errors at its own file:line).
+  shading::validate_model(m);
+  shading::LightingParams p;
+  p.model = std::make_shared<const shading::LightingModel>(m);
+  for (const auto& ps : m.params) p.values.push_back(ps.def);
+  shading::Surface s = shading::make_surface(scene::Light{}, {0, 1, 0}, {0.6, 0.8, 0});
+  s.tangent = {1, 0, 0}, s.bitangent = {0, 0, -1};
+  glm::dvec3 c = m.twin(s, p);
+  if (!(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z)))
+    throw Error(who + ": its twin returned {" + io::number_text(c.x) + ", " + io::number_text(c.y) + ", " +
+                io::number_text(c.z) + "} at normal {0, 1, 0}, view {0.6, 0.8, 0}: it must be finite");
+  shading::compile_lighting(m);
+  shading::register_model(m);
+  auto model = shading::find_model(m.name);
+  lua_pushnil(L);  // no parameters: the defaults
+  return make_lighting(L, model, lua_gettop(L));
+}
+
+// sn.lighting.check(model [, lights]) -> { max_difference, compared, skipped, worst = {...} }
+int w_check(lua_State* L) {
+  const auto& p = check<shading::LightingParams>(L, 1, kLightingType);
+  std::vector<scene::Light> lights = shading::stress_lights();
+  if (!lua_isnoneornil(L, 2)) {
+    if (!lua_istable(L, 2)) throw Error("sn.lighting.check: a list of lights expected as argument 2");
+    lights.clear();
+    for (int i = 1; i <= int(lua_objlen(L, 2)); ++i) {
+      lua_rawgeti(L, 2, i);
+      lights.push_back(check_light(L, -1, "sn.lighting.check light"));
+      lua_pop(L, 1);
+    }
+  }
+  auto c = shading::check_twin(p, lights);
+  lua_createtable(L, 0, 4);
+  lua_pushnumber(L, c.max_difference), lua_setfield(L, -2, "max_difference");
+  lua_pushinteger(L, lua_Integer(c.compared)), lua_setfield(L, -2, "compared");
+  lua_pushinteger(L, lua_Integer(c.skipped)), lua_setfield(L, -2, "skipped");
+  lua_createtable(L, 0, 4);
+  set_vec3(L, "normal", c.worst.n);
+  set_vec3(L, "view", c.worst.v);
+  set_vec3(L, "gpu", c.worst_gpu);
+  set_vec3(L, "twin", c.worst_twin);
+  lua_setfield(L, -2, "worst");
+  return 1;
+}
+
+}  // namespace sn::lua
