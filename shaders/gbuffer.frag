@@ -7,6 +7,8 @@ in vec3 v_world_position;
 in vec3 v_world_normal;
 in vec2 v_uv;
 in vec3 v_object_position;
+in vec3 v_world_tangent;
+in float v_handedness;
 
 uniform vec3 u_eye;
 uniform sampler2D u_base_color;
@@ -29,6 +31,12 @@ layout(location = ATTR_UV) out vec4 o_uv;
 #ifdef ATTR_BASE_COLOR
 layout(location = ATTR_BASE_COLOR) out vec4 o_base_color;
 #endif
+#ifdef ATTR_TANGENT
+layout(location = ATTR_TANGENT) out vec4 o_tangent;
+#endif
+#ifdef ATTR_BITANGENT
+layout(location = ATTR_BITANGENT) out vec4 o_bitangent;
+#endif
 
 void main() {
 #ifdef ATTR_NORMAL
@@ -50,5 +58,17 @@ void main() {
 #endif
 #ifdef ATTR_BASE_COLOR
   o_base_color = vec4(texture(u_base_color, v_uv).rgb, 1.0);
+#endif
+#if defined(ATTR_TANGENT) || defined(ATTR_BITANGENT)
+  // The interpolated tangent made perpendicular to the interpolated normal again (Gram-Schmidt).
+  // A back face keeps its tangent and bitangent while its normal turns towards the eye.
+  vec3 gn = safe_normalize(v_world_normal);
+  vec3 t = safe_normalize(v_world_tangent - gn * dot(gn, v_world_tangent));
+#endif
+#ifdef ATTR_TANGENT
+  o_tangent = vec4(t, 1.0);
+#endif
+#ifdef ATTR_BITANGENT
+  o_bitangent = vec4(sign(v_handedness) * cross(gn, t), 1.0);
 #endif
 }

@@ -5,12 +5,13 @@ local sn = require "shadenet"
 
 local demo = {}
 
--- run(model, { out, name, title, inputs = {"normal", "view"}, hidden, epochs }) -> summary table
+-- run(model, { out, name, title, inputs = {"normal", "view"}, hidden = {16 x 6}, epochs = 20 })
+--   -> { check, stress, val_mse, unseen_mse, figure }
 function demo.run(model, o)
   local t0 = sn.clock()
   local check = sn.lighting.check(model)
   print(string.format("%s: GPU shader vs Lua twin, largest difference %.3g over %d points (%d within 1e-3 of "
-                      .. "n.l = 0 or n.v = 0 skipped)", tostring(model), check.max_difference, check.compared,
+                      .. "n.l = 0, n.v = 0 or v = -l skipped)", tostring(model), check.max_difference, check.compared,
                       check.skipped))
   local stress = sn.lighting.stress(model)
   print(string.format("stress test: %d samples, %d failures (GPU NaN %d, Inf %d, negative %d; twin NaN %d)",
@@ -24,8 +25,8 @@ function demo.run(model, o)
                            views = { { count = 4, elevation = -30 }, { count = 4, elevation = 20 },
                                      { count = 4, elevation = 60 } } }
   local data = cloth:dataset { inputs = inputs, target = model, seed = 1 }
-  local net = sn.mlp { inputs = data:inputs(), hidden = o.hidden or { 16, 16, 16, 16 }, outputs = 3, seed = 1 }
-  local run = sn.train { nets = { net }, data = data, epochs = o.epochs or 10, batch = 8,
+  local net = sn.mlp { inputs = data:inputs(), hidden = o.hidden or { 16, 16, 16, 16, 16, 16 }, outputs = 3, seed = 1 }
+  local run = sn.train { nets = { net }, data = data, epochs = o.epochs or 20, batch = 8,
                          adam = { lr = 0.00025, beta1 = 0.8, beta2 = 0.9 }, seed = 1, keep = "best" }
   local n_train, n_val = data:counts()
   print(string.format("%s on %d + %d rows: best validation MSE %.3g (epoch %d, %.1f s)", tostring(net), n_train, n_val,
@@ -55,7 +56,7 @@ function demo.run(model, o)
   sn.fs.mkdir(o.out)
   local file = o.out .. "/" .. o.name .. ".png"
   sn.image.grid { panels = panels, columns = #meshes, row_labels = { "the model", "network", "|error|" },
-                  title = o.title .. ": truth | network | error on meshes not trained on" }:save(file)
+                  title = o.title .. ": the model, a network, |error| on unseen meshes" }:save(file)
   print(string.format("image MSE on the unseen meshes %.3g; wrote %s (%.0f s)", unseen, file, sn.clock() - t0))
   return { check = check, stress = stress, val_mse = run[1].best_val_mse, unseen_mse = unseen, figure = file }
 end

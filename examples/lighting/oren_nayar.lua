@@ -38,4 +38,4 @@ if not (arg and arg[0] == this) then return oren_nayar end
 
 package.path = this:match("^(.*)/[^/]*$") .. "/?.lua;" .. package.path
 require("demo").run(oren_nayar:with { sigma = 0.6 }, { out = arg[1] or "results/lighting", name = "oren_nayar",
-                                                 title = "Oren-Nayar, sigma 0.6 (defined in Lua + GLSL)" })
+                                                 title = "Oren-Nayar, sigma 0.6" })

@@ -46,6 +46,7 @@ uint64_t mesh_content_hash(const scene::Mesh& m) {
   f.vec(m.normals);
   f.vec(m.uvs);
   f.vec(m.indices);
+  f.vec(m.tangents);
   uint8_t flags[2] = {uint8_t(m.has_uvs), uint8_t(m.base_color.has_value())};
   f.bytes(flags, 2);
   if (m.base_color) {

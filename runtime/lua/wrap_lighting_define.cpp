@@ -87,6 +87,33 @@ struct LuaTwin {
   }
 };
 
+// The optional bound of a defined model: bound(params, light) -> {r, g, b}.
+struct LuaBound {
+  lua_State* L;
+  int ref;
+  std::string name;
+  glm::dvec3 operator()(const shading::LightingParams& p, const scene::Light& light) const {
+    int top = lua_gettop(L);
+    lua_rawgeti(L, LUA_REGISTRYINDEX, ref);
+    push_params(L, p);
+    push_light(L, light);
+    if (lua_pcall(L, 2, 1, 0) != 0) {
+      std::string e = lua_tostring(L, -1) ? lua_tostring(L, -1) : "(error object is not a string)";
+      lua_settop(L, top);
+      throw Error("lighting model '" + name + "': its bound failed: " + e);
+    }
+    std::vector<double> v;
+    try {
+      v = check_numbers(L, -1, ("the bound of lighting model '" + name + "'").c_str(), 3);
+    } catch (...) {
+      lua_settop(L, top);
+      throw;
+    }
+    lua_settop(L, top);
+    return {v[0], v[1], v[2]};
+  }
+};
+
 // Where the script calling sn.lighting.define is: "file.lua:LINE" and the file's folder.
 void caller(lua_State* L, std::string& where, std::string& dir) {
   lua_Debug ar;
@@ -134,9 +161,9 @@ std::vector<shading::ParamSpec> read_param_schema(lua_State* L, int idx, const s
 
 }  // namespace
 
-// sn.lighting.define{ name, params, glsl, attributes, twin } -> Lighting at the defaults
+// sn.lighting.define{ name, params, glsl, attributes, twin, bound } -> Lighting at the defaults
 int w_define(lua_State* L) {
-  Options o(L, 1, "sn.lighting.define", {"name", "params", "glsl", "attributes", "twin"});
+  Options o(L, 1, "sn.lighting.define", {"name", "params", "glsl", "attributes", "twin", "bound"});
   std::string where, dir;
   caller(L, where, dir);
   shading::LightingModel m;
@@ -174,6 +201,12 @@ int w_define(lua_State* L) {
     throw Error(who + ": 'twin' is required: function(s, p) returning {r, g, b} in double precision "
                 "(model:shade and sn.lighting.check use it)");
   m.twin = LuaTwin{L, luaL_ref(L, LUA_REGISTRYINDEX), m.name};  // luaL_ref pops it
+  if (o.has("bound")) {
+    int bi = o.push("bound");
+    if (!lua_isfunction(L, bi))
+      throw Error(who + ": 'bound' must be a function(p, light) returning {r, g, b}, the largest raw value per channel");
+    m.bound = LuaBound{L, luaL_ref(L, LUA_REGISTRYINDEX), m.name};
+  }
 
   // Everything is checked before the model is registered: the schema and attributes, the twin
   // at one point, then the GLSL compiled once (its errors at its own file:line).

@@ -32,7 +32,8 @@ std::string valid_names() {
 }  // namespace
 
 const std::vector<std::string>& gbuffer_attribute_names() {
-  static const std::vector<std::string> names = {"normal", "view", "position", "world_position", "uv", "base_color"};
+  static const std::vector<std::string> names = {"normal",     "view",       "position", "world_position",
+                                                 "uv",         "base_color", "tangent",  "bitangent"};
   return names;
 }
 
@@ -53,6 +54,8 @@ int GBuffer::attachment(const std::string& name) const {
 
 void check_attributes(const std::vector<std::string>& attributes) {
   if (attributes.empty()) throw std::invalid_argument("a G-buffer needs at least one attribute (valid: " + valid_names() + ")");
+  if (attributes.size() > 6)  // shaders/gather.comp compacts at most 6
+    throw std::invalid_argument("a G-buffer holds at most 6 attributes, asked for " + std::to_string(attributes.size()));
   for (std::size_t i = 0; i < attributes.size(); ++i) {
     attribute_width(attributes[i]);
     for (std::size_t j = 0; j < i; ++j)

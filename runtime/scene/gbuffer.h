@@ -25,6 +25,10 @@ class Camera;
 //   "world_position" world-space position (3)
 //   "uv"             texture coordinates (2)
 //   "base_color"     the mesh's base-colour texture at uv, as stored (3; for textured models)
+//   "tangent"        world-space unit tangent, perpendicular to the normal (3; tangents.h says
+//                    where it comes from)
+//   "bitangent"      handedness x cross(normal, tangent) (3); on a back face both keep their
+//                    direction while the normal turns towards the eye
 const std::vector<std::string>& gbuffer_attribute_names();
 // Components a network reads from the attribute (3, or 2 for "uv"); throws listing the valid names.
 int attribute_width(const std::string& name);

@@ -1,4 +1,5 @@
 #include "scene/gpu_mesh.h"
+#include "scene/tangents.h"
 
 #include <epoxy/gl.h>
 
@@ -19,6 +20,7 @@ std::atomic<std::size_t> g_uploads{0};
 struct Vertex {
   glm::vec3 position, normal;
   glm::vec2 uv;
+  glm::vec4 tangent;  // xyz, w = handedness (tangents.h)
 };
 
 // RGBA8 texels of an image with 1-4 channels (grey -> rgb, missing alpha -> 1). Rows stay top
@@ -43,7 +45,8 @@ std::vector<unsigned char> rgba8(const io::Image& img) {
 GpuMesh::GpuMesh(const Mesh& m) {
   validate(m);
   std::vector<Vertex> verts(m.positions.size());
-  for (size_t i = 0; i < verts.size(); ++i) verts[i] = {m.positions[i], m.normals[i], m.uvs[i]};
+  const std::vector<glm::vec4> tangents = mesh_tangents(m);
+  for (size_t i = 0; i < verts.size(); ++i) verts[i] = {m.positions[i], m.normals[i], m.uvs[i], tangents[i]};
   index_count_ = m.indices.size();
 
   glCreateBuffers(1, &vertices_);
@@ -55,9 +58,10 @@ GpuMesh::GpuMesh(const Mesh& m) {
   glCreateVertexArrays(1, &vao_);
   glVertexArrayVertexBuffer(vao_, 0, vertices_, 0, sizeof(Vertex));
   glVertexArrayElementBuffer(vao_, indices_);
-  const GLuint offsets[3] = {offsetof(Vertex, position), offsetof(Vertex, normal), offsetof(Vertex, uv)};
-  const GLint sizes[3] = {3, 3, 2};
-  for (GLuint a = 0; a < 3; ++a) {
+  const GLuint offsets[4] = {offsetof(Vertex, position), offsetof(Vertex, normal), offsetof(Vertex, uv),
+                             offsetof(Vertex, tangent)};
+  const GLint sizes[4] = {3, 3, 2, 4};
+  for (GLuint a = 0; a < 4; ++a) {
     glEnableVertexArrayAttrib(vao_, a);
     glVertexArrayAttribFormat(vao_, a, sizes[a], GL_FLOAT, GL_FALSE, offsets[a]);
     glVertexArrayAttribBinding(vao_, a, 0);

@@ -1,4 +1,5 @@
 #include "scene/mesh.h"
+#include "scene/tangents.h"
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
@@ -286,6 +287,15 @@ class GltfLoader {
     mesh_.has_normals = true;
     mesh_.has_uvs = primitives_with_uvs_ == primitives_used_;
     if (!mesh_.has_uvs) std::fill(mesh_.uvs.begin(), mesh_.uvs.end(), glm::vec2(0));
+    // The file's tangents are used when every primitive has them (a degenerate one is replaced by
+    // the generated frame); otherwise all are generated alike when drawn (tangents.h).
+    if (primitives_with_tangents_ == primitives_used_) {
+      std::vector<glm::vec4> generated = uv_tangents(mesh_);
+      for (std::size_t i = 0; i < file_tangents_.size(); ++i)
+        if (file_tangents_[i].w == 0.0f) file_tangents_[i] = generated[i];
+      mesh_.tangents = std::move(file_tangents_);
+      mesh_.tangent_source = "file";
+    }
     mesh_.bounds = compute_bounds(mesh_.positions);
     if (texture_image_ >= 0) mesh_.base_color = decode_texture(texture_image_);
     return std::move(mesh_);
@@ -339,6 +349,13 @@ class GltfLoader {
       nrm = reader_.read(it->second, 3, what + " NORMAL");
       if (nrm.size() != pos.size())
         throw FileError(path_, what + ": NORMAL has " + std::to_string(nrm.size() / 3) + " elements, POSITION " +
+                                   std::to_string(count));
+    }
+    std::vector<double> tan;
+    if (auto it = prim.attributes.find("TANGENT"); it != prim.attributes.end()) {
+      tan = reader_.read(it->second, 4, what + " TANGENT");
+      if (tan.size() != count * 4)
+        throw FileError(path_, what + ": TANGENT has " + std::to_string(tan.size() / 4) + " elements, POSITION " +
                                    std::to_string(count));
     }
     if (auto it = prim.attributes.find("TEXCOORD_0"); it != prim.attributes.end()) {
@@ -395,9 +412,21 @@ class GltfLoader {
       }
       mesh_.positions.push_back(world_pos[i]);
       mesh_.normals.push_back(n);
+      // Tangents move with the surface (the linear part, not the inverse transpose), are made
+      // perpendicular to the normal again, and a mirror flips their handedness.
+      glm::vec4 t(0.0f);  // w = 0: none from the file
+      if (!tan.empty()) {
+        glm::dvec3 d = glm::dmat3(world) * glm::dvec3(tan[4 * i], tan[4 * i + 1], tan[4 * i + 2]);
+        d -= glm::dvec3(n) * glm::dot(glm::dvec3(n), d);
+        double len = glm::length(d);
+        if (std::isfinite(len) && len > 1e-12)
+          t = glm::vec4(glm::vec3(d / len), float((tan[4 * i + 3] < 0 ? -1.0 : 1.0) * (mirrored ? -1.0 : 1.0)));
+      }
+      file_tangents_.push_back(t);
       mesh_.uvs.push_back(uv.empty() ? glm::vec2(0) : glm::vec2(float(uv[2 * i]), float(uv[2 * i + 1])));
     }
     if (!uv.empty()) ++primitives_with_uvs_;
+    if (!tan.empty()) ++primitives_with_tangents_;
     for (uint32_t i : tris) mesh_.indices.push_back(uint32_t(base) + i);
 
     // The merged mesh carries one texture: the first base-colour texture met in the scene.
@@ -424,7 +453,8 @@ class GltfLoader {
   Mesh mesh_;
   std::set<int> on_path_;
   int texture_image_ = -1;
-  int primitives_seen_ = 0, primitives_used_ = 0, primitives_with_uvs_ = 0;
+  int primitives_seen_ = 0, primitives_used_ = 0, primitives_with_uvs_ = 0, primitives_with_tangents_ = 0;
+  std::vector<glm::vec4> file_tangents_;
 };
 
 // PNG bytes of `img` (8 bits per channel, values clamped to [0,1]) for embedding in a .glb.
@@ -526,6 +556,10 @@ void save_glb(const Mesh& m, const std::string& path) {
     int nv = add_view(model, m.normals.data(), n * sizeof(glm::vec3), TINYGLTF_TARGET_ARRAY_BUFFER);
     prim.attributes["NORMAL"] = add_accessor(model, nv, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, n);
   }
+  if (!m.tangents.empty()) {
+    int tv = add_view(model, m.tangents.data(), n * sizeof(glm::vec4), TINYGLTF_TARGET_ARRAY_BUFFER);
+    prim.attributes["TANGENT"] = add_accessor(model, tv, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC4, n);
+  }
   if (m.has_uvs) {
     int uv = add_view(model, m.uvs.data(), n * sizeof(glm::vec2), TINYGLTF_TARGET_ARRAY_BUFFER);
     prim.attributes["TEXCOORD_0"] = add_accessor(model, uv, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC2, n);
@@ -614,6 +648,7 @@ Mesh transformed(const Mesh& m, const glm::dmat4& transform) {
   out.has_uvs = m.has_uvs;
   out.normals_computed = m.normals_computed;
   out.base_color = m.base_color;
+  out.tangent_source = m.tangent_source;
   out.positions.resize(m.positions.size());
   out.normals.resize(m.normals.size());
   for (size_t i = 0; i < m.positions.size(); ++i)
@@ -622,6 +657,14 @@ Mesh transformed(const Mesh& m, const glm::dmat4& transform) {
     glm::dvec3 n = normal_matrix * glm::dvec3(m.normals[i]);
     double len = glm::length(n);
     out.normals[i] = len > 0 ? glm::vec3(n / len) : glm::vec3(0, 1, 0);
+  }
+  out.tangents.resize(m.tangents.size());
+  for (size_t i = 0; i < m.tangents.size(); ++i) {
+    glm::dvec3 n(out.normals[i]), t = linear * glm::dvec3(m.tangents[i]);
+    t -= n * glm::dot(n, t);
+    double len = glm::length(t);
+    out.tangents[i] = len > 1e-12 ? glm::vec4(glm::vec3(t / len), m.tangents[i].w * (det < 0 ? -1.0f : 1.0f))
+                                  : fallback_tangent(out.normals[i]);
   }
   // A mirror turns counter-clockwise triangles clockwise; swap two corners to keep them front-facing.
   if (det < 0)
@@ -635,6 +678,13 @@ void validate(const Mesh& m) {
   size_t n = m.positions.size();
   if (m.normals.size() != n) fail("has " + std::to_string(m.normals.size()) + " normals for " + std::to_string(n) + " positions");
   if (m.uvs.size() != n) fail("has " + std::to_string(m.uvs.size()) + " uvs for " + std::to_string(n) + " positions");
+  if (!m.tangents.empty() && m.tangents.size() != n)
+    fail("has " + std::to_string(m.tangents.size()) + " tangents for " + std::to_string(n) + " positions");
+  for (size_t i = 0; i < m.tangents.size(); ++i) {
+    const auto& t = m.tangents[i];
+    if (!std::isfinite(t.x) || !std::isfinite(t.y) || !std::isfinite(t.z) || !(t.w == 1.0f || t.w == -1.0f))
+      fail("tangent " + std::to_string(i) + " is not finite with handedness +-1");
+  }
   if (m.indices.size() % 3) fail("index count " + std::to_string(m.indices.size()) + " is not a multiple of 3");
   for (size_t i = 0; i < m.indices.size(); ++i)
     if (m.indices[i] >= n)

@@ -30,6 +30,10 @@ struct Mesh {
   std::vector<glm::vec3> normals;  // one per position, unit length
   std::vector<glm::vec2> uvs;      // one per position; zeros when has_uvs is false
   std::vector<std::uint32_t> indices;  // three per triangle, counter-clockwise seen from outside
+  // One per position or none: unit xyz perpendicular to the normal, w = +-1 the handedness
+  // (bitangent = w cross(normal, tangent)). Empty: generated from the UVs when drawn (tangents.h).
+  std::vector<glm::vec4> tangents;
+  std::string tangent_source;  // "file" (glTF TANGENT), "analytic", or "" (generated when drawn)
   bool has_normals = false;
   bool has_uvs = false;
   // The file had no normals, so they were computed (area-weighted vertex normals); callers

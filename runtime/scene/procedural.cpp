@@ -27,6 +27,7 @@ void finish(Mesh& m, const char* name) {
   m.name = name;
   m.has_normals = true;
   m.has_uvs = true;
+  m.tangent_source = "analytic";
   m.bounds = compute_bounds(m.positions);
 }
 
@@ -47,6 +48,9 @@ Mesh sphere(double radius, int segments, int rings) {
       m.normals.push_back(glm::vec3(n));
       m.positions.push_back(glm::vec3(n * radius));
       m.uvs.push_back(glm::vec2(float(double(j) / segments), float(double(i) / rings)));
+      // u grows with phi: dP/dphi points along (cos phi, 0, -sin phi); v grows with theta, which is
+      // -cross(n, t), so the handedness is -1.
+      m.tangents.push_back(glm::vec4(float(std::cos(phi)), 0.f, float(-std::sin(phi)), -1.f));
     }
   }
   auto at = [&](int i, int j) { return uint32_t(i * (segments + 1) + j); };
@@ -75,6 +79,8 @@ Mesh torus(double major, double minor, int segments, int sides) {
       m.normals.push_back(glm::vec3(n));
       m.positions.push_back(glm::vec3(major * out + minor * n));
       m.uvs.push_back(glm::vec2(float(double(i) / segments), float(double(j) / sides)));
+      // u grows around the main axis: along (cos u, 0, -sin u); v around the tube, = cross(n, t).
+      m.tangents.push_back(glm::vec4(float(std::cos(u)), 0.f, float(-std::sin(u)), 1.f));
     }
   }
   auto at = [&](int i, int j) { return uint32_t(i * (sides + 1) + j); };
@@ -97,6 +103,7 @@ Mesh plane(double size, int subdivisions) {
       m.positions.push_back(glm::vec3(float(size * (s - 0.5)), 0.f, float(size * (t - 0.5))));
       m.normals.push_back(glm::vec3(0, 1, 0));
       m.uvs.push_back(glm::vec2(float(s), float(t)));
+      m.tangents.push_back(glm::vec4(1, 0, 0, -1));  // u along +X; v along +Z = -cross(+Y, +X)
     }
   auto at = [&](int i, int k) { return uint32_t(k * (n + 1) + i); };
   for (int k = 0; k < n; ++k)

@@ -30,13 +30,6 @@ dvec3 phong_bound(const LightingParams& p, const scene::Light& light) {
   return light.color * (p.color("color") + p.color("specular"));  // textures are in [0, 1]
 }
 
-// Where v is within eps of -l the half vector h = normalize(l + v) is undefined: float and
-// double may each find a different one, or none.
-bool half_vector_branch(const LightingParams&, const Surface& s, double eps) {
-  dvec3 lv = s.l + s.v;
-  return glm::dot(lv, lv) < eps;
-}
-
 LightingModel builtin(const char* name, std::vector<ParamSpec> params) {
   LightingModel m;
   m.name = name;
@@ -66,7 +59,6 @@ std::vector<LightingModel> builtin_models() {
                                        p.scalar("shininess"));
   };
   blinn.bound = phong_bound;
-  blinn.near_branch = half_vector_branch;
   out.push_back(blinn);
 
   LightingModel ggx_m = builtin(
@@ -85,7 +77,6 @@ std::vector<LightingModel> builtin_models() {
     dvec3 rho = p.color("diffuse");
     return p.color("ambient") * (rho + p.color("f0")) + light.color * (rho + dvec3(0.5 / (alpha * alpha * alpha)));
   };
-  ggx_m.near_branch = half_vector_branch;
   out.push_back(ggx_m);
 
   LightingModel toon = builtin(

@@ -122,6 +122,10 @@ dvec3 upper_bound(const LightingParams& p, const scene::Light& light) {
 
 bool near_discontinuity(const LightingParams& p, const Surface& s, double eps) {
   if (std::abs(glm::dot(s.n, s.l)) < eps || std::abs(glm::dot(s.n, s.v)) < eps) return true;
+  // v = -l: the half vector normalize(l + v) is undefined; float and double may each find a
+  // different one, or none.
+  dvec3 lv = s.l + s.v;
+  if (glm::dot(lv, lv) < eps) return true;
   return p.spec().near_branch && p.spec().near_branch(p, s, eps);
 }
 

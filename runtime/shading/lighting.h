@@ -63,8 +63,9 @@ glm::dvec3 shade(const LightingParams& p, const scene::Light& light, const glm::
 // A per-channel bound on shade_raw over every input (base colours in [0, 1]); +infinity for a
 // model whose definition gives none.
 glm::dvec3 upper_bound(const LightingParams& p, const scene::Light& light);
-// True when the point lies within `eps` of a branch of the model (n.l = 0, n.v = 0, or one its
-// definition names, such as a toon3 threshold), where float and double may take different sides.
+// True when the point lies within `eps` of a branch of the model (n.l = 0, n.v = 0, v = -l, or
+// one its definition names, such as a toon3 threshold), where float and double may take
+// different sides.
 bool near_discontinuity(const LightingParams& p, const Surface& s, double eps);
 bool near_discontinuity(const LightingParams& p, const scene::Light& light, const glm::dvec3& n, const glm::dvec3& v,
                         double eps);

@@ -59,7 +59,7 @@ struct LightingModel {
   // Optional: a check across parameters beyond each one's range (throws with the message).
   std::function<void(const LightingParams&)> check_values;
   // Optional: true where float and double may take different branches (toon3's thresholds);
-  // n.l = 0 and n.v = 0 are always treated as such.
+  // n.l = 0, n.v = 0 and v = -l are always treated as such.
   std::function<bool(const LightingParams&, const Surface&, double eps)> near_branch;
   bool builtin = false;
 
