@@ -1,9 +1,12 @@
--- Renders the cloth (and the Duck, with its texture) with every lighting model and writes one
--- labelled image per model, plus an overview grid:
+-- Renders the cloth (and the Duck, with its texture) with every lighting model -- the built-ins
+-- and the two defined in Lua + GLSL -- and writes one labelled image per model, plus an overview grid:
 --   build/shadenet examples/lighting_gallery.lua [out_dir]      (default out/gallery)
 -- The light comes from the upper right, in front (dir = {0.5, 0.7, 0.6}): highlights sit where
 -- the surface's normal bisects the light and the view, on the upper-right faces of folds.
 local sn = require "shadenet"
+-- The models defined in Lua + GLSL (examples/lighting/) sit beside the built-ins.
+package.path = "examples/lighting/?.lua;" .. package.path
+local oren_nayar, aniso_ggx = require "oren_nayar", require "aniso_ggx"
 
 local out = arg[1] or "out/gallery"
 sn.fs.mkdir(out)
@@ -25,6 +28,9 @@ local shots = {
   { cloth, sn.lighting.textured_phong {}, "textured Phong (fabric)" },
   { duck, sn.lighting.textured_phong {}, "textured Phong (Duck)", 2 },
   { duck, sn.lighting.ggx { roughness = 0.2 }, "GGX gold (Duck)", 2 },
+  { cloth, oren_nayar:with { sigma = 0.8 }, "Oren-Nayar, sigma 0.8 (Lua)" },
+  { cloth, aniso_ggx, "anisotropic GGX 0.3 x 0.7 (Lua)" },
+  { duck, aniso_ggx, "anisotropic GGX (Duck, Lua)", 2 },
 }
 
 local panels = {}

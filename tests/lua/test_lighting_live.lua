@@ -1,0 +1,39 @@
+-- A lighting model defined in a 29-line script (examples/lighting/live_model.lua) runs live:
+-- `shadenet --watch` draws its truth; saving its GLSL file re-runs the script, which redefines the
+-- model and redraws with the new shader, while the network trained under sn.keep is kept.
+local sn = require "shadenet"
+package.path = "tests/live/?.lua;" .. package.path
+local H = require "harness"
+
+local dir = "out/live_tests/lighting_model"
+os.execute(("rm -rf %q && mkdir -p %q"):format(dir, dir))
+local script = H.read("examples/lighting/live_model.lua")
+script = script:gsub('mode = "side"', 'mode = "truth"') .. '\nprint("RUN")\n'
+H.write(dir .. "/live_model.lua", script)
+H.write(dir .. "/minnaert.glsl", H.read("examples/lighting/minnaert.glsl"))
+
+local s = H.start { dir = dir .. "/session", script = dir .. "/live_model.lua", window = false, limit = 60 }
+s:wait_frame(1)
+local first = s:image(1)
+local w, h = first:size()
+local function centre(img) return img:get(math.floor(w / 2) + 1, math.floor(h / 2) + 1) end
+local c1 = centre(first)
+assert(c1[4] == 1 and c1[1] > 0.05 and math.abs(c1[1] - c1[3]) < 1e-6, "a grey Minnaert truth at the centre")
+
+-- Tint the shader and save it the way editors do.
+local glsl = H.read(dir .. "/minnaert.glsl"):gsub("return s%.light_color %* p%.albedo", "return vec3(1.0, 0.6, 0.3) * s.light_color * p.albedo")
+H.write(dir .. "/minnaert.glsl", glsl)
+s:wait_log("RUN\n.*RUN")
+local n = s:settle()
+local c2 = centre(s:image(n))
+assert(math.abs(c2[1] - c1[1]) < 1e-5 and math.abs(c2[3] - 0.3 * c1[3]) < 1e-5,
+       ("the edited shader is drawn: red %.4f -> %.4f, blue %.4f -> %.4f"):format(c1[1], c2[1], c1[3], c2[3]))
+local log = s:log()
+local _, trained = log:gsub("trained mlp", "")
+assert(trained == 1, "the network was trained once and kept across the re-run:\n" .. log)
+
+-- A GLSL error on save keeps the last good model on screen and names the file and line.
+H.write(dir .. "/minnaert.glsl", glsl:gsub("pow%(nl, p%.k%)", "pow(nl, p.kk)"))
+s:wait_log("minnaert%.glsl:%d+")
+s:stop()
+print("ok")
