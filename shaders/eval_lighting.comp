@@ -3,7 +3,7 @@
 // stress tests. "lighting/model.glsl" is assembled per model by runtime/shading/lighting_gpu.cpp,
 // which also defines SURFACE_<ATTRIBUTE> for each attribute the model reads beyond normal and
 // view; COLOR_SPACE (color.glsl) is the stored target's space, LIGHTING_RAW = 1 stores the
-// unclamped RGB radiance instead.
+// unclamped RGB radiance instead; LIGHTING_VARY reads parameters per sample (conditioned datasets).
 layout(local_size_x = 64) in;
 
 #include "lighting/model.glsl"
@@ -30,6 +30,9 @@ layout(std430, binding = 7) readonly buffer Tangents { vec4 tangents[]; };
 #endif
 #ifdef SURFACE_BITANGENT
 layout(std430, binding = 8) readonly buffer Bitangents { vec4 bitangents[]; };
+#endif
+#ifdef LIGHTING_VARY
+layout(std430, binding = 9) readonly buffer Varied { vec4 varied[]; };  // parameters set per sample
 #endif
 
 uniform uint u_first;  // samples [u_first, u_first + u_count) in this dispatch
@@ -58,9 +61,13 @@ void main() {
 #ifdef SURFACE_BITANGENT
   s.bitangent = safe_normalize(bitangents[i].xyz);
 #endif
+  Params p = lighting_params();
+#ifdef LIGHTING_VARY
+  lighting_vary(p, varied[i]);
+#endif
 #if LIGHTING_RAW
-  targets[i] = vec4(lighting_raw(s), 1.0);
+  targets[i] = vec4(lighting_raw(s, p), 1.0);
 #else
-  targets[i] = vec4(color_from_rgb(lighting(s)), 1.0);
+  targets[i] = vec4(color_from_rgb(lighting(s, p)), 1.0);
 #endif
 }

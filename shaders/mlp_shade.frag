@@ -5,7 +5,8 @@
 // RGB; alpha = coverage. Uncovered pixels skip the network and stay transparent black.
 //
 // Host-made #defines besides the architecture's: MLP_ATTRS (attachments read), MLP_GATHER_INPUTS
-// (code filling the array u0[] of input vec4s from them), MLP_MAX_WIDTH4.
+// (code filling the array u0[] of input vec4s from them), MLP_MAX_WIDTH4, MLP_CONDITIONS (uniform
+// inputs of a conditioned network, when it has any).
 #define COLOR_SPACE MLP_COLOR
 #include "color.glsl"
 #include "mlp/activation.glsl"
@@ -20,6 +21,9 @@ layout(std140, binding = 0) uniform Params { vec4 params[MLP_PQ]; };
 layout(std430, binding = 0) readonly buffer Params { vec4 params[]; };
 #endif
 uniform sampler2D u_attr[MLP_ATTRS];  // the G-buffer attachments, in the network's input order
+#ifdef MLP_CONDITIONS
+uniform float u_condition[MLP_CONDITIONS];  // a conditioned network's parameter inputs
+#endif
 uniform int u_zero;  // never set: 0; the run table keeps a wide layer's input loop rolled with it
 
 layout(location = 0) out vec4 o_color;

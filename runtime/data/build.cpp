@@ -18,8 +18,47 @@ namespace {
 std::size_t g_last_covered = 0;
 }  // namespace
 
+namespace {
+
+bool is_varied(const DatasetRequest& r, const std::string& name) {
+  for (const auto& v : r.vary)
+    if (v.name == name) return true;
+  return false;
+}
+
+// The varied parameters: scalar parameters of the target, ranges inside their domains, each an input.
+void check_vary(const DatasetRequest& r) {
+  std::vector<std::string> names;
+  for (const auto& v : r.vary) names.push_back(v.name);
+  shading::check_vary(r.target.spec(), names);
+  for (const auto& v : r.vary) {
+    const auto& ps = *std::find_if(r.target.spec().params.begin(), r.target.spec().params.end(),
+                                   [&](const shading::ParamSpec& p) { return p.name == v.name; });
+    if (!(v.min <= v.max && v.min >= ps.min && v.max <= ps.max))
+      throw std::invalid_argument("vary '" + v.name + "': the range [" + io::number_text(v.min) + ", " +
+                                  io::number_text(v.max) + "] must be ordered and inside the parameter's domain [" +
+                                  io::number_text(ps.min) + ", " + io::number_text(ps.max) + "]");
+    if (std::find(r.inputs.begin(), r.inputs.end(), v.name) == r.inputs.end())
+      throw std::invalid_argument("vary '" + v.name + "': list it among the inputs too (e.g. inputs = {\"normal\", "
+                                  "\"view\", \"" + v.name + "\"}), or a network cannot tell the rows apart");
+  }
+}
+
+// Parameter k of the row at (pose, view, pixel): uniform in [min, max], the same on every run.
+double varied_value(uint64_t seed, uint64_t key, std::size_t k, const InputRange& v) {
+  SplitMix h{seed ^ (key * 0x9E3779B97F4A7C15ull) ^ (uint64_t(k + 1) << 58)};
+  h.next();
+  return v.min + (v.max - v.min) * h.uniform();
+}
+
+}  // namespace
+
 std::shared_ptr<Dataset> build_dataset(const scene::Scene& s, const DatasetRequest& r) {
-  scene::check_attributes(r.inputs);
+  std::vector<std::string> gbuffer_inputs;
+  for (const auto& a : r.inputs)
+    if (!is_varied(r, a)) gbuffer_inputs.push_back(a);
+  scene::check_attributes(gbuffer_inputs);
+  check_vary(r);
   if (!(r.split > 0 && r.split < 1))
     throw std::invalid_argument("dataset split must lie strictly between 0 and 1 (the training share), got " +
                                 io::number_text(r.split));
@@ -40,12 +79,12 @@ std::shared_ptr<Dataset> build_dataset(const scene::Scene& s, const DatasetReque
 
   // Rasterise what the target reads, then the network inputs it does not.
   std::vector<std::string> attributes = shading::model_attributes(r.target);
-  for (const auto& a : r.inputs)
+  for (const auto& a : gbuffer_inputs)
     if (std::find(attributes.begin(), attributes.end(), a) == attributes.end()) attributes.push_back(a);
   auto index_of = [&](const std::string& a) { return int(std::find(attributes.begin(), attributes.end(), a) - attributes.begin()); };
 
   int in_width = 0;
-  for (const auto& a : r.inputs) in_width += scene::attribute_width(a);
+  for (const auto& a : r.inputs) in_width += is_varied(r, a) ? 1 : scene::attribute_width(a);
 
   struct Row {
     uint64_t key;  // pose << 48 | view << 32 | pixel
@@ -58,18 +97,44 @@ std::shared_ptr<Dataset> build_dataset(const scene::Scene& s, const DatasetReque
     scene::Samples smp = scene::gather(g);
     if (smp.count == 0) continue;
     gl::Buffer targets(gl::ElemType::vec4, smp.count);
+    auto pixels = scene::download_pixels(smp);
+    auto key_of = [&](std::size_t i) { return (uint64_t(pose) << 48) | (uint64_t(v) << 32) | pixels[i]; };
+    // The varied parameters per sample, one vec4 each (the shader's lighting_vary).
+    std::vector<float> varied;
+    std::shared_ptr<gl::Buffer> varied_buffer;
+    shading::Varied per_row;
+    if (!r.vary.empty()) {
+      varied.assign(smp.count * 4, 0.0f);
+      for (std::size_t i = 0; i < smp.count; ++i)
+        for (std::size_t k = 0; k < r.vary.size(); ++k)
+          varied[i * 4 + k] = float(varied_value(r.seed, key_of(i), k, r.vary[k]));
+      varied_buffer = std::make_shared<gl::Buffer>(gl::ElemType::vec4, smp.count);
+      varied_buffer->upload(varied.data(), 0, varied.size());
+      for (const auto& x : r.vary) per_row.params.push_back(x.name);
+      per_row.values = varied_buffer.get();
+    }
     shading::SampleBuffers model_in;
     for (const auto& a : shading::model_attributes(r.target)) model_in[a] = smp.attributes[index_of(a)].get();
-    shading::evaluate(r.target, s.light, model_in, targets, smp.count, r.color);
-    auto pixels = scene::download_pixels(smp);
+    shading::evaluate(r.target, s.light, model_in, targets, smp.count, r.color, false, r.vary.empty() ? nullptr : &per_row);
     auto t = scene::download_vec4(targets, smp.count);
-    std::vector<std::vector<float>> in;
-    for (const auto& a : r.inputs) in.push_back(scene::download_vec4(*smp.attributes[index_of(a)], smp.count));
+    std::vector<std::vector<float>> in;  // per input: 4 floats per sample
+    for (const auto& a : r.inputs) {
+      if (!is_varied(r, a)) {
+        in.push_back(scene::download_vec4(*smp.attributes[index_of(a)], smp.count));
+        continue;
+      }
+      std::size_t k = 0;
+      while (r.vary[k].name != a) ++k;
+      std::vector<float> column(smp.count * 4, 0.0f);
+      for (std::size_t i = 0; i < smp.count; ++i) column[i * 4] = varied[i * 4 + k];
+      in.push_back(std::move(column));
+    }
     std::size_t base = ys.size() / 3;
     for (std::size_t i = 0; i < smp.count; ++i) {
-      rows.push_back({(uint64_t(pose) << 48) | (uint64_t(v) << 32) | pixels[i], base + i});
+      rows.push_back({key_of(i), base + i});
       for (std::size_t k = 0; k < r.inputs.size(); ++k)
-        for (int c = 0; c < scene::attribute_width(r.inputs[k]); ++c) xs.push_back(in[k][i * 4 + c]);
+        for (int c = 0; c < (is_varied(r, r.inputs[k]) ? 1 : scene::attribute_width(r.inputs[k])); ++c)
+          xs.push_back(in[k][i * 4 + c]);
       for (int c = 0; c < 3; ++c) ys.push_back(t[i * 4 + c]);
     }
   }
@@ -98,6 +163,7 @@ std::shared_ptr<Dataset> build_dataset(const scene::Scene& s, const DatasetReque
   d->outputs = 3;
   d->color = r.color;
   d->input_names = r.inputs;
+  d->conditions = r.vary;
   for (std::size_t j = 0; j < m; ++j) {
     std::size_t at = rows[perm[j]].at;
     auto& x = j < n_train ? d->train_x : d->val_x;

@@ -17,7 +17,8 @@ namespace sn::data {
 constexpr std::size_t kThesisSamples = 64149;
 
 struct DatasetRequest {
-  std::vector<std::string> inputs = {"normal", "view"};  // G-buffer attributes, in network input order
+  // G-buffer attributes and varied parameters (`vary`), in network input order.
+  std::vector<std::string> inputs = {"normal", "view"};
   shading::LightingParams target;
   shading::ColorSpace color = shading::ColorSpace::rgb;
   std::vector<int> views;  // 0-based; empty = every view of the scene
@@ -25,6 +26,9 @@ struct DatasetRequest {
   double split = 0.8;      // share of the samples that train; the rest validate
   uint64_t seed = 1;
   std::size_t samples = kThesisSamples;  // at most this many covered pixels (0 = all of them)
+  // Scalar parameters of `target` drawn per row, uniformly over [min, max] (within the
+  // parameter's domain), from the row's (pose, view, pixel) and the seed; each is also an input.
+  std::vector<InputRange> vary;
 };
 
 // Renders, gathers, shades and splits (no cache: see dataset_cache.h). Rows are ordered by

@@ -34,6 +34,7 @@ std::shared_ptr<Dataset> empty_like(const Dataset& d) {
   out->outputs = d.outputs;
   out->color = d.color;
   out->input_names = d.input_names;
+  out->conditions = d.conditions;
   return out;
 }
 
@@ -66,6 +67,9 @@ std::shared_ptr<Dataset> concat(const std::vector<const Dataset*>& parts) {
     if (p.color != first.color)
       throw std::invalid_argument(at + " has colour space " + shading::color_space_name(p.color) + ", " + ref + " has " +
                                   shading::color_space_name(first.color));
+    if (!(p.conditions == first.conditions))
+      throw std::invalid_argument(at + " varies its parameters differently from " + ref +
+                                  " (names and ranges must agree)");
     if (!p.input_names.empty()) {
       if (names && *names != p.input_names)
         throw std::invalid_argument(at + " has inputs {" + name_list(p.input_names) + "}, dataset " + std::to_string(named + 1) +

@@ -82,10 +82,13 @@ std::string dataset_key(const scene::Scene& s, const DatasetRequest& r) {
   k += "\ninputs";
   for (const auto& a : r.inputs) k += " " + a;
   k += "\ncolor " + std::string(shading::color_space_name(r.color));
+  for (const auto& v : r.vary) k += "\nvary " + v.name + " " + io::exact_text(v.min) + " " + io::exact_text(v.max);
   k += "\nsplit " + io::exact_text(r.split) + " seed " + std::to_string(r.seed) + " samples " + std::to_string(r.samples);
   // The shaders every number of a scene dataset passes through.
+  std::vector<std::string> vary;
+  for (const auto& v : r.vary) vary.push_back(v.name);
   k += "\nshaders " + shader_sources_hash({"mesh.vert", "gbuffer.frag", "gather.comp", "eval_lighting.comp"},
-                                         shading::lighting_includes(r.target.spec()));
+                                         shading::lighting_includes(r.target.spec(), vary));
   return k;
 }
 

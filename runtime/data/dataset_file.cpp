@@ -36,6 +36,11 @@ std::string content_key(const Dataset& d) {
     f.bytes(&n, sizeof n);
     f.text(s);
   }
+  for (const auto& c : d.conditions) {
+    f.text(c.name);
+    f.bytes(&c.min, sizeof c.min);
+    f.bytes(&c.max, sizeof c.max);
+  }
   f.vec(d.train_x);
   f.vec(d.train_y);
   f.vec(d.val_x);
@@ -118,6 +123,11 @@ void write_numpy(const Dataset& d, const DatasetPaths& p) {
   side["targets"] = {{"file", fs::path(p.targets).filename().string()}, {"width", d.outputs},
                      {"color", shading::color_space_name(d.color)}};
   side["rows"] = {{"train", d.train_count()}, {"val", d.val_count()}};
+  if (!d.conditions.empty()) {
+    Json c = Json::array();
+    for (const auto& r : d.conditions) c.push_back({{"name", r.name}, {"min", r.min}, {"max", r.max}});
+    side["inputs"]["conditions"] = c;
+  }
   side["source_key"] = d.key;
   const std::string sidecar = side.dump(2) + "\n";
 
@@ -211,6 +221,16 @@ std::shared_ptr<Dataset> load_numpy(const DatasetPaths& p) {
     for (const auto& n : *names) {
       if (!n.is_string()) s.fail("field 'inputs.names' must be an array of strings, got " + names->dump());
       d->input_names.push_back(n.get<std::string>());
+    }
+  }
+  if (const Json* conds = s.find("inputs", "conditions")) {
+    auto bad = [&] { s.fail("field 'inputs.conditions' must be an array of {name, min, max}, got " + conds->dump()); };
+    if (!conds->is_array()) bad();
+    for (const auto& c : *conds) {
+      if (!c.is_object() || !c.contains("name") || !c["name"].is_string() || !c.contains("min") ||
+          !c["min"].is_number() || !c.contains("max") || !c["max"].is_number())
+        bad();
+      d->conditions.push_back({c["name"].get<std::string>(), c["min"].get<double>(), c["max"].get<double>()});
     }
   }
   const uint64_t train = s.count("rows", "train", 1), val = s.count("rows", "val", 0);

@@ -10,12 +10,15 @@ std::vector<InputSlot> input_layout(const Dataset& d) {
   std::vector<InputSlot> slots;
   int offset = 0;
   for (const auto& name : d.input_names) {
+    bool condition = false;
+    for (const auto& c : d.conditions) condition = condition || c.name == name;
     const auto& valid = scene::gbuffer_attribute_names();
-    bool known = false;
+    bool known = condition;
     for (const auto& v : valid) known = known || v == name;
     if (!known)
-      throw std::invalid_argument("input name '" + name + "' is not a G-buffer attribute (valid: " + name_list(valid) + ")");
-    const int w = scene::attribute_width(name);
+      throw std::invalid_argument("input name '" + name + "' is not a G-buffer attribute (valid: " + name_list(valid) +
+                                  ") nor a varied parameter of the dataset");
+    const int w = condition ? 1 : scene::attribute_width(name);
     slots.push_back({name, offset, w});
     offset += w;
   }

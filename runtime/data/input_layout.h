@@ -1,5 +1,6 @@
-// Where each named input sits in a dataset row. Input names are G-buffer attributes, so their
-// widths are known (3 each, 2 for "uv"); row filters and CSV column names need the columns.
+// Where each named input sits in a dataset row. Input names are G-buffer attributes (3 columns
+// each, 2 for "uv") or parameters the dataset varies per row (1 column); row filters and CSV
+// column names need the columns.
 #pragma once
 #include <string>
 #include <vector>

@@ -10,13 +10,15 @@ local function type_name(x)
   return (type(mt) == "table" and mt.__name) or type(x)
 end
 
--- scene:render(model_or_net [, { view = 1, pose = 1, camera = Camera, light = {dir, color}, size = {w, h} }])
+-- scene:render(model_or_net [, { view = 1, pose = 1, camera = Camera, light = {dir, color}, size = {w, h},
+--                                values = { condition = x } }])
 --   -> Image (RGBA float, alpha = coverage)
 --   a "Lighting" model: the ground truth over the view's G-buffer (sn.render_truth);
 --   an "Mlp": the network's own fragment pass over the attributes it reads (net:render).
 -- `camera` replaces the scene's view (live mode's orbit), `light` the scene's light for the
--- ground truth (a network shows what it learned), `size` the scene's image size.
-local RENDER_KEYS = { view = true, pose = true, camera = true, light = true, size = true }
+-- ground truth (a network shows what it learned), `size` the scene's image size, `values` a
+-- conditioned network's condition inputs (net:conditions()).
+local RENDER_KEYS = { view = true, pose = true, camera = true, light = true, size = true, values = true }
 function Scene.render(scene, what, options)
   options = options or {}
   if type(options) ~= "table" then
@@ -24,7 +26,7 @@ function Scene.render(scene, what, options)
   end
   for k in pairs(options) do
     if not RENDER_KEYS[k] then
-      error("scene:render: unknown option '" .. tostring(k) .. "' (valid: camera, light, pose, size, view)", 2)
+      error("scene:render: unknown option '" .. tostring(k) .. "' (valid: camera, light, pose, size, values, view)", 2)
     end
   end
   if options.view ~= nil and options.camera ~= nil then error("scene:render: give 'view' or 'camera', not both", 2) end
@@ -32,6 +34,9 @@ function Scene.render(scene, what, options)
                   size = options.size, pose = options.pose }
   local kind = type_name(what)
   if kind == "Lighting" then
+    if options.values then
+      error("scene:render: 'values' sets a conditioned network's inputs; for a lighting model use model:with{...}", 2)
+    end
     where.attributes = what:attributes()
     local g = scene:gbuffer(where)
     local light = scene:light()
@@ -46,9 +51,15 @@ function Scene.render(scene, what, options)
             .. "scene:dataset (or give it input names) first", 2)
     end
     if not what.render then error("scene:render: this build cannot render networks (net:render is missing)", 2) end
-    where.attributes = inputs
+    local conditions = {}
+    for _, c in ipairs(what:conditions()) do conditions[c.name] = true end
+    local attributes = {}
+    for _, name in ipairs(inputs) do
+      if not conditions[name] then attributes[#attributes + 1] = name end
+    end
+    where.attributes = attributes
     local g = scene:gbuffer(where)
-    return what:render(g)
+    return what:render(g, options.values and { values = options.values } or nil)
   end
   error("scene:render: a lighting model (sn.lighting.*) or a network (sn.mlp) expected, got " .. kind, 2)
 end

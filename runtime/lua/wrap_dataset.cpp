@@ -143,6 +143,20 @@ int w_input_names(lua_State* L) {
   return 1;
 }
 
+// ds:conditions() -> { {name =, min =, max =}, ... }: the inputs a conditioned dataset varies per row
+int w_conditions(lua_State* L) {
+  const Dataset& d = self(L);
+  lua_createtable(L, int(d.conditions.size()), 0);
+  for (std::size_t i = 0; i < d.conditions.size(); ++i) {
+    lua_createtable(L, 0, 3);
+    lua_pushstring(L, d.conditions[i].name.c_str()), lua_setfield(L, -2, "name");
+    lua_pushnumber(L, d.conditions[i].min), lua_setfield(L, -2, "min");
+    lua_pushnumber(L, d.conditions[i].max), lua_setfield(L, -2, "max");
+    lua_rawseti(L, -2, int(i + 1));
+  }
+  return 1;
+}
+
 // ds:row("train" | "val", i) -> x, y (tables), for inspection
 int w_row(lua_State* L) {
   const Dataset& d = self(L);
@@ -300,7 +314,7 @@ int w_load(lua_State* L) {
 void open_dataset(lua_State* L) {
   static const luaL_Reg methods[] = {SN_FN("counts", w_counts),   SN_FN("inputs", w_inputs),
                                      SN_FN("outputs", w_outputs), SN_FN("color", w_color),
-                                     SN_FN("input_names", w_input_names), SN_FN("row", w_row),
+                                     SN_FN("input_names", w_input_names), SN_FN("conditions", w_conditions), SN_FN("row", w_row),
                                      SN_FN("subset", w_subset), SN_FN("split", w_split), SN_FN("export", w_export),
                                      SN_FN("coverage", dataset_coverage),
                                      {nullptr, nullptr}};

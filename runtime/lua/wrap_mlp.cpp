@@ -7,6 +7,7 @@
 #include <cmath>
 #include <memory>
 
+#include "io/text.h"
 #include "lua/binding.h"
 #include "lua/module.h"
 #include "nn/checkpoint.h"
@@ -317,6 +318,43 @@ int w_inputs(lua_State* L) {
   return 1;
 }
 
+// net:conditions() -> { {name =, min =, max =, value =}, ... }: the inputs that are lighting-model
+// parameters (a network trained on a dataset with `vary`), with their training ranges.
+int w_conditions(lua_State* L) {
+  const Mlp& net = self(L);
+  lua_createtable(L, int(net.conditions.size()), 0);
+  for (std::size_t i = 0; i < net.conditions.size(); ++i) {
+    const auto& c = net.conditions[i];
+    lua_createtable(L, 0, 4);
+    lua_pushstring(L, c.name.c_str()), lua_setfield(L, -2, "name");
+    lua_pushnumber(L, c.min), lua_setfield(L, -2, "min");
+    lua_pushnumber(L, c.max), lua_setfield(L, -2, "max");
+    lua_pushnumber(L, c.value), lua_setfield(L, -2, "value");
+    lua_rawseti(L, -2, int(i + 1));
+  }
+  return 1;
+}
+
+// net:set_input(name, value): the value a condition input takes in renders from now on (live
+// mode redraws with it). It must lie in the range the network was trained on.
+int w_set_input(lua_State* L) {
+  Mlp& net = self(L);
+  std::string name = check_string(L, 2, "net:set_input name");
+  double v = check_number(L, 3, "net:set_input value");
+  for (auto& c : net.conditions) {
+    if (c.name != name) continue;
+    if (!(v >= c.min && v <= c.max))
+      throw Error("net:set_input: '" + name + "' = " + io::number_text(v) + " lies outside the range the network was "
+                  "trained on, [" + io::number_text(c.min) + ", " + io::number_text(c.max) + "]");
+    c.value = v;
+    return 0;
+  }
+  std::string valid;
+  for (const auto& c : net.conditions) valid += (valid.empty() ? "" : ", ") + c.name;
+  throw Error("net:set_input: '" + name + "' is not a condition input of " + net.spec.describe() +
+              " (its conditions: " + (valid.empty() ? "none; train it on a dataset with vary = {...}" : valid) + ")");
+}
+
 int w_restore_best(lua_State* L) {
   Mlp& net = self(L);
   lua_pushboolean(L, net.restore_best());
@@ -430,7 +468,7 @@ void index_through(lua_State* L, const char* type, lua_CFunction index) {
 void open_mlp(lua_State* L) {
   static const luaL_Reg methods[] = {
       SN_FN("save", w_save),       SN_FN("version", w_version),   SN_FN("trained_steps", w_trained_steps),
-      SN_FN("inputs", w_inputs),   SN_FN("restore_best", w_restore_best), SN_FN("best", w_best),
+      SN_FN("inputs", w_inputs),   SN_FN("conditions", w_conditions), SN_FN("set_input", w_set_input),   SN_FN("restore_best", w_restore_best), SN_FN("best", w_best),
       SN_FN("spec", w_spec),       SN_FN("params", w_params),     SN_FN("set_params", w_set_params),
       SN_FN("clone", w_clone),     {nullptr, nullptr}};
   static const luaL_Reg meta[] = {SN_FN("__newindex", w_newindex), SN_FN("__eq", w_eq), {nullptr, nullptr}};

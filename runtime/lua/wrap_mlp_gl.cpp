@@ -1,10 +1,12 @@
 // The GPU side of the "Mlp" type: net:forward(samples) in a compute shader and net:render(gbuffer)
 // in a fragment shader, added to the methods open_mlp defined; and the "gl" training backend,
 // registered for sn.train.
+#include <map>
 #include <cmath>
 
 #include "gl/buffer.h"
 #include "io/image.h"
+#include "io/text.h"
 #include "lua/binding.h"
 #include "lua/module.h"
 #include "data/dataset.h"
@@ -113,9 +115,10 @@ int w_forward(lua_State* L) {
   throw Error("net:forward: a Buffer, a Dataset or a table of samples expected, got " + type_name_at(L, 2));
 }
 
-// net:render(gbuffer [, { frames = 1, weights = "auto" }]) -> Image (RGBA float): the network as
-// the lighting model of every covered pixel, reading the G-buffer attributes named by
-// net:inputs(); alpha = coverage. `frames` draws it that many times first (for timing; the image
+// net:render(gbuffer [, { frames = 1, weights = "auto", values = { condition = x } }]) -> Image
+// (RGBA float): the network as the lighting model of every covered pixel, reading the G-buffer
+// attributes named by net:inputs() and, for a conditioned network, each condition's value from
+// `values` (else net:conditions()[k].value); alpha = coverage. `frames` draws it that many times first (for timing; the image
 // is the last); `weights = "storage"` reads the parameters from a storage buffer even where a
 // uniform buffer would hold them (for comparison).
 int w_render(lua_State* L) {
@@ -123,15 +126,32 @@ int w_render(lua_State* L) {
   const scene::GBuffer& g = check<scene::GBuffer>(L, 2, "GBuffer");
   int frames = 1;
   nn::WeightBuffer weights = nn::WeightBuffer::automatic;
+  std::map<std::string, double> values;
   if (!lua_isnoneornil(L, 3)) {
-    Options o(L, 3, "net:render", {"frames", "weights"});
+    Options o(L, 3, "net:render", {"frames", "weights", "values"});
+    if (o.has("values")) {
+      int vi = o.push("values");
+      if (!lua_istable(L, vi)) throw Error(o.where("values") + ": { condition = number, ... } expected");
+      lua_pushnil(L);
+      while (lua_next(L, vi)) {
+        std::string name = lua_type(L, -2) == LUA_TSTRING ? lua_tostring(L, -2) : "?";
+        double v = check_number(L, -1, (o.where("values") + " '" + name + "'").c_str());
+        const nn::Condition* c = net->condition(name);
+        if (c && !(v >= c->min && v <= c->max))
+          throw Error(o.where("values") + ": '" + name + "' = " + io::number_text(v) + " lies outside the range the "
+                      "network was trained on, [" + io::number_text(c->min) + ", " + io::number_text(c->max) + "]");
+        values[name] = v;
+        lua_pop(L, 1);
+      }
+      lua_pop(L, 1);
+    }
     long long f = o.integer("frames", 1);
     if (f < 1 || f > 100000) throw Error("net:render option 'frames' must be 1..100000, got " + std::to_string(f));
     frames = int(f);
     if (o.choice("weights", {"auto", "storage"}, 0) == 1) weights = nn::WeightBuffer::storage;
   }
   gl::RenderTarget out(g.width, g.height, 1);
-  nn::draw_mlp(net, g, out, frames, weights);
+  nn::draw_mlp(net, g, out, frames, weights, values);
   push(L, std::make_shared<io::Image>(out.read(0)), "Image");
   return 1;
 }

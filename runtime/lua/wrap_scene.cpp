@@ -1,6 +1,7 @@
 // sn.scene{...}: meshes, cameras, an image size and a light; scene:gbuffer{...} ("GBuffer"),
 // scene:dataset{...} (a cached "Dataset"), sn.render_truth(gbuffer, model, light) and the
 // dataset cache counters. scene:render lives in shadenet.scene.lua.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -282,10 +283,11 @@ int w_gbuffer(lua_State* L) {
 }
 
 // scene:dataset{ inputs = {"normal", "view"}, target = model, color = "rgb", views = {1, 2, ...},
-//                poses = {1, 2, ...}, split = 0.8, seed = 1, samples = 64149 | "all" } -> Dataset (cached)
+//                poses = {1, 2, ...}, split = 0.8, seed = 1, samples = 64149 | "all",
+//                vary = { param = {min, max}, ... } } -> Dataset (cached)
 int w_dataset(lua_State* L) {
   LuaScene& s = self(L);
-  Options o(L, 2, "scene:dataset", {"inputs", "target", "color", "views", "poses", "split", "seed", "samples"});
+  Options o(L, 2, "scene:dataset", {"inputs", "target", "color", "views", "poses", "split", "seed", "samples", "vary"});
   data::DatasetRequest r;
   int t = o.push("target");
   if (lua_isnil(L, t)) throw Error("scene:dataset option 'target' is required (a lighting model, e.g. sn.lighting.phong{})");
@@ -329,6 +331,21 @@ int w_dataset(lua_State* L) {
     r.samples = std::size_t(n);
   }
   lua_pop(L, 1);
+  if (o.has("vary")) {
+    int vi = o.push("vary");
+    if (!lua_istable(L, vi)) throw Error(o.where("vary") + ": { parameter = {min, max}, ... } expected");
+    lua_pushnil(L);
+    while (lua_next(L, vi)) {
+      if (lua_type(L, -2) != LUA_TSTRING) throw Error(o.where("vary") + ": keys must be parameter names");
+      std::string name = lua_tostring(L, -2);
+      auto range = check_numbers(L, -1, (o.where("vary") + " '" + name + "'").c_str(), 2);
+      r.vary.push_back({name, range[0], range[1]});
+      lua_pop(L, 1);
+    }
+    lua_pop(L, 1);
+    // Lua tables have no order; the vec4 of varied values is laid out by name.
+    std::sort(r.vary.begin(), r.vary.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
+  }
   push(L, data::cached_dataset(s.scene, r), "Dataset");
   return 1;
 }

@@ -2,7 +2,9 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <bit>
+#include <cmath>
 #include <cerrno>
 #include <cstdint>
 #include <cstring>
@@ -87,6 +89,17 @@ void save_checkpoint(const Mlp& net, const std::string& path) {
     p.put(double(net.best_val_mse));
     for (float v : net.best_params) p.put(v);
   }
+  // Optional trailing section, absent for an unconditioned network (older files end here).
+  if (!net.conditions.empty()) {
+    p.str("conditions");
+    p.put(uint32_t(net.conditions.size()));
+    for (const auto& c : net.conditions) {
+      p.str(c.name);
+      p.put(double(c.min));
+      p.put(double(c.max));
+      p.put(double(c.value));
+    }
+  }
 
   Writer file;
   file.out.append(kMagic, sizeof kMagic);
@@ -149,6 +162,20 @@ Mlp load_checkpoint(const std::string& path) {
     net.best_val_mse = r.get<double>("best snapshot");
     net.best_params.resize(count);
     for (auto& v : net.best_params) v = r.get<float>("best snapshot");
+  }
+  if (r.pos != payload.size()) {
+    if (r.str("conditions") != "conditions") throw std::runtime_error(path + ": checkpoint has unknown bytes after the network");
+    const uint32_t n = r.get<uint32_t>("conditions");
+    if (n > net.input_names.size()) throw std::runtime_error(path + ": checkpoint has more conditions than inputs");
+    for (uint32_t i = 0; i < n; ++i) {
+      Condition c;
+      c.name = r.str("conditions");
+      c.min = r.get<double>("conditions"), c.max = r.get<double>("conditions"), c.value = r.get<double>("conditions");
+      if (!(std::isfinite(c.min) && std::isfinite(c.max) && std::isfinite(c.value) && c.min <= c.max) ||
+          std::find(net.input_names.begin(), net.input_names.end(), c.name) == net.input_names.end())
+        throw std::runtime_error(path + ": checkpoint has a bad condition '" + c.name + "'");
+      net.conditions.push_back(c);
+    }
   }
   if (r.pos != payload.size()) throw std::runtime_error(path + ": checkpoint has unread bytes after the network");
   return net;

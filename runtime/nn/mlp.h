@@ -14,12 +14,27 @@ enum class Init { xavier, he };
 const char* init_name(Init i);
 Init parse_init(const std::string& name);  // "xavier" | "he"; throws listing the valid names
 
+// An input that is a lighting-model parameter (a network conditioned on it, trained on a dataset
+// that varied it per row): its training range, and the value it takes when the network renders
+// (a uniform; the middle of the range until set).
+struct Condition {
+  std::string name;
+  double min = 0, max = 0, value = 0;
+};
+
 struct Mlp {
   MlpSpec spec;
   std::vector<float> params;  // spec.param_count() floats, layout of MlpSpec
   // G-buffer attributes the input vector is assembled from, in order (e.g. {"normal", "view"});
   // empty until set by the user or by the first training on a data::Dataset that names them.
   std::vector<std::string> input_names;
+  // The input names that are conditions rather than G-buffer attributes (one number each).
+  std::vector<Condition> conditions;
+  const Condition* condition(const std::string& name) const {
+    for (const auto& c : conditions)
+      if (c.name == name) return &c;
+    return nullptr;
+  }
   // Bumped on every change of `params` (edits, training, restore_best, load): the renderer
   // re-uploads the weights when it differs from what it last uploaded.
   uint64_t version = 1;

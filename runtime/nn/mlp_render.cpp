@@ -31,15 +31,29 @@ std::size_t g_uploads = 0;
 
 const char* kSwizzle = "xyzw";
 
-// GLSL that fills the array u0[] of input vec4s from the attachments: attribute a's components
-// in order, zeros after the last input.
-std::string gather_inputs(const std::vector<std::string>& names) {
+// The input names that come from the G-buffer (the rest are conditions: uniforms).
+std::vector<std::string> attributes_of(const Mlp& net) {
+  std::vector<std::string> a;
+  for (const auto& n : net.input_names)
+    if (!net.condition(n)) a.push_back(n);
+  return a;
+}
+
+// GLSL that fills the array u0[] of input vec4s: attribute a's components from attachment a, a
+// condition's value from u_condition[k], in input order, zeros after the last input.
+std::string gather_inputs(const Mlp& net) {
   std::vector<std::string> comps;
   std::string code;
-  for (std::size_t a = 0; a < names.size(); ++a) {
+  int a = 0, k = 0;
+  for (const auto& name : net.input_names) {
+    if (net.condition(name)) {
+      comps.push_back("u_condition[" + std::to_string(k++) + "]");
+      continue;
+    }
     code += "vec4 g" + std::to_string(a) + " = texelFetch(u_attr[" + std::to_string(a) + "], p, 0); ";
-    const int w = scene::attribute_width(names[a]);
+    const int w = scene::attribute_width(name);
     for (int c = 0; c < w; ++c) comps.push_back("g" + std::to_string(a) + "." + kSwizzle[c]);
+    ++a;
   }
   while (comps.size() % 4) comps.push_back("0.0");
   std::string all;
@@ -61,6 +75,10 @@ void check_net(const Mlp& net, const scene::GBuffer& g) {
                                 "scene dataset or give it input names first");
   int width = 0;
   for (const auto& a : net.input_names) {
+    if (net.condition(a)) {
+      ++width;
+      continue;
+    }
     width += scene::attribute_width(a);
     bool held = false;
     for (const auto& h : g.attributes) held = held || h == a;
@@ -69,6 +87,8 @@ void check_net(const Mlp& net, const scene::GBuffer& g) {
   if (width != net.spec.inputs)
     throw std::invalid_argument(what + ": its input attributes give " + std::to_string(width) + " numbers, it takes " +
                                 std::to_string(net.spec.inputs));
+  if (attributes_of(net).empty())
+    throw std::invalid_argument(what + ": reads no G-buffer attribute (only conditions), so it covers no pixel");
   if (int(net.input_names.size()) > gl::RenderTarget::kMaxAttachments)
     throw std::invalid_argument(what + ": reads more attributes than a G-buffer holds");
 }
@@ -98,7 +118,7 @@ gl::Buffer& params_of(const std::shared_ptr<const Mlp>& net) {
 }  // namespace
 
 void draw_mlp(const std::shared_ptr<const Mlp>& net, const scene::GBuffer& g, gl::RenderTarget& out, int frames,
-              WeightBuffer weights) {
+              WeightBuffer weights, const std::map<std::string, double>& values) {
   if (!net) throw std::invalid_argument("draw_mlp: no network");
   check_net(*net, g);
   if (out.width() != g.width || out.height() != g.height)
@@ -108,17 +128,29 @@ void draw_mlp(const std::shared_ptr<const Mlp>& net, const scene::GBuffer& g, gl
   desc.vertex = "fullscreen.vert";
   desc.fragment = "mlp_shade.frag";
   desc.defines = mlp_defines(net->spec);
-  desc.defines["MLP_ATTRS"] = std::to_string(net->input_names.size());
-  desc.defines["MLP_GATHER_INPUTS"] = gather_inputs(net->input_names);
+  const std::vector<std::string> attributes = attributes_of(*net);
+  desc.defines["MLP_ATTRS"] = std::to_string(attributes.size());
+  desc.defines["MLP_GATHER_INPUTS"] = gather_inputs(*net);
+  if (!net->conditions.empty()) desc.defines["MLP_CONDITIONS"] = std::to_string(net->conditions.size());
   desc.defines["MLP_WEIGHTS_UBO"] = ubo ? "1" : "0";
   desc.defines["MLP_MAX_WIDTH4"] = std::to_string(chunks4(net->spec.max_width()));
   auto prog = gl::get_program(desc);
   std::vector<double> units;
-  for (std::size_t a = 0; a < net->input_names.size(); ++a) {
-    glBindTextureUnit(GLuint(a), g.target->color_texture(g.attachment(net->input_names[a])));
+  for (std::size_t a = 0; a < attributes.size(); ++a) {
+    glBindTextureUnit(GLuint(a), g.target->color_texture(g.attachment(attributes[a])));
     units.push_back(double(a));
   }
   prog->set_uniform("u_attr", units);
+  if (!net->conditions.empty()) {
+    std::vector<double> cond;
+    for (const auto& c : net->conditions) {
+      auto it = values.find(c.name);
+      cond.push_back(it == values.end() ? c.value : it->second);
+    }
+    for (const auto& [name, v] : values)
+      if (!net->condition(name)) throw std::invalid_argument(net->spec.describe() + ": no condition input '" + name + "'");
+    if (prog->uniform("u_condition")) prog->set_uniform("u_condition", cond);
+  }
   gl::Buffer& params = params_of(net);
   glBindBufferBase(ubo ? GL_UNIFORM_BUFFER : GL_SHADER_STORAGE_BUFFER, 0, params.id());
   out.bind();
@@ -136,11 +168,12 @@ void draw_mlp(const std::shared_ptr<const Mlp>& net, const scene::GBuffer& g, gl
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-io::Image render_mlp(const std::shared_ptr<const Mlp>& net, const scene::GBuffer& g) {
+io::Image render_mlp(const std::shared_ptr<const Mlp>& net, const scene::GBuffer& g,
+                     const std::map<std::string, double>& values) {
   if (!net) throw std::invalid_argument("render_mlp: no network");
   check_net(*net, g);
   gl::RenderTarget out(g.width, g.height, 1);
-  draw_mlp(net, g, out);
+  draw_mlp(net, g, out, 1, WeightBuffer::automatic, values);
   return out.read(0);
 }
 

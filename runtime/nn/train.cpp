@@ -135,6 +135,8 @@ JobResult train(const TrainJob& job) {
     net.best_epoch = r.best_epoch;
     net.trained_steps += uint64_t(r.steps);
     if (net.input_names.empty()) net.input_names = job.data->input_names;
+    if (net.conditions.empty() && net.input_names == job.data->input_names)
+      for (const auto& c : job.data->conditions) net.conditions.push_back({c.name, c.min, c.max, 0.5 * (c.min + c.max)});
     if (job.keep == Keep::best && r.best_epoch > 0) net.params = r.best_params;
     net.touch();
   }

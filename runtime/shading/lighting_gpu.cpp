@@ -77,7 +77,7 @@ int attribute_binding(const std::string& a) {
 
 }  // namespace
 
-gl::Includes lighting_includes(const LightingModel& m) {
+gl::Includes lighting_includes(const LightingModel& m, const std::vector<std::string>& vary) {
   std::string g = "// Lighting model '" + m.name + "', assembled by runtime/shading/lighting_gpu.cpp.\n";
   g += "#include \"lighting/common.glsl\"\n#include \"lighting/surface.glsl\"\n";
   g += "struct Params {\n";
@@ -90,10 +90,18 @@ gl::Includes lighting_includes(const LightingModel& m) {
   for (const auto& ps : m.params) g += "  p." + ps.name + " = u_" + ps.name + ";\n";
   if (m.params.empty()) g += "  p.unused_ = 0.0;\n";
   g += "  return p;\n}\n";
+  if (!vary.empty()) {
+    // Parameters a dataset varies per row arrive as the components of one vec4 per sample.
+    g += "void lighting_vary(inout Params p, vec4 x) {\n";
+    for (std::size_t k = 0; k < vary.size(); ++k) g += "  p." + vary[k] + " = x[" + std::to_string(k) + "];\n";
+    g += "}\n";
+  }
   g += "// n and v normalised, the light filled in; the caller sets the attributes the model reads.\n"
        "Surface lighting_surface(vec3 n, vec3 v) {\n"
        "  return Surface(safe_normalize(n), safe_normalize(v), u_light_dir, u_light_color, vec3(1.0), vec2(0.0),\n"
        "                 vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));\n}\n"
+       "vec3 lighting_raw(Surface s, Params p) { return shade(s, p); }\n"
+       "vec3 lighting(Surface s, Params p) { return clamp(shade(s, p), 0.0, 1.0); }\n"
        "vec3 lighting_raw(Surface s) { return shade(s, lighting_params()); }\n"
        "vec3 lighting(Surface s) { return clamp(lighting_raw(s), 0.0, 1.0); }\n";
   gl::Includes inc{{"lighting/model.glsl", g}};
@@ -101,9 +109,27 @@ gl::Includes lighting_includes(const LightingModel& m) {
   return inc;
 }
 
-void use_lighting(gl::ProgramDesc& desc, const LightingParams& p) {
-  for (auto& [k, v] : lighting_includes(p.spec())) desc.includes[k] = v;
+void use_lighting(gl::ProgramDesc& desc, const LightingParams& p, const std::vector<std::string>& vary) {
+  for (auto& [k, v] : lighting_includes(p.spec(), vary)) desc.includes[k] = v;
+  if (!vary.empty()) desc.defines["LIGHTING_VARY"] = "1";
   for (const auto& a : p.spec().attributes) desc.defines["SURFACE_" + upper(a)] = "1";
+}
+
+void check_vary(const LightingModel& m, const std::vector<std::string>& vary) {
+  if (vary.size() > 4) throw std::invalid_argument("a dataset varies at most 4 parameters per row, got " + std::to_string(vary.size()));
+  for (std::size_t k = 0; k < vary.size(); ++k) {
+    auto it = std::find_if(m.params.begin(), m.params.end(), [&](const ParamSpec& ps) { return ps.name == vary[k]; });
+    if (it == m.params.end()) {
+      std::string valid;
+      for (const auto& ps : m.params) valid += (valid.empty() ? "" : ", ") + ps.name;
+      throw std::invalid_argument("lighting model " + m.name + " has no parameter '" + vary[k] + "' to vary (valid: " + valid + ")");
+    }
+    if (it->components != 1)
+      throw std::invalid_argument("lighting model " + m.name + " parameter '" + vary[k] +
+                                  "' has " + std::to_string(it->components) + " components; only numbers can vary per row");
+    if (std::find(vary.begin(), vary.begin() + long(k), vary[k]) != vary.begin() + long(k))
+      throw std::invalid_argument("parameter '" + vary[k] + "' is varied twice");
+  }
 }
 
 void set_lighting_uniforms(gl::Program& prog, const LightingParams& p, const scene::Light& light) {
@@ -138,9 +164,15 @@ void compile_lighting(const LightingModel& m) {
 }
 
 void evaluate(const LightingParams& p, const scene::Light& light, const SampleBuffers& in, gl::Buffer& targets,
-              std::size_t count, shading::ColorSpace color, bool raw) {
+              std::size_t count, shading::ColorSpace color, bool raw, const Varied* varied) {
   if (count == 0) return;
   const LightingModel& m = p.spec();
+  std::vector<std::string> vary;
+  if (varied) {
+    vary = varied->params;
+    check_vary(m, vary);
+    require_size(*varied->values, count, "varied parameter");
+  }
   auto get = [&](const std::string& a) -> const gl::Buffer& {
     auto it = in.find(a);
     if (it == in.end() || !it->second)
@@ -155,9 +187,10 @@ void evaluate(const LightingParams& p, const scene::Light& light, const SampleBu
   gl::ProgramDesc desc;
   desc.compute = "eval_lighting.comp";
   desc.defines = {{"COLOR_SPACE", std::to_string(int(color))}, {"LIGHTING_RAW", raw ? "1" : "0"}};
-  use_lighting(desc, p);
+  use_lighting(desc, p, vary);
   auto prog = gl::get_program(desc);
   set_lighting_uniforms(*prog, p, light);
+  if (varied) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 9, varied->values->id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, normals.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, views.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, targets.id());

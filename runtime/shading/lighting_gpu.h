@@ -19,9 +19,13 @@ namespace sn::shading {
 // Makes a program shade with the model: "lighting/model.glsl" assembled from its definition
 // (Params, the uniforms, its shade() function, lighting_surface/lighting_raw/lighting) and
 // SURFACE_<ATTRIBUTE> defined for each attribute it reads.
-void use_lighting(gl::ProgramDesc& desc, const LightingParams& p);
+// With `vary`, LIGHTING_VARY is defined and lighting_vary(inout Params, vec4) sets those
+// parameters from a vec4 per sample.
+void use_lighting(gl::ProgramDesc& desc, const LightingParams& p, const std::vector<std::string>& vary = {});
 // The assembled "lighting/model.glsl" (and the definition's source when it is a string).
-gl::Includes lighting_includes(const LightingModel& m);
+gl::Includes lighting_includes(const LightingModel& m, const std::vector<std::string>& vary = {});
+// Throws unless `vary` names at most 4 distinct scalar parameters of the model.
+void check_vary(const LightingModel& m, const std::vector<std::string>& vary);
 // Sets u_light_dir, u_light_color and "u_" + every parameter the program uses.
 void set_lighting_uniforms(gl::Program& prog, const LightingParams& p, const scene::Light& light);
 // Compiles the model's GLSL once (a small compute program), so a definition's error shows at
@@ -32,10 +36,18 @@ void compile_lighting(const LightingModel& m);
 // model reads ("base_color", "uv", "tangent", ...).
 using SampleBuffers = std::map<std::string, const gl::Buffer*>;
 
+// Parameters that take a value per sample (a conditioned dataset): values[i][k] is params[k]
+// at sample i (vec4 buffer).
+struct Varied {
+  std::vector<std::string> params;
+  const gl::Buffer* values = nullptr;
+};
+
 // Shades `count` samples: targets[i] = the model at sample i in colour space `color`, or the
 // unclamped RGB radiance when `raw`. Throws naming an attribute the model reads that `in` lacks.
 void evaluate(const LightingParams& p, const scene::Light& light, const SampleBuffers& in, gl::Buffer& targets,
-              std::size_t count, shading::ColorSpace color = shading::ColorSpace::rgb, bool raw = false);
+              std::size_t count, shading::ColorSpace color = shading::ColorSpace::rgb, bool raw = false,
+              const Varied* varied = nullptr);
 
 // Host-side convenience (uploads, evaluates, downloads): per attribute, one vec3 per sample
 // (uv in .xy).

@@ -36,4 +36,29 @@ assert(trained == 1, "the network was trained once and kept across the re-run:\n
 H.write(dir .. "/minnaert.glsl", glsl:gsub("pow%(nl, p%.k%)", "pow(nl, p.kk)"))
 s:wait_log("minnaert%.glsl:%d+")
 s:stop()
+
+-- A conditioned network's roughness changes from the console: the next frame shows it, with no
+-- retraining.
+H.write(dir .. "/conditioned.lua", [[
+local sn = require "shadenet"
+local scene = sn.scene { mesh = sn.mesh.sphere {}, size = { 64, 64 }, views = { count = 4 } }
+local net = sn.keep("conditioned", function()
+  local data = scene:dataset { target = sn.lighting.ggx {}, vary = { roughness = { 0.1, 0.8 } },
+                               inputs = { "normal", "view", "roughness" }, samples = 3000 }
+  local net = sn.mlp { inputs = 7, hidden = { 12, 12 }, seed = 1 }
+  sn.train { nets = { net }, data = data, epochs = 3, batch = 8 }
+  print("trained conditioned")
+  return net
+end)
+sn.live.show { scene = scene, network = net, mode = "network" }
+]])
+local c = H.start { dir = dir .. "/conditioned_session", script = dir .. "/conditioned.lua", window = false, limit = 60 }
+c:wait_frame(1)
+local before = c:image(c:settle())
+c:send('net:set_input("roughness", 0.75)')
+local after = c:image(c:settle())
+assert(sn.image.mse(before, after, { channels = 3 }) > 1e-6, "the new roughness is drawn")
+local _, trained = c:log():gsub("trained conditioned", "")
+assert(trained == 1, "no retraining:\n" .. c:log())
+c:stop()
 print("ok")
