@@ -1,6 +1,8 @@
 // Shared by the bindings that take lighting models and lights (wrap_lighting.cpp,
 // wrap_lighting_define.cpp, wrap_scene.cpp).
 #pragma once
+#include <vector>
+
 #include "lua/binding.h"
 #include "scene/light.h"
 #include "shading/lighting_params.h"
@@ -13,6 +15,9 @@ constexpr const char* kLightingType = "Lighting";
 // is used); `what` names it in errors.
 scene::Light check_light(lua_State* L, int idx, const char* what, const scene::Light& def = {});
 void push_light(lua_State* L, const scene::Light& l);
+// The lights of sn.lighting.stress / check: a list of light tables at `idx`, or (none) the stress
+// test's two lights. `fn` names the function in errors.
+std::vector<scene::Light> check_lights(lua_State* L, int idx, const char* fn);
 void push_vec3(lua_State* L, const glm::dvec3& v);
 // Pushes a Lighting of model `m` with the parameters in the table at `idx` (nil = defaults).
 int make_lighting(lua_State* L, const shading::ModelPtr& m, int idx);

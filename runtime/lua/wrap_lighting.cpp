@@ -49,6 +49,18 @@ Light check_light(lua_State* L, int idx, const char* what, const Light& def) {
   }
 }
 
+std::vector<Light> check_lights(lua_State* L, int idx, const char* fn) {
+  if (lua_isnoneornil(L, idx)) return shading::stress_lights();
+  if (!lua_istable(L, idx)) throw Error(std::string(fn) + ": a list of lights expected as argument " + std::to_string(idx));
+  std::vector<Light> lights;
+  for (int i = 1; i <= int(lua_objlen(L, idx)); ++i) {
+    lua_rawgeti(L, idx, i);
+    lights.push_back(check_light(L, -1, (std::string(fn) + " light").c_str()));
+    lua_pop(L, 1);
+  }
+  return lights;
+}
+
 void push_light(lua_State* L, const Light& l) {
   lua_createtable(L, 0, 2);
   push_vec3(L, l.dir);
@@ -276,17 +288,7 @@ void push_counts(lua_State* L, const shading::StressCounts& c) {
 //   twin = {...}, encoded_nan, encoded_out_of_range, max_raw, failures }
 int w_stress(lua_State* L) {
   const LightingParams& p = check<LightingParams>(L, 1, kLightingType);
-  std::vector<Light> lights = shading::stress_lights();
-  if (!lua_isnoneornil(L, 2)) {
-    if (!lua_istable(L, 2)) throw Error("sn.lighting.stress: a list of lights expected as argument 2");
-    lights.clear();
-    for (int i = 1; i <= int(lua_objlen(L, 2)); ++i) {
-      lua_rawgeti(L, 2, i);
-      lights.push_back(check_light(L, -1, "sn.lighting.stress light"));
-      lua_pop(L, 1);
-    }
-  }
-  auto r = shading::stress_test(p, lights);
+  auto r = shading::stress_test(p, check_lights(L, 2, "sn.lighting.stress"));
   lua_createtable(L, 0, 8);
   lua_pushinteger(L, lua_Integer(r.samples)), lua_setfield(L, -2, "samples");
   push_counts(L, r.gpu), lua_setfield(L, -2, "gpu");

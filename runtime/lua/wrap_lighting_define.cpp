@@ -56,34 +56,44 @@ void push_params(lua_State* L, const shading::LightingParams& p) {
   }
 }
 
-// The twin of a defined model: calls twin(surface, params) -> {r, g, b}. A wrong shape or a Lua
-// error is an exception naming the model; NaN comes back as it is (the stress test counts it).
+// Calls the Lua function under registry `ref` with the arguments push_args() pushes and reads
+// the {r, g, b} it returns. A Lua error or a wrong shape is an exception naming `what`; NaN comes
+// back as it is (the stress test counts it).
+template <class PushArgs>
+glm::dvec3 call_rgb(lua_State* L, int ref, const std::string& what, PushArgs push_args) {
+  int top = lua_gettop(L);
+  lua_rawgeti(L, LUA_REGISTRYINDEX, ref);
+  int nargs = push_args();
+  if (lua_pcall(L, nargs, 1, 0) != 0) {
+    std::string e = lua_tostring(L, -1) ? lua_tostring(L, -1) : "(error object is not a string)";
+    lua_settop(L, top);
+    throw Error(what + " failed: " + e);
+  }
+  glm::dvec3 out;
+  bool ok = lua_istable(L, -1) && lua_objlen(L, -1) == 3;
+  for (int c = 0; ok && c < 3; ++c) {
+    lua_rawgeti(L, -1, c + 1);
+    ok = lua_type(L, -1) == LUA_TNUMBER;
+    if (ok) out[c] = lua_tonumber(L, -1);
+    lua_pop(L, 1);
+  }
+  std::string got = ok ? "" : type_name_at(L, -1);
+  lua_settop(L, top);
+  if (!ok) throw Error(what + " must return {r, g, b} (3 numbers), got " + got);
+  return out;
+}
+
+// The twin of a defined model: twin(surface, params) -> {r, g, b}.
 struct LuaTwin {
   lua_State* L;
   int ref;
   std::string name;
   glm::dvec3 operator()(const shading::Surface& s, const shading::LightingParams& p) const {
-    int top = lua_gettop(L);
-    lua_rawgeti(L, LUA_REGISTRYINDEX, ref);
-    push_surface(L, s);
-    push_params(L, p);
-    if (lua_pcall(L, 2, 1, 0) != 0) {
-      std::string e = lua_tostring(L, -1) ? lua_tostring(L, -1) : "(error object is not a string)";
-      lua_settop(L, top);
-      throw Error("lighting model '" + name + "': its twin failed: " + e);
-    }
-    glm::dvec3 out;
-    bool ok = lua_istable(L, -1) && lua_objlen(L, -1) == 3;
-    for (int c = 0; ok && c < 3; ++c) {
-      lua_rawgeti(L, -1, c + 1);
-      ok = lua_type(L, -1) == LUA_TNUMBER;
-      if (ok) out[c] = lua_tonumber(L, -1);
-      lua_pop(L, 1);
-    }
-    std::string got = ok ? "" : type_name_at(L, -1);
-    lua_settop(L, top);
-    if (!ok) throw Error("lighting model '" + name + "': its twin must return {r, g, b} (3 numbers), got " + got);
-    return out;
+    return call_rgb(L, ref, "lighting model '" + name + "': its twin", [&] {
+      push_surface(L, s);
+      push_params(L, p);
+      return 2;
+    });
   }
 };
 
@@ -93,24 +103,11 @@ struct LuaBound {
   int ref;
   std::string name;
   glm::dvec3 operator()(const shading::LightingParams& p, const scene::Light& light) const {
-    int top = lua_gettop(L);
-    lua_rawgeti(L, LUA_REGISTRYINDEX, ref);
-    push_params(L, p);
-    push_light(L, light);
-    if (lua_pcall(L, 2, 1, 0) != 0) {
-      std::string e = lua_tostring(L, -1) ? lua_tostring(L, -1) : "(error object is not a string)";
-      lua_settop(L, top);
-      throw Error("lighting model '" + name + "': its bound failed: " + e);
-    }
-    std::vector<double> v;
-    try {
-      v = check_numbers(L, -1, ("the bound of lighting model '" + name + "'").c_str(), 3);
-    } catch (...) {
-      lua_settop(L, top);
-      throw;
-    }
-    lua_settop(L, top);
-    return {v[0], v[1], v[2]};
+    return call_rgb(L, ref, "lighting model '" + name + "': its bound", [&] {
+      push_params(L, p);
+      push_light(L, light);
+      return 2;
+    });
   }
 };
 
@@ -230,17 +227,7 @@ int w_define(lua_State* L) {
 // sn.lighting.check(model [, lights]) -> { max_difference, compared, skipped, worst = {...} }
 int w_check(lua_State* L) {
   const auto& p = check<shading::LightingParams>(L, 1, kLightingType);
-  std::vector<scene::Light> lights = shading::stress_lights();
-  if (!lua_isnoneornil(L, 2)) {
-    if (!lua_istable(L, 2)) throw Error("sn.lighting.check: a list of lights expected as argument 2");
-    lights.clear();
-    for (int i = 1; i <= int(lua_objlen(L, 2)); ++i) {
-      lua_rawgeti(L, 2, i);
-      lights.push_back(check_light(L, -1, "sn.lighting.check light"));
-      lua_pop(L, 1);
-    }
-  }
-  auto c = shading::check_twin(p, lights);
+  auto c = shading::check_twin(p, check_lights(L, 2, "sn.lighting.check"));
   lua_createtable(L, 0, 4);
   lua_pushnumber(L, c.max_difference), lua_setfield(L, -2, "max_difference");
   lua_pushinteger(L, lua_Integer(c.compared)), lua_setfield(L, -2, "compared");
