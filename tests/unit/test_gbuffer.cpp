@@ -148,7 +148,7 @@ TEST(GBuffer, MissingAttributesAreClearErrors) {
     FAIL();
   } catch (const std::invalid_argument& e) {
     EXPECT_EQ(std::string(e.what()),
-              "unknown G-buffer attribute 'normals' (valid: normal, view, position, world_position, uv, base_color)");
+              "unknown G-buffer attribute 'normals' (valid: normal, view, position, world_position, uv, base_color, tangent, bitangent)");
   }
   EXPECT_THROW(scene::render_gbuffer({{&f.sphere}}, f.camera, W, H, {"view", "view"}), std::invalid_argument);
 }
