@@ -4,18 +4,28 @@
 
 namespace sn::lua {
 
+namespace {
+thread_local lua_State* g_running = nullptr;  // the thread of the innermost guarded call
+}  // namespace
+
+lua_State* running_state(lua_State* fallback) { return g_running ? g_running : fallback; }
+
 int guarded(lua_State* L, int (*f)(lua_State*)) {
+  lua_State* outer = g_running;
+  g_running = L;
   bool failed = false;
+  int results = 0;
   try {
-    return f(L);
+    results = f(L);
   } catch (const std::exception& e) {
     luaL_where(L, 1);
     lua_pushstring(L, e.what());
     lua_concat(L, 2);
     failed = true;
   }
+  g_running = outer;
   // Outside the catch: every C++ destructor has run before the longjmp.
-  return failed ? lua_error(L) : 0;
+  return failed ? lua_error(L) : results;
 }
 
 void define_type(lua_State* L, const char* type, const luaL_Reg* methods, lua_CFunction tostring_fn,

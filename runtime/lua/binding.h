@@ -23,6 +23,9 @@ struct Error : std::runtime_error {
 
 // Runs f(L); a C++ exception becomes a Lua error "file.lua:LINE: message".
 int guarded(lua_State* L, int (*f)(lua_State*));
+// The Lua thread (main or coroutine) of the binding running now, else `fallback`: C++ that calls
+// back into Lua (a defined model's twin) uses it, never a thread saved earlier that may be dead.
+lua_State* running_state(lua_State* fallback);
 template <int (*F)(lua_State*)>
 int wrap(lua_State* L) {
   return guarded(L, F);

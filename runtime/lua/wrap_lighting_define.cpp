@@ -62,6 +62,7 @@ void push_params(lua_State* L, const shading::LightingParams& p) {
 template <class PushArgs>
 glm::dvec3 call_rgb(lua_State* L, int ref, const std::string& what, PushArgs push_args) {
   int top = lua_gettop(L);
+  if (!lua_checkstack(L, 8)) throw Error(what + ": no Lua stack space left to call it");
   lua_rawgeti(L, LUA_REGISTRYINDEX, ref);
   int nargs = push_args();
   if (lua_pcall(L, nargs, 1, 0) != 0) {
@@ -89,9 +90,10 @@ struct LuaTwin {
   int ref;
   std::string name;
   glm::dvec3 operator()(const shading::Surface& s, const shading::LightingParams& p) const {
-    return call_rgb(L, ref, "lighting model '" + name + "': its twin", [&] {
-      push_surface(L, s);
-      push_params(L, p);
+    lua_State* T = running_state(L);
+    return call_rgb(T, ref, "lighting model '" + name + "': its twin", [&] {
+      push_surface(T, s);
+      push_params(T, p);
       return 2;
     });
   }
@@ -103,9 +105,10 @@ struct LuaBound {
   int ref;
   std::string name;
   glm::dvec3 operator()(const shading::LightingParams& p, const scene::Light& light) const {
-    return call_rgb(L, ref, "lighting model '" + name + "': its bound", [&] {
-      push_params(L, p);
-      push_light(L, light);
+    lua_State* T = running_state(L);
+    return call_rgb(T, ref, "lighting model '" + name + "': its bound", [&] {
+      push_params(T, p);
+      push_light(T, light);
       return 2;
     });
   }

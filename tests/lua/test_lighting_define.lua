@@ -95,6 +95,18 @@ local d2 = scene:dataset { target = m2, samples = 1000 }
 assert(sn.dataset_stats().builds == builds + 1, "changed GLSL: a new dataset")
 assert(d1:counts() == d2:counts(), "same pixels")
 
+-- A model defined inside a coroutine that has ended: its twin runs on the thread that calls it.
+local co = coroutine.create(function()
+  return sn.lighting.define { name = "lambert_co", glsl = "vec3 shade(Surface s, Params p) { return vec3(max(dot(s.n, s.l), 0.0)); }",
+                              twin = function(s) local k = math.max(v3.dot(s.n, s.l), 0) return { k, k, k } end }
+end)
+local _, lambert_co = coroutine.resume(co)
+assert(coroutine.status(co) == "dead")
+co = nil
+collectgarbage()
+collectgarbage()
+assert(sn.lighting.check(lambert_co).max_difference < 1e-5, "a twin defined in a finished coroutine")
+
 -- Every built-in holds to its C++ twin through the same check (measured: 2e-8 toon3 .. 6e-6 ggx).
 for _, name in ipairs { "phong", "blinn_phong", "ggx", "toon3", "textured_phong" } do
   local r = sn.lighting.check(sn.lighting[name] {})
