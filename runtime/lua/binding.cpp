@@ -1,6 +1,10 @@
 #include "lua/binding.h"
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+
+#include "io/text.h"
 
 namespace sn::lua {
 
@@ -80,14 +84,29 @@ double check_number(lua_State* L, int idx, const char* what) {
 
 long long check_integer(lua_State* L, int idx, const char* what) {
   double v = check_number(L, idx, what);
-  if (std::floor(v) != v) throw Error(std::string(what) + ": integer expected, got " + std::to_string(v));
+  if (std::floor(v) != v) throw Error(std::string(what) + ": integer expected, got " + io::number_text(v));
+  // Beyond 2^53 a Lua number no longer holds every integer, and the cast would be undefined
+  // for infinities: both are errors, never a wrapped or rounded count.
+  if (!(std::abs(v) <= 9007199254740992.0))
+    throw Error(std::string(what) + ": integer within -2^53..2^53 expected, got " + io::number_text(v));
   return (long long)v;
+}
+
+int check_int32(lua_State* L, int idx, const char* what) {
+  long long v = check_integer(L, idx, what);
+  if (v < INT32_MIN || v > INT32_MAX)
+    throw Error(std::string(what) + ": integer within -2^31..2^31-1 expected, got " + std::to_string(v));
+  return int(v);
 }
 
 std::string check_string(lua_State* L, int idx, const char* what) {
   if (lua_type(L, idx) != LUA_TSTRING)
     throw Error(std::string(what) + ": string expected, got " + type_name_at(L, idx));
-  return lua_tostring(L, idx);
+  std::size_t len = 0;
+  const char* s = lua_tolstring(L, idx, &len);
+  // A NUL would silently cut a path or a name short where C++ meets the file system.
+  if (std::strlen(s) != len) throw Error(std::string(what) + ": the string holds a NUL byte (\\0)");
+  return std::string(s, len);
 }
 
 std::vector<double> check_numbers(lua_State* L, int idx, const char* what, int n) {
@@ -177,6 +196,12 @@ double Options::number(const char* key, double def) const {
 long long Options::integer(const char* key) const {
   if (!has(key)) throw Error(where(key) + " is required");
   return integer(key, 0);
+}
+int Options::int32(const char* key, int def) const {
+  int i = push(key);
+  int v = lua_isnil(L_, i) ? def : check_int32(L_, i, where(key).c_str());
+  lua_pop(L_, 1);
+  return v;
 }
 long long Options::integer(const char* key, long long def) const {
   int i = push(key);
