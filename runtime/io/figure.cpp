@@ -130,8 +130,9 @@ void draw_text(Image& img, int x, int y, const std::string& utf8, const TextStyl
   const std::string text = ascii_label(utf8);
   if (text.empty()) return;
   auto [w, h] = text_size(text, style.size);
-  (void)h;
   int x0 = style.align == Align::left ? x : style.align == Align::center ? x - w / 2 : x - w;
+  // Text wholly outside the image draws nothing (OpenImageIO asserts on such a region).
+  if (x0 >= img.width || x0 + w <= 0 || y >= img.height || y + h <= 0) return;
   int baseline = y + line_metrics(style.size).ascent;
   std::vector<float> color(img.channels, 1.f);
   for (int k = 0; k < std::min(3, img.channels); ++k) color[k] = style.color[k];
@@ -294,7 +295,8 @@ Heatmap heatmap(const Image& diff, const HeatmapStyle& s) {
   int label_h = s.colorbar && !s.label.empty() ? line_h + 2 : 0;
   int label_w = label_h ? text_size(s.label, tick_size)[0] : 0;
   int W = diff.width + (s.colorbar ? gap + bar_w + 4 + std::max(tick_w, label_w - bar_w - 4) + 4 : 0);
-  int H = diff.height + label_h;
+  // The colorbar's three tick labels need three text lines: a shorter image gets a taller canvas.
+  int H = std::max(diff.height, s.colorbar ? 3 * line_h : 0) + label_h;
   h.image = Image(W, H, 3);
   fill(h.image, s.background);
   for (int y = 0; y < diff.height; ++y)

@@ -95,9 +95,14 @@ Image difference(const Image& a, const Image& b) {
 
 double mse(const Image& a, const Image& b, int channels, const Image* mask, int mask_channel) {
   same_size(a, b);
+  if (channels == 0) throw std::invalid_argument("mse: 'channels' must be 1.." + std::to_string(a.channels) + " (or all)");
   if (channels < 0 || channels > a.channels) channels = a.channels;
-  if (mask && (mask->width != a.width || mask->height != a.height || mask_channel >= mask->channels))
-    throw std::invalid_argument("mask does not match the images");
+  if (mask && (mask->width != a.width || mask->height != a.height))
+    throw std::invalid_argument("mse: the mask is " + std::to_string(mask->width) + "x" + std::to_string(mask->height) +
+                                ", the images " + std::to_string(a.width) + "x" + std::to_string(a.height));
+  if (mask && (mask_channel < 0 || mask_channel >= mask->channels))
+    throw std::invalid_argument("mse: mask channel " + std::to_string(mask_channel + 1) + " outside the mask's channels 1.." +
+                                std::to_string(mask->channels));
   double sum = 0;
   size_t n = 0;
   for (int y = 0; y < a.height; ++y)
