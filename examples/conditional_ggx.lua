@@ -62,13 +62,12 @@ sn.image.grid { panels = panels, columns = #roughnesses, row_labels = { "GGX", "
   :save(out .. "/conditional_ggx.png")
 
 -- 3. The table.
-local f = assert(io.open(out .. "/table.md", "w"))
-f:write("## One network over GGX roughness 0.1-0.8 (examples/conditional_ggx.lua)\n\n")
-f:write(string.format("%s, inputs normal, view, roughness; trained on the cloth in 5 poses x 3 rings (64,149 rows, "
+local md = { "## One network over GGX roughness 0.1-0.8 (examples/conditional_ggx.lua)\n\n" }
+md[#md + 1] = (string.format("%s, inputs normal, view, roughness; trained on the cloth in 5 poses x 3 rings (64,149 rows, "
                       .. "each its own roughness), best validation MSE %.3g. Image MSE on the test blob (not trained "
                       .. "on), beside a network of the same size trained on one roughness alone.\n\n",
                       tostring(net), run.best_val_mse))
-f:write("| roughness | image MSE, one network for all | image MSE, a network for this roughness |\n|---:|---:|---:|\n")
-for _, row in ipairs(rows) do f:write(string.format("| %.3f | %.3g | %.3g |\n", row.r, row.mse, row.alone)) end
-f:close()
+md[#md + 1] = "| roughness | image MSE, one network for all | image MSE, a network for this roughness |\n|---:|---:|---:|\n"
+for _, row in ipairs(rows) do md[#md + 1] = string.format("| %.3f | %.3g | %.3g |\n", row.r, row.mse, row.alone) end
+sn.fs.write(out .. "/table.md", table.concat(md))  -- whole or not at all
 print(string.format("wrote %s/conditional_ggx.png, table.md, conditional_ggx.snmlp (%.0f s)", out, sn.clock() - t0))

@@ -141,12 +141,8 @@ lines[#lines + 1] = ""
 lines[#lines + 1] = "Image MSE and SSIM over covered pixels, mean of 3 views per mesh (elevations -30, 20, 60 degrees). "
   .. "Peak: the brightest covered pixel's luminance in the network's image over the model's, in the middle view "
   .. "(below 1 where a highlight is missing or dimmed)."
--- Written to a temporary name and renamed: never a half-written table.
-local tmp = out .. "/.table.md.tmp"
-local f = assert(io.open(tmp, "w"))
-assert(f:write(table.concat(lines, "\n"), "\n"))
-assert(f:close())
-assert(os.rename(tmp, out .. "/table.md"))
+-- sn.fs.write: a temporary file, every write checked, renamed: never a half-written table.
+sn.fs.write(out .. "/table.md", table.concat(lines, "\n") .. "\n")
 
 print(string.format("wrote %s/quickstart.png, %s/coverage.png and %s/table.md in %.0f s", out, out, out,
                     sn.clock() - t_start))

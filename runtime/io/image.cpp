@@ -9,6 +9,8 @@
 #include <stdexcept>
 #include <unistd.h>
 
+#include "io/atomic_write.h"
+
 namespace sn::io {
 
 namespace fs = std::filesystem;
@@ -50,14 +52,18 @@ void save_image(const Image& img, const std::string& path) {
   if (!(is_float || ext == ".png" || ext == ".jpg" || ext == ".jpeg" || ext == ".bmp"))
     throw std::runtime_error("cannot save '" + path + "': unknown image extension '" + ext +
                              "' (valid: .png, .exr, .jpg, .bmp, .tif, .hdr)");
-  fs::path parent = fs::path(path).parent_path();
-  if (!parent.empty()) fs::create_directories(parent);
-  // The temporary name keeps the extension so OpenImageIO picks the same writer.
-  std::string tmp = (parent / ("." + fs::path(path).stem().string() + ".tmp" + std::to_string(getpid()) + ext)).string();
-  auto out = OIIO::ImageOutput::create(tmp);
+  // Encoded in memory, then written whole by write_file_atomic, which checks every write, the
+  // flush, fsync and close (OpenImageIO's writers report success on a full disk).
+  auto out = OIIO::ImageOutput::create(path);
   if (!out) throw std::runtime_error("cannot save '" + path + "': " + OIIO::geterror());
+  if (!out->supports("ioproxy"))
+    throw std::runtime_error("cannot save '" + path + "': this build's " + out->format_name() +
+                             " writer cannot write to memory (valid: .png, .exr, .jpg, .bmp, .tif, .hdr where supported)");
+  std::vector<unsigned char> encoded;
+  OIIO::Filesystem::IOVecOutput memory(encoded);
+  out->set_ioproxy(&memory);
   OIIO::ImageSpec spec(img.width, img.height, img.channels, is_float ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
-  if (!out->open(tmp, spec)) throw std::runtime_error("cannot save '" + path + "': " + out->geterror());
+  if (!out->open(path, spec)) throw std::runtime_error("cannot save '" + path + "': " + out->geterror());
   bool ok;
   if (is_float) {
     ok = out->write_image(OIIO::TypeDesc::FLOAT, img.pixels.data());
@@ -72,11 +78,8 @@ void save_image(const Image& img, const std::string& path) {
   }
   std::string err = ok ? "" : out->geterror();
   ok = out->close() && ok;
-  if (!ok) {
-    std::remove(tmp.c_str());
-    throw std::runtime_error("cannot save '" + path + "': " + err);
-  }
-  fs::rename(tmp, path);
+  if (!ok) throw std::runtime_error("cannot save '" + path + "': " + (err.empty() ? out->geterror() : err));
+  write_file_atomic(path, std::string(encoded.begin(), encoded.end()), "image");
 }
 
 static void same_size(const Image& a, const Image& b) {

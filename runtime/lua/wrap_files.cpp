@@ -1,9 +1,11 @@
 // sn.fs.*: the few file-system calls results writers need and plain Lua lacks (creating
-// folders, listing one, checking a path), through std::filesystem rather than a shell.
+// folders, listing one, checking a path, writing a file whole), through std::filesystem and
+// io/atomic_write rather than a shell or io.open.
 #include <algorithm>
 #include <filesystem>
 #include <system_error>
 
+#include "io/atomic_write.h"
 #include "lua/binding.h"
 #include "lua/module.h"
 
@@ -41,6 +43,19 @@ int w_list(lua_State* L) {
   return 1;
 }
 
+// sn.fs.write(path, content) -> path: the whole file at once, never half-written (a temporary
+// file, every write, flush, fsync and close checked, then renamed over `path`; folders created).
+// On a full disk or any other failure the old file is untouched and the error names the cause.
+int w_write(lua_State* L) {
+  std::string path = check_string(L, 1, "sn.fs.write path");
+  if (lua_type(L, 2) != LUA_TSTRING) throw Error("sn.fs.write content: string expected, got " + type_name_at(L, 2));
+  std::size_t n = 0;
+  const char* bytes = lua_tolstring(L, 2, &n);  // any bytes, NUL included
+  io::write_file_atomic(path, std::string(bytes, n));
+  lua_pushstring(L, path.c_str());
+  return 1;
+}
+
 // sn.fs.exists(path) -> "file", "folder", "other" or nil
 int w_exists(lua_State* L) {
   std::string path = check_string(L, 1, "sn.fs.exists path");
@@ -54,7 +69,7 @@ int w_exists(lua_State* L) {
 }  // namespace
 
 void open_files(lua_State* L) {
-  static const luaL_Reg fns[] = {SN_FN("mkdir", w_mkdir), SN_FN("list", w_list), SN_FN("exists", w_exists),
+  static const luaL_Reg fns[] = {SN_FN("mkdir", w_mkdir), SN_FN("list", w_list), SN_FN("exists", w_exists), SN_FN("write", w_write),
                                  {nullptr, nullptr}};
   lua_newtable(L);
   luaL_register(L, nullptr, fns);

@@ -7,29 +7,14 @@ local json = require "lib.json"
 
 local results = {}
 
-local function dirname(path) return path:match("^(.*)/[^/]*$") end
-
--- A temporary name no other writer uses: this process's table address and the time.
-local function temp_name(path)
-  local dir, base = path:match("^(.*)/([^/]*)$")
-  local tag = tostring({}):match("0x(%x+)") or tostring(math.random(1, 2 ^ 30))
-  return string.format("%s/.%s.%s%d.tmp", dir or ".", base or path, tag, os.time() % 100000)
-end
 
 function results.mkdir(dir) return sn.fs.mkdir(dir) end
 
--- Writes `content` to path atomically (temp file + rename); creates the folder.
+-- Writes `content` to path whole (sn.fs.write: temp file, every write, flush, fsync and close
+-- checked, rename; folders created): on a full disk the old file stays and the error says why.
 function results.write_file(path, content)
-  local dir = dirname(path)
-  if dir and dir ~= "" then sn.fs.mkdir(dir) end
-  local tmp = temp_name(path)
-  local f, err = io.open(tmp, "wb")
-  if not f then error("cannot write '" .. path .. "': " .. tostring(err), 0) end
-  local ok, werr = f:write(content)
-  f:close()
-  if not ok then os.remove(tmp) error("cannot write '" .. path .. "': " .. tostring(werr), 0) end
-  local renamed, rerr = os.rename(tmp, path)
-  if not renamed then os.remove(tmp) error("cannot rename onto '" .. path .. "': " .. tostring(rerr), 0) end
+  local ok, err = pcall(sn.fs.write, path, content)
+  if not ok then error(err, 0) end
   return path
 end
 

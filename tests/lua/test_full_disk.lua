@@ -1,0 +1,54 @@
+-- Nothing lost on a full disk: on a 64 KiB tmpfs, writers that run out of space leave the old
+-- file as it was, no temporary behind, and an error naming the path and the cause. Needs root to
+-- mount the tmpfs; elsewhere it says so and checks nothing.
+local sn = require "shadenet"
+package.path = "scripts/?.lua;" .. package.path
+local results = require "lib.results"
+
+local dir = "/tmp/shadenet_full_disk_" .. tostring(os.time()) .. "_" .. tostring(math.random(1, 1e6))
+os.execute(("mkdir -p %q"):format(dir))
+local mounted = os.execute(("mount -t tmpfs -o size=64k tmpfs %q 2>/dev/null"):format(dir))
+if not (mounted == 0 or mounted == true) then
+  os.execute(("rmdir %q"):format(dir))
+  print("SKIPPED: cannot mount a tmpfs here (not root?)")
+  return
+end
+local function cleanup() os.execute(("umount %q; rmdir %q"):format(dir, dir)) end
+
+local ok, err = pcall(function()
+  local function read(path)
+    local f = assert(io.open(path, "rb"))
+    local s = f:read("*a")
+    f:close()
+    return s
+  end
+  local function only(names)
+    local list = sn.fs.list(dir)
+    assert(#list == #names, "files left: " .. table.concat(list, ", "))
+  end
+  local big = string.rep("x", 200 * 1024)
+
+  -- results.write_file (tables, CSV, JSON of every script) and sn.fs.write.
+  results.write_file(dir .. "/table.md", "old table\n")
+  local ok1, e1 = pcall(results.write_file, dir .. "/table.md", big)
+  assert(not ok1 and tostring(e1):find("No space left on device", 1, true) and tostring(e1):find("table.md", 1, true), tostring(e1))
+  assert(read(dir .. "/table.md") == "old table\n", "the old table survives")
+  only { "table.md" }
+
+  -- Images (PNG and EXR).
+  local small = sn.image.new { width = 4, height = 4, channels = 4, fill = 0.5 }
+  small:save(dir .. "/a.png")
+  small:save(dir .. "/b.exr")
+  local before_png, before_exr = read(dir .. "/a.png"), read(dir .. "/b.exr")
+  local noise = sn.image.new { width = 256, height = 256, channels = 4, fill = 0 }
+  for y = 1, 256 do for x = 1, 256 do noise:set(x, y, { math.random(), math.random(), math.random(), 1 }) end end
+  for _, name in ipairs { "a.png", "b.exr" } do
+    local okn, en = pcall(function() noise:save(dir .. "/" .. name) end)
+    assert(not okn and tostring(en):find(name, 1, true), name .. ": " .. tostring(en))
+  end
+  assert(read(dir .. "/a.png") == before_png and read(dir .. "/b.exr") == before_exr, "old images survive")
+  only { "a.png", "b.exr", "table.md" }
+end)
+cleanup()
+assert(ok, err)
+print("ok")
