@@ -21,6 +21,15 @@ Image read_from(std::unique_ptr<OIIO::ImageInput> in, const std::string& what) {
   const OIIO::ImageSpec& spec = in->spec();
   if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
     throw std::runtime_error(what + ": image has no pixels");
+  // A volume would be written depth times past a 2-D buffer.
+  if (spec.depth > 1)
+    throw std::runtime_error(what + ": a volume image (" + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
+                             "x" + std::to_string(spec.depth) + "); shadenet reads 2-D images");
+  if (uint64_t(spec.width) * uint64_t(spec.height) > kMaxImagePixels || spec.nchannels > kMaxImageChannels)
+    throw std::runtime_error(what + ": " + std::to_string(spec.width) + "x" + std::to_string(spec.height) + "x" +
+                             std::to_string(spec.nchannels) + " is above the limit of " +
+                             std::to_string(kMaxImagePixels) + " pixels and " + std::to_string(kMaxImageChannels) +
+                             " channels (io/image.h)");
   Image img(spec.width, spec.height, spec.nchannels);
   if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, img.pixels.data()))
     throw std::runtime_error(what + ": corrupt image data (" + in->geterror() + ")");
@@ -31,6 +40,7 @@ Image read_from(std::unique_ptr<OIIO::ImageInput> in, const std::string& what) {
 
 Image load_image(const std::string& path) {
   if (!fs::exists(path)) throw std::runtime_error("image file '" + path + "' does not exist");
+  if (!fs::is_regular_file(path)) throw std::runtime_error("image file '" + path + "' is not a regular file");
   return read_from(OIIO::ImageInput::open(path), "image file '" + path + "'");
 }
 

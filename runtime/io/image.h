@@ -1,10 +1,16 @@
 // Float images in memory, loaded and saved through OpenImageIO (PNG, EXR, and whatever else it
 // reads). Rows run top to bottom, channels are interleaved.
 #pragma once
+#include <cstdint>
 #include <string>
 #include <vector>
 
 namespace sn::io {
+
+// What a loaded image may be: 2^28 pixels (16384 x 16384; 4 GiB as float RGBA) and 64 channels.
+// Larger is an error naming the file, before any pixel is read; volumes (depth > 1) are refused.
+constexpr uint64_t kMaxImagePixels = uint64_t(1) << 28;
+constexpr int kMaxImageChannels = 64;
 
 struct Image {
   int width = 0, height = 0, channels = 0;
@@ -16,12 +22,13 @@ struct Image {
   float at(int x, int y, int c) const { return pixels[(size_t(y) * width + x) * channels + c]; }
 };
 
-// Throws naming the file and OpenImageIO's reason when it is missing or not an image.
+// Throws naming the file and OpenImageIO's reason when it is missing, not a regular file, not an
+// image, a volume, or above the limits.
 Image load_image(const std::string& path);
 // Decodes an image held in memory (e.g. a texture embedded in a glTF file).
 Image decode_image(const std::vector<unsigned char>& bytes, const std::string& what);
-// Writes to a temporary file beside `path` and renames it, so a failure never leaves a
-// half-written image. 8-bit formats (PNG, JPEG) are clamped to [0,1] and sRGB-free (values
+// Encodes in memory, then writes through write_file_atomic (temporary file, every write, fsync,
+// rename), so a failure -- a full disk included -- never leaves a half-written image. 8-bit formats (PNG, JPEG) are clamped to [0,1] and sRGB-free (values
 // stored as given); EXR keeps full float. Throws on an unknown extension.
 void save_image(const Image& img, const std::string& path);
 
