@@ -302,17 +302,24 @@ class GltfLoader {
   }
 
  private:
-  void walk(int node, const glm::dmat4& parent) {
+  void walk(int node, const glm::dmat4& parent, int depth = 1) {
     if (node < 0 || size_t(node) >= m_.nodes.size())
       throw FileError(path_, "refers to node " + std::to_string(node) + ", but the file has " +
                                  std::to_string(m_.nodes.size()));
+    // Bounded before anything is added: a chain 30,000 nodes deep overflowed the stack, one node
+    // listed 200,000 times grew the mesh to 23 GB.
+    if (depth > kMaxNodeDepth)
+      throw FileError(path_, "nests nodes more than " + std::to_string(kMaxNodeDepth) + " deep (the limit, scene/mesh.h)");
+    if (++node_visits_ > kMaxNodeVisits)
+      throw FileError(path_, "places nodes more than " + std::to_string(kMaxNodeVisits) +
+                                 " times (the limit, scene/mesh.h; a node listed many times?)");
     if (!on_path_.insert(node).second)
       throw FileError(path_, "node " + std::to_string(node) + " is its own ancestor (a cycle in the node tree)");
     const tinygltf::Node& n = m_.nodes[size_t(node)];
     glm::dmat4 world = parent * node_transform(n);
     if (!finite(world)) throw FileError(path_, "node " + std::to_string(node) + " has a non-finite transform");
     if (n.mesh >= 0) add_mesh(n.mesh, world);
-    for (int c : n.children) walk(c, world);
+    for (int c : n.children) walk(c, world, depth + 1);
     on_path_.erase(node);
   }
 
@@ -455,6 +462,7 @@ class GltfLoader {
   int texture_image_ = -1;
   int primitives_seen_ = 0, primitives_used_ = 0, primitives_with_uvs_ = 0, primitives_with_tangents_ = 0;
   std::vector<glm::vec4> file_tangents_;
+  std::size_t node_visits_ = 0;
 };
 
 // PNG bytes of `img` (8 bits per channel, values clamped to [0,1]) for embedding in a .glb.

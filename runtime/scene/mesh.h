@@ -2,6 +2,7 @@
 // drawn. One vertex list (position, normal, uv) and one uint32 index list, all primitives of a
 // file merged and already placed in world space by the file's node transforms.
 #pragma once
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -49,6 +50,11 @@ struct Mesh {
   // draw resets it so the next draw uploads again.
   mutable std::shared_ptr<GpuMesh> gpu;
 };
+
+// What a glTF scene may be: nodes nested at most this deep, and placed at most this many times
+// in all (a node under several parents counts once per place).
+constexpr int kMaxNodeDepth = 256;
+constexpr std::size_t kMaxNodeVisits = std::size_t(1) << 16;
 
 // Loads a .gltf or .glb file (told apart by content, not extension): walks the default scene's
 // node tree, applies each node's transform (matrix or TRS) to positions and, through its
