@@ -5,6 +5,8 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "gl/context.h"
+
 namespace sn::gl {
 
 namespace {
@@ -34,9 +36,10 @@ ElemType parse_elem_type(const std::string& name) {
 
 Buffer::Buffer(ElemType type, std::size_t count) : type_(type), count_(count) {
   if (count == 0) throw std::invalid_argument("buffer size must be at least 1 element");
+  take_gl_errors();
   glCreateBuffers(1, &id_);
   glNamedBufferStorage(id_, GLsizeiptr(bytes()), nullptr, kStorage);
-  if (glGetError() == GL_OUT_OF_MEMORY) {
+  if (take_gl_errors() == GL_OUT_OF_MEMORY) {
     glDeleteBuffers(1, &id_);
     throw std::runtime_error("out of GPU memory for a buffer of " + std::to_string(bytes()) + " bytes");
   }

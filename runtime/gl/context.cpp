@@ -40,4 +40,14 @@ void destroy_current() {
   g_context.reset();
 }
 
+unsigned take_gl_errors() {
+  GLenum first = GL_NO_ERROR;
+  for (int i = 0; i < 32; ++i) {  // a bounded loop: a lost context can report errors forever
+    GLenum e = glGetError();
+    if (e == GL_NO_ERROR) break;
+    if (first == GL_NO_ERROR) first = e;
+  }
+  return first;
+}
+
 }  // namespace sn::gl

@@ -48,4 +48,9 @@ bool has_current();
 void set_current(std::unique_ptr<Context> ctx);
 void destroy_current();
 
+// Reads and clears every pending GL error flag; returns the first (0 = none). Allocations call
+// it before and after, so a failure earlier (say, a render target too large) is not blamed on
+// the next small buffer.
+unsigned take_gl_errors();
+
 }  // namespace sn::gl

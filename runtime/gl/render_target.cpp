@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "gl/context.h"
+
 namespace sn::gl {
 
 RenderTarget::RenderTarget(int width, int height, int n) : width_(width), height_(height), n_(n) {
@@ -15,6 +17,7 @@ RenderTarget::RenderTarget(int width, int height, int n) : width_(width), height
                                 " is outside 1.." + std::to_string(max_size));
   if (n < 1 || n > kMaxAttachments)
     throw std::invalid_argument("render target colour attachments must be 1.." + std::to_string(kMaxAttachments));
+  take_gl_errors();
   glCreateFramebuffers(1, &fbo_);
   glCreateTextures(GL_TEXTURE_2D, n, color_);
   GLenum bufs[kMaxAttachments];
@@ -29,6 +32,14 @@ RenderTarget::RenderTarget(int width, int height, int n) : width_(width), height
   glCreateRenderbuffers(1, &depth_);
   glNamedRenderbufferStorage(depth_, GL_DEPTH_COMPONENT32F, width, height);
   glNamedFramebufferRenderbuffer(fbo_, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
+  if (GLenum e = take_gl_errors(); e != GL_NO_ERROR) {
+    release();
+    throw std::runtime_error(e == GL_OUT_OF_MEMORY
+                                 ? "out of GPU memory for a " + std::to_string(width) + "x" + std::to_string(height) +
+                                       " render target with " + std::to_string(n) + " attachment(s)"
+                                 : "cannot make a " + std::to_string(width) + "x" + std::to_string(height) +
+                                       " render target (GL error " + std::to_string(e) + ")");
+  }
   GLenum status = glCheckNamedFramebufferStatus(fbo_, GL_FRAMEBUFFER);
   if (status != GL_FRAMEBUFFER_COMPLETE) {
     release();
