@@ -97,6 +97,9 @@ class AccessorReader {
     // Check every range before allocating: `count` comes from the file.
     const unsigned char* base = nullptr;
     size_t stride = 0;
+    if (a.bufferView < -1)  // tinygltf's -1 is "absent" (zeros); anything lower is a broken file
+      throw FileError(path_, what + " (accessor " + std::to_string(index) + ") has bufferView " +
+                                 std::to_string(a.bufferView) + "; it must be a view's index or absent");
     if (a.bufferView >= 0) {
       const tinygltf::BufferView& bv = view(a.bufferView, what);
       size_t elem = size_t(csize) * size_t(components);
@@ -155,8 +158,12 @@ class AccessorReader {
                                  ") reaches past the end of buffer " + std::to_string(bv.buffer) + " (" +
                                  std::to_string(data.size()) + " bytes)");
     // count is untrusted: compare before multiplying so a huge count cannot wrap around.
-    if (count > 0 && (count - 1 > bv.byteLength / stride ||
-                      offset + (count - 1) * stride + elem > bv.byteLength))
+    // offset is untrusted too (a -1 in the file arrives as 2^64 - 1): no sum of it may wrap.
+    if (offset > bv.byteLength)
+      throw FileError(path_, what + ": byte offset " + std::to_string(offset) + " lies past the end of buffer view " +
+                                 std::to_string(bv_index) + " (" + std::to_string(bv.byteLength) + " bytes)");
+    if (count > 0 && (count - 1 > bv.byteLength / stride || elem > bv.byteLength - offset ||
+                      (count - 1) * stride > bv.byteLength - offset - elem))
       throw FileError(path_, what + ": " + std::to_string(count) + " elements at byte offset " +
                                  std::to_string(offset) + " reach past the end of buffer view " +
                                  std::to_string(bv_index) + " (" + std::to_string(bv.byteLength) + " bytes)");
@@ -197,12 +204,14 @@ class AccessorReader {
     int isize = tinygltf::GetComponentSizeInBytes(uint32_t(s.indices.componentType));
     if (!is_unsigned_integer(s.indices.componentType))
       throw FileError(path_, w + ": sparse indices must be unsigned integers");
+    if (s.indices.byteOffset < 0 || s.values.byteOffset < 0)
+      throw FileError(path_, w + ": a negative byteOffset");
     const auto& iv = view(s.indices.bufferView, w);
     const auto& vv = view(s.values.bufferView, w);
     size_t elem = size_t(csize) * components;
-    const unsigned char* ip = view_bytes(iv, s.indices.bufferView, size_t(std::max(s.indices.byteOffset, 0)),
+    const unsigned char* ip = view_bytes(iv, s.indices.bufferView, size_t(s.indices.byteOffset),
                                          size_t(isize), size_t(isize), size_t(s.count), w);
-    const unsigned char* vp = view_bytes(vv, s.values.bufferView, size_t(std::max(s.values.byteOffset, 0)), elem,
+    const unsigned char* vp = view_bytes(vv, s.values.bufferView, size_t(s.values.byteOffset), elem,
                                          elem, size_t(s.count), w);
     for (int k = 0; k < s.count; ++k) {
       double target = component(ip + size_t(k) * isize, s.indices.componentType, false);

@@ -1,6 +1,7 @@
--- glTF node trees that used to take the process down (issue 13): a chain of nodes 30,000 deep
--- overflowed the stack; one node listed 200,000 times grew the mesh to 23 GB. Both are now
--- errors naming the file and the limit, and a tree at the limits still loads.
+-- glTF files that used to take the process down or load wrong (issue 13): a chain of nodes
+-- 30,000 deep overflowed the stack; one node listed 200,000 times grew the mesh to 23 GB;
+-- a negative bufferView loaded as zeros. All are now errors naming
+-- the file and what is wrong, and a tree at the limits still loads.
 local sn = require "shadenet"
 
 sn.fs.mkdir("out/mesh_limits")
@@ -31,6 +32,24 @@ local cases = {
 for _, c in ipairs(cases) do
   local path = "out/mesh_limits/" .. c[1]
   sn.fs.write(path, c[2])
+  local ok, err = pcall(sn.mesh.load, path)
+  assert(not ok and tostring(err):find(c[3], 1, true), c[1] .. ": " .. tostring(err))
+end
+
+-- Values outside the glTF specification are errors, not defaults: a POSITION bufferView of -5
+-- loaded as zeros.
+local function with_accessor(accessor)
+  return '{"asset":{"version":"2.0"},"buffers":[' .. buffer .. '],"bufferViews":[{"buffer":0,"byteLength":36}],'
+    .. '"accessors":[' .. accessor .. '],"meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],'
+    .. '"scenes":[{"nodes":[0]}],"scene":0,"nodes":[{"mesh":0}]}'
+end
+local bad = {
+  { "view_minus5.gltf", '{"bufferView":-5,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}',
+    "has bufferView -5; it must be a view's index or absent" },
+}
+for _, c in ipairs(bad) do
+  local path = "out/mesh_limits/" .. c[1]
+  sn.fs.write(path, with_accessor(c[2]))
   local ok, err = pcall(sn.mesh.load, path)
   assert(not ok and tostring(err):find(c[3], 1, true), c[1] .. ": " .. tostring(err))
 end
