@@ -89,6 +89,26 @@ Program::Program(const ProgramDesc& desc) {
     if (n.size() > 3 && n.compare(n.size() - 3, 3, "[0]") == 0) n.resize(n.size() - 3);
     uniforms_[n] = UniformInfo{vals[2], unsigned(vals[1]), vals[3]};
   }
+
+  glGetProgramInterfaceiv(id_, GL_SHADER_STORAGE_BLOCK, GL_ACTIVE_RESOURCES, &count);
+  for (GLint i = 0; i < count; ++i) {
+    const GLenum props[] = {GL_NAME_LENGTH, GL_BUFFER_BINDING};
+    GLint vals[2];
+    glGetProgramResourceiv(id_, GL_SHADER_STORAGE_BLOCK, GLuint(i), 2, props, 2, nullptr, vals);
+    std::string n(vals[0], '\0');
+    glGetProgramResourceName(id_, GL_SHADER_STORAGE_BLOCK, GLuint(i), vals[0], nullptr, n.data());
+    n.resize(n.find('\0') == std::string::npos ? n.size() : n.find('\0'));
+    storage_blocks_.push_back({n, vals[1]});
+  }
+}
+
+std::string Program::shared_storage_binding() const {
+  for (std::size_t i = 0; i < storage_blocks_.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (storage_blocks_[i].binding == storage_blocks_[j].binding)
+        return "buffer blocks '" + storage_blocks_[j].name + "' and '" + storage_blocks_[i].name + "' share binding " +
+               std::to_string(storage_blocks_[i].binding) + " (a block without layout(binding = N) gets 0)";
+  return "";
 }
 
 Program::~Program() { glDeleteProgram(id_); }

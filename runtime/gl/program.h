@@ -17,6 +17,11 @@ struct ProgramDesc {
   Includes includes;  // #include names served from memory (see shader_source.h)
 };
 
+struct StorageBlock {
+  std::string name;
+  int binding;  // layout(binding = N), 0 when the shader gives none
+};
+
 struct UniformInfo {
   int location;
   unsigned type;  // GL_FLOAT, GL_FLOAT_VEC3, GL_INT, GL_FLOAT_MAT4, GL_SAMPLER_2D, ...
@@ -38,6 +43,10 @@ class Program {
 
   const UniformInfo* uniform(const std::string& name) const;
   std::vector<std::string> uniform_names() const;
+  const std::vector<StorageBlock>& storage_blocks() const { return storage_blocks_; }
+  // "" when every storage block has its own binding; else which two share one (binding buffers
+  // to such a program would feed one block's buffer to both).
+  std::string shared_storage_binding() const;
   // Sets a uniform from numbers (converted to its declared type); throws for an unknown name
   // (listing the valid ones) or a wrong number of values.
   void set_uniform(const std::string& name, const std::vector<double>& values);
@@ -48,6 +57,7 @@ class Program {
   std::string name_;
   int local_size_[3] = {1, 1, 1};
   std::map<std::string, UniformInfo> uniforms_;
+  std::vector<StorageBlock> storage_blocks_;
 };
 
 // The cache: equal sources and defines give the same Program object.

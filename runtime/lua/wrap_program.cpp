@@ -99,6 +99,8 @@ void apply_bindings(lua_State* L, const Options& o, gl::Program& p) {
   int bi = o.push("buffers");
   if (!lua_isnil(L, bi)) {
     if (!lua_istable(L, bi)) throw Error(o.where("buffers") + ": table expected");
+    if (std::string shared = p.shared_storage_binding(); !shared.empty())
+      throw Error(o.where("buffers") + ": " + p.name() + ": " + shared + "; give each block its own binding");
     lua_pushnil(L);
     while (lua_next(L, bi)) {
       auto& buf = check<gl::Buffer>(L, -1, "Buffer");
