@@ -55,6 +55,14 @@ function Sweep:record(run)
     return nil
   end
   if json.encode(rec.config or {}) ~= run.config_text then return nil end
+  -- A record's errors are >= 0 (or NaN, a diverged run): a tampered or corrupt one would enter
+  -- the tables, so it is reported and trained again.
+  for k, v in pairs(type(rec.result) == "table" and rec.result or {}) do
+    if type(k) == "string" and k:find("mse$") and type(v) == "number" and v < 0 then
+      io.stderr:write("sweep: ignoring ", self:file(run), ": ", k, " = ", tostring(v), " is negative\n")
+      return nil
+    end
+  end
   return rec
 end
 

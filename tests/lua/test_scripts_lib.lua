@@ -95,6 +95,14 @@ assert(#full:records() == 3 and #full:pending() == 4, "records found in the fold
 full:run { train = train, group_key = function(r) return r.config.i % 2 end }
 assert(#trained == 4, "the unsharded run trains only the missing 4")
 assert(#full:records() == 7 and full:records()[5].result.value == 50, "all records, in sweep order")
+-- A record with a negative error (tampered, or corrupt) is not a finished run: it trains again.
+local path5 = full:file(runs[5])
+local text5 = results.read_file(path5)
+results.write_file(path5, text5:gsub('"value": 50', '"value": 50, "best_val_mse": -1'))
+assert(#full:records() == 6 and #full:pending() == 1 and full:pending()[1].id == "r5", "a negative MSE is refused")
+trained = {}
+full:run { train = train }
+assert(#trained == 1 and trained[1] == "r5" and #full:records() == 7, "and trained again")
 -- A changed configuration is not a finished run.
 runs[2].config = { i = 2, epochs = 3 }
 local changed = Sweep.new { dir = tmp .. "/sw", runs = runs, label = "t" }
