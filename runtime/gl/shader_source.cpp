@@ -3,11 +3,12 @@
 #include <unistd.h>
 
 #include <filesystem>
-#include <fstream>
 #include <regex>
 #include <set>
 #include <sstream>
 #include <stdexcept>
+
+#include "io/read_file.h"
 
 namespace fs = std::filesystem;
 
@@ -20,13 +21,12 @@ std::function<void(const std::string&)>& file_observer() {
   return f;
 }
 
+// Shader sources are small: 16 MiB is far beyond any real one and keeps /dev/zero out.
+constexpr std::uint64_t kMaxShaderBytes = std::uint64_t(1) << 24;
+
 std::string read_file(const fs::path& p) {
   if (file_observer()) file_observer()(fs::absolute(p).string());  // before reading: a missing file is watched too
-  std::ifstream in(p, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read shader file '" + display_path(p.string()) + "'");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+  return io::read_file(p.string(), "shader file", kMaxShaderBytes);
 }
 
 std::vector<std::string> split_lines(const std::string& text) {

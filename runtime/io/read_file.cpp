@@ -10,7 +10,7 @@
 
 namespace sn::io {
 
-std::string read_file(const std::string& path, const std::string& what) {
+std::string read_file(const std::string& path, const std::string& what, std::uint64_t max_bytes) {
   const std::string head = "cannot read " + what + " '" + path + "': ";
   // O_NONBLOCK: opening a FIFO would otherwise wait for a writer; regular files ignore it.
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
@@ -25,6 +25,10 @@ std::string read_file(const std::string& path, const std::string& what) {
     const bool dir = S_ISDIR(st.st_mode);
     ::close(fd);
     throw std::runtime_error(head + (dir ? "it is a directory" : "not a regular file"));
+  }
+  if (std::uint64_t(st.st_size) > max_bytes) {
+    ::close(fd);
+    throw std::runtime_error(head + std::to_string(st.st_size) + " bytes, above the limit of " + std::to_string(max_bytes));
   }
   std::string bytes(std::size_t(st.st_size), '\0');
   std::size_t done = 0;

@@ -1,5 +1,4 @@
 #include "scene/mesh.h"
-#include "scene/tangents.h"
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
@@ -16,7 +15,6 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -26,6 +24,8 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "io/atomic_write.h"
+#include "io/read_file.h"
+#include "scene/tangents.h"
 
 namespace sn::scene {
 
@@ -45,17 +45,6 @@ std::string short_reason(std::string s) {
   if (s.size() > kMax) s = s.substr(0, kMax) + "...";
   while (!s.empty() && (s.back() == '\n' || s.back() == '\r' || s.back() == ' ')) s.pop_back();
   return s;
-}
-
-std::vector<unsigned char> read_whole_file(const std::string& path) {
-  std::error_code ec;
-  if (!fs::exists(path, ec)) throw FileError(path, "does not exist");
-  if (fs::is_directory(path, ec)) throw FileError(path, "is a directory, not a file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw FileError(path, "cannot be opened for reading");
-  std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) throw FileError(path, "read failed");
-  return bytes;
 }
 
 // tinygltf hands every image's encoded bytes (data: URI, external file or .glb buffer view) to
@@ -522,9 +511,10 @@ int add_accessor(tinygltf::Model& m, int view, int component_type, int type, siz
 }  // namespace
 
 Mesh load_mesh(const std::string& path) {
-  std::vector<unsigned char> bytes = read_whole_file(path);
+  // Regular files only, at most 1 GiB (io/read_file.h): /dev/zero used to be read until memory ran out.
+  const std::string text = io::read_file(path, "mesh file");
+  std::vector<unsigned char> bytes(text.begin(), text.end());
   if (bytes.empty()) throw FileError(path, "is empty");
-  if (bytes.size() > UINT32_MAX) throw FileError(path, "is larger than 4 GiB, which tinygltf cannot read");
   tinygltf::TinyGLTF gltf;
   gltf.SetImageLoader(keep_image_bytes, nullptr);
   tinygltf::Model model;

@@ -3,10 +3,9 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 
+#include "io/read_file.h"
 #include "io/text.h"
 #include "shading/builtin_models.h"
 #include "shading/lighting.h"
@@ -94,11 +93,7 @@ bool LightingModel::reads(const std::string& attribute) const {
 
 std::string LightingModel::glsl_text() const {
   if (glsl_path.empty()) return glsl_source;
-  std::ifstream in(glsl_path, std::ios::binary);
-  if (!in) throw std::runtime_error("lighting model '" + name + "': cannot read its glsl file '" + glsl_path + "'");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+  return io::read_file(glsl_path, "the glsl file of lighting model '" + name + "'", std::uint64_t(1) << 24);
 }
 
 void validate_model(const LightingModel& m) {
