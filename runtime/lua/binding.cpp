@@ -94,8 +94,9 @@ long long check_integer(lua_State* L, int idx, const char* what) {
 
 int check_int32(lua_State* L, int idx, const char* what) {
   long long v = check_integer(L, idx, what);
-  if (v < INT32_MIN || v > INT32_MAX)
-    throw Error(std::string(what) + ": integer within -2^31..2^31-1 expected, got " + std::to_string(v));
+  // Symmetric, so that callers may add or subtract 1 (1-based indices) without overflow.
+  if (v < -INT32_MAX || v > INT32_MAX)
+    throw Error(std::string(what) + ": integer within +-(2^31 - 1) expected, got " + std::to_string(v));
   return int(v);
 }
 
@@ -196,6 +197,10 @@ double Options::number(const char* key, double def) const {
 long long Options::integer(const char* key) const {
   if (!has(key)) throw Error(where(key) + " is required");
   return integer(key, 0);
+}
+int Options::int32(const char* key) const {
+  if (!has(key)) throw Error(where(key) + " is required");
+  return int32(key, 0);
 }
 int Options::int32(const char* key, int def) const {
   int i = push(key);

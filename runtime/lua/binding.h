@@ -103,7 +103,7 @@ void define_box_type(lua_State* L, const char* type, const luaL_Reg* methods, lu
 // ---- plain values ----
 double check_number(lua_State* L, int idx, const char* what);
 long long check_integer(lua_State* L, int idx, const char* what);  // within +-2^53
-int check_int32(lua_State* L, int idx, const char* what);           // within int's range
+int check_int32(lua_State* L, int idx, const char* what);           // within +-(2^31 - 1)
 std::string check_string(lua_State* L, int idx, const char* what);
 // A Lua array of numbers ({1,2,3}); `n` = required length or -1.
 std::vector<double> check_numbers(lua_State* L, int idx, const char* what, int n = -1);
@@ -121,7 +121,8 @@ class Options {
   double number(const char* key) const;  // required
   long long integer(const char* key, long long def) const;
   long long integer(const char* key) const;
-  int int32(const char* key, int def) const;  // an integer within int's range
+  int int32(const char* key, int def) const;  // an integer within +-(2^31 - 1)
+  int int32(const char* key) const;           // required
   bool boolean(const char* key, bool def) const;
   std::string string(const char* key, const std::string& def) const;
   std::string string(const char* key) const;

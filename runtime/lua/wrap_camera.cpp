@@ -47,7 +47,7 @@ int w_orbit(lua_State* L) {
   scene::OrbitOptions oo;
   if (!lua_isnoneornil(L, 1)) {
     Options o(L, 1, "sn.orbit", {"count", "elevation", "distance", "target", "fov", "near", "far", "aspect"});
-    oo.count = int(o.integer("count", oo.count));
+    oo.count = o.int32("count", oo.count);
     oo.elevation = o.number("elevation", oo.elevation);
     oo.distance = o.number("distance", oo.distance);
     oo.target = vec3(o, "target", oo.target);

@@ -58,8 +58,8 @@ std::vector<float> read_rows(lua_State* L, int idx, int* width, const char* key)
 int w_new(lua_State* L) {
   Options o(L, 1, "sn.dataset", {"x", "y", "inputs", "outputs", "split", "seed", "color", "input_names"});
   auto d = std::make_shared<Dataset>();
-  d->inputs = int(o.integer("inputs", 0));
-  d->outputs = int(o.integer("outputs", 0));
+  d->inputs = o.int32("inputs", 0);
+  d->outputs = o.int32("outputs", 0);
   if (!o.has("x")) throw Error("sn.dataset option 'x' is required");
   if (!o.has("y")) throw Error("sn.dataset option 'y' is required");
   int xi = o.push("x");
@@ -264,7 +264,7 @@ int w_subset(lua_State* L) {
     } else if (lua_isnil(L, ai)) {
       throw Error(w.where("axis") + " is required (x, y, z, u, v or a 1-based index)");
     } else {
-      f.component = int(check_integer(L, ai, w.where("axis").c_str())) - 1;
+      f.component = check_int32(L, ai, w.where("axis").c_str()) - 1;
     }
     lua_pop(L, 1);
     if (!w.has("min") && !w.has("max")) throw Error("dataset:subset option 'where': give min, max or both");

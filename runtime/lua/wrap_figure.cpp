@@ -59,8 +59,8 @@ int w_grid(lua_State* L) {
             {"panels", "captions", "columns", "padding", "caption_size", "title", "title_size", "row_labels",
              "background", "text"});
   io::GridStyle s;
-  s.columns = int(o.integer("columns", 0));
-  s.padding = int(o.integer("padding", s.padding));
+  s.columns = o.int32("columns", 0);
+  s.padding = o.int32("padding", s.padding);
   s.caption_size = float(o.number("caption_size", s.caption_size));
   s.title_size = float(o.number("title_size", s.title_size));
   s.title = o.string("title", "");
@@ -135,7 +135,7 @@ int w_heatmap(lua_State* L) {
     s.map = io::Colormap(o.choice("colormap", {"inferno", "viridis", "gray"}, 0));
     s.colorbar = o.boolean("colorbar", true);
     s.label = o.string("label", "");
-    s.mask_channel = int(o.integer("mask_channel", 4)) - 1;
+    s.mask_channel = o.int32("mask_channel", 4) - 1;
     s.background = color_option(o, "background", s.background);
     s.text = color_option(o, "text", s.text);
     int m = o.push("mask");

@@ -83,8 +83,8 @@ Compared compared(lua_State* L, const char* what) {
   Compared c;
   if (lua_isnoneornil(L, 3)) return c;
   Options o(L, 3, what, {"channels", "mask", "mask_channel"});
-  c.channels = int(o.integer("channels", -1));
-  c.mask_channel = int(o.integer("mask_channel", 4)) - 1;
+  c.channels = o.int32("channels", -1);
+  c.mask_channel = o.int32("mask_channel", 4) - 1;
   int m = o.push("mask");
   if (!lua_isnil(L, m)) c.mask = &check<Image>(L, m, kType);  // stays referenced by the options table
   lua_pop(L, 1);

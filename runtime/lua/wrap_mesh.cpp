@@ -47,7 +47,7 @@ bool has_options(lua_State* L) { return !lua_isnoneornil(L, 1); }
 int w_sphere(lua_State* L) {
   if (!has_options(L)) return push_mesh(L, scene::sphere()), 1;
   Options o(L, 1, "sn.mesh.sphere", {"radius", "segments", "rings"});
-  push_mesh(L, scene::sphere(o.number("radius", 1), int(o.integer("segments", 64)), int(o.integer("rings", 32))));
+  push_mesh(L, scene::sphere(o.number("radius", 1), o.int32("segments", 64), o.int32("rings", 32)));
   return 1;
 }
 
@@ -55,8 +55,8 @@ int w_sphere(lua_State* L) {
 int w_torus(lua_State* L) {
   if (!has_options(L)) return push_mesh(L, scene::torus()), 1;
   Options o(L, 1, "sn.mesh.torus", {"major", "minor", "segments", "sides"});
-  push_mesh(L, scene::torus(o.number("major", 1), o.number("minor", 0.25), int(o.integer("segments", 64)),
-                            int(o.integer("sides", 32))));
+  push_mesh(L, scene::torus(o.number("major", 1), o.number("minor", 0.25), o.int32("segments", 64),
+                            o.int32("sides", 32)));
   return 1;
 }
 
@@ -64,7 +64,7 @@ int w_torus(lua_State* L) {
 int w_plane(lua_State* L) {
   if (!has_options(L)) return push_mesh(L, scene::plane()), 1;
   Options o(L, 1, "sn.mesh.plane", {"size", "subdivisions"});
-  push_mesh(L, scene::plane(o.number("size", 2), int(o.integer("subdivisions", 1))));
+  push_mesh(L, scene::plane(o.number("size", 2), o.int32("subdivisions", 1)));
   return 1;
 }
 

@@ -149,7 +149,7 @@ void apply_bindings(lua_State* L, const Options& o, gl::Program& p) {
       int attachment = 0;
       if (lua_istable(L, -1)) {
         lua_rawgeti(L, -1, 2);
-        attachment = lua_isnil(L, -1) ? 0 : int(check_integer(L, -1, "texture attachment")) - 1;
+        attachment = lua_isnil(L, -1) ? 0 : check_int32(L, -1, "texture attachment") - 1;
         lua_pop(L, 1);
         lua_rawgeti(L, -1, 1);
         lua_replace(L, -2);

@@ -16,7 +16,7 @@ RenderTarget& self(lua_State* L) { return check<RenderTarget>(L, 1, kType); }
 // sn.target{ width, height, colors = 1 }
 int w_new(lua_State* L) {
   Options o(L, 1, "sn.target", {"width", "height", "colors"});
-  push(L, std::make_shared<RenderTarget>(int(o.integer("width")), int(o.integer("height")), int(o.integer("colors", 1))),
+  push(L, std::make_shared<RenderTarget>(o.int32("width"), o.int32("height"), o.int32("colors", 1)),
        kType);
   return 1;
 }
@@ -35,7 +35,7 @@ int w_clear(lua_State* L) {
 // target:read([attachment = 1]) -> Image (RGBA float, top row first)
 int w_read(lua_State* L) {
   RenderTarget& t = self(L);
-  int i = lua_isnoneornil(L, 2) ? 0 : int(check_integer(L, 2, "attachment")) - 1;
+  int i = lua_isnoneornil(L, 2) ? 0 : check_int32(L, 2, "attachment") - 1;
   push(L, std::make_shared<io::Image>(t.read(i)), "Image");
   return 1;
 }
