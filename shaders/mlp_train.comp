@@ -81,10 +81,12 @@ void adam_at(int k, vec4 g, bvec4 live) {
 
 #define MLP_P4(k) P4(k)
 #define MLP_UNIT(b, u0, k) A4(lane, (u0) + (k))
+// f'(z) of activations that need z waits in the unit's delta slot until backward overwrites it.
+#define MLP_KEEP_GRAD(u, g) D4(lane, u) = (g);
 #include "mlp/forward.glsl"
 
 // This sample's deltas of a layer's inputs from those of its outputs (not for the first layer):
-// delta_i = f'(a_i) * sum_j W[j][i] delta_j, rows in order; runs last layer first.
+// delta_i = f'(z_i) * sum_j W[j][i] delta_j, rows in order; runs last layer first.
 #define BACKWARD_RUN(L0, COUNT, IN, OUT, IN4, OUT4, WQ0, UI0, QN)                    \
   for (int r_ = 0; r_ < MLP_ROLLED(COUNT); ++r_) {                                   \
     const int k_ = COUNT - 1 - r_, wq_ = WQ0 + k_ * (OUT * IN4 + OUT4);              \
@@ -99,7 +101,7 @@ void adam_at(int k, vec4 g, bvec4 live) {
       }                                                                              \
     }                                                                                \
     for (int q = 0; q < QN; ++q) {                                                   \
-      vec4 dq = acc[q] * mlp_activate_grad(MLP_ACT, A4(lane, ui_ + q));              \
+      vec4 dq = acc[q] * MLP_ACT_DERIV(A4(lane, ui_ + q), D4(lane, ui_ + q));        \
       ok = ok && mlp_finite(dq);                                                     \
       D4(lane, ui_ + q) = dq;                                                        \
     }                                                                                \
@@ -179,7 +181,7 @@ void main() {
         if (4 * q + c < MLP_OUT) target[c] = train_y[row * uint(MLP_OUT) + uint(4 * q + c)];
       vec4 e = mix(vec4(0.0), y - target, mlp_live(q, MLP_OUT));
       loss += dot(e, e);
-      vec4 dq = (2.0 / float(B * MLP_OUT)) * e * mlp_activate_grad(MLP_OUT_ACT, y);
+      vec4 dq = (2.0 / float(B * MLP_OUT)) * e * MLP_OUT_ACT_DERIV(y, D4(lane, MLP_OUT_UQ + q));
       ok = ok && mlp_finite(dq);
       D4(lane, MLP_OUT_UQ + q) = dq;
     }

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cerrno>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -89,7 +91,8 @@ void save_checkpoint(const Mlp& net, const std::string& path) {
     p.put(double(net.best_val_mse));
     for (float v : net.best_params) p.put(v);
   }
-  // Optional trailing section, absent for an unconditioned network (older files end here).
+  // Optional trailing sections, each a tag and its data; a network that needs none ends here
+  // (older files do, and still load).
   if (!net.conditions.empty()) {
     p.str("conditions");
     p.put(uint32_t(net.conditions.size()));
@@ -98,6 +101,22 @@ void save_checkpoint(const Mlp& net, const std::string& path) {
       p.put(double(c.min));
       p.put(double(c.max));
       p.put(double(c.value));
+    }
+  }
+  std::vector<std::pair<std::string, std::string>> entries;
+  for (Activation a : {net.spec.activation, net.spec.output_activation}) {
+    const ActivationParam k = activation_def(a).param;
+    if (k != ActivationParam::omega && k != ActivationParam::alpha) continue;  // slope has its own field
+    char v[40];
+    std::snprintf(v, sizeof v, "%.17g", net.spec.param(a));
+    if (entries.empty() || entries.back().first != activation_param_name(k)) entries.emplace_back(activation_param_name(k), v);
+  }
+  if (!entries.empty()) {
+    p.str("entries");
+    p.put(uint32_t(entries.size()));
+    for (const auto& [k, v] : entries) {
+      p.str(k);
+      p.str(v);
     }
   }
 
@@ -140,11 +159,11 @@ Mlp load_checkpoint(const std::string& path) {
   if (hidden > uint32_t(kMaxHidden)) throw std::runtime_error(path + ": checkpoint has " + std::to_string(hidden) + " hidden layers");
   for (uint32_t i = 0; i < hidden; ++i) s.hidden.push_back(int(r.get<uint32_t>("spec")));
   try {
-    s.activation = parse_activation(r.str("spec"));
+    s.activation = parse_activation(r.str("spec"), Position::hidden);
     s.slope = r.get<double>("spec");
-    s.output_activation = parse_activation(r.str("spec"));
+    s.output_activation = parse_activation(r.str("spec"), Position::output, "output_activation");
     s.color = shading::parse_color_space(r.str("spec"));
-    s.validate();
+    s.validate();  // widths before they size anything; again below with the entries' parameters
   } catch (const std::invalid_argument& e) {
     throw std::runtime_error(path + ": bad network spec in checkpoint: " + e.what());
   }
@@ -163,21 +182,41 @@ Mlp load_checkpoint(const std::string& path) {
     net.best_params.resize(count);
     for (auto& v : net.best_params) v = r.get<float>("best snapshot");
   }
-  if (r.pos != payload.size()) {
-    if (r.str("conditions") != "conditions") throw std::runtime_error(path + ": checkpoint has unknown bytes after the network");
-    const uint32_t n = r.get<uint32_t>("conditions");
-    if (n > net.input_names.size()) throw std::runtime_error(path + ": checkpoint has more conditions than inputs");
-    for (uint32_t i = 0; i < n; ++i) {
-      Condition c;
-      c.name = r.str("conditions");
-      c.min = r.get<double>("conditions"), c.max = r.get<double>("conditions"), c.value = r.get<double>("conditions");
-      if (!(std::isfinite(c.min) && std::isfinite(c.max) && std::isfinite(c.value) && c.min <= c.max) ||
-          std::find(net.input_names.begin(), net.input_names.end(), c.name) == net.input_names.end())
-        throw std::runtime_error(path + ": checkpoint has a bad condition '" + c.name + "'");
-      net.conditions.push_back(c);
+  while (r.pos != payload.size()) {
+    const std::string tag = r.str("sections");
+    if (tag == "conditions") {
+      const uint32_t n = r.get<uint32_t>("conditions");
+      if (n > net.input_names.size()) throw std::runtime_error(path + ": checkpoint has more conditions than inputs");
+      for (uint32_t i = 0; i < n; ++i) {
+        Condition c;
+        c.name = r.str("conditions");
+        c.min = r.get<double>("conditions"), c.max = r.get<double>("conditions"), c.value = r.get<double>("conditions");
+        if (!(std::isfinite(c.min) && std::isfinite(c.max) && std::isfinite(c.value) && c.min <= c.max) ||
+            std::find(net.input_names.begin(), net.input_names.end(), c.name) == net.input_names.end())
+          throw std::runtime_error(path + ": checkpoint has a bad condition '" + c.name + "'");
+        net.conditions.push_back(c);
+      }
+    } else if (tag == "entries") {
+      const uint32_t entries = r.get<uint32_t>("entries");
+      for (uint32_t i = 0; i < entries; ++i) {
+        const std::string key = r.str("entries"), value = r.str("entries");
+        char* end = nullptr;
+        const double v = std::strtod(value.c_str(), &end);
+        const bool number = !value.empty() && end && *end == 0;
+        if (key == "omega" && number) s.omega = v;
+        else if (key == "alpha" && number) s.alpha = v;
+        else throw std::runtime_error(path + ": checkpoint entry '" + key + "' = '" + value + "' is not one this build reads");
+      }
+    } else {
+      throw std::runtime_error(path + ": checkpoint has unknown bytes after the network");
     }
   }
   if (r.pos != payload.size()) throw std::runtime_error(path + ": checkpoint has unread bytes after the network");
+  try {
+    s.validate();
+  } catch (const std::invalid_argument& e) {
+    throw std::runtime_error(path + ": bad network spec in checkpoint: " + e.what());
+  }
   return net;
 }
 

@@ -26,6 +26,11 @@ const char* cpu_kernel_name();
 // Switches kernels (tests compare both with the oracle); throws when the CPU lacks it.
 void use_cpu_kernel(const std::string& name);
 
+// The SIMD code of built-in activation `a` in the kernel in use, over n pre-activations z (the
+// tests compare it with the double twins): f(z), and f'(z) as the backward pass gets it (from
+// f(z) where the activation allows, else as the forward pass stores it).
+void cpu_activation(Activation a, float param, const float* z, std::size_t n, float* f, float* df);
+
 class CpuNet {
  public:
   CpuNet(const MlpSpec& spec, const float* params);  // params in the shared flat layout
@@ -50,7 +55,8 @@ class CpuNet {
   // Outputs for `count` contiguous rows (count x outputs floats).
   void forward(const float* x, std::size_t count, float* out);
   // Per hidden layer and unit, over `count` rows: how many samples had the unit active (relu,
-  // leaky_relu: output > 0) or saturated (tanh: |a| > 0.99; sigmoid: a < 0.01 or a > 0.99).
+  // leaky_relu: output > 0) or saturated (tanh: |a| > 0.99; sigmoid: a < 0.01 or a > 0.99; the
+  // other activations: flat, |f'(z)| < 0.01).
   std::vector<std::vector<uint32_t>> unit_counts(const float* x, std::size_t count);
 
   struct Layout;  // padded offsets, private to cpu_net.cpp

@@ -50,6 +50,7 @@ void run_eval(const MlpSpec& spec, bool loss, const GlParams& p, const gl::Buffe
   desc.compute = "mlp_eval.comp";
   const int local = eval_local_size(spec, std::size_t(gl::current().info().max_shared_memory));
   desc.defines = eval_defines(spec, loss, local);
+  desc.includes = mlp_includes(spec);
   auto program = gl::get_program(desc);
   const std::size_t groups = (rows + std::size_t(local) - 1) / std::size_t(local);
   gl::Buffer cut(gl::ElemType::uint32, std::size_t(p.nets));

@@ -171,6 +171,7 @@ class Job {
       gl::ProgramDesc desc;
       desc.compute = g.layout.per_net ? "mlp_train_per_net.comp" : "mlp_train.comp";
       desc.defines = train_defines(g.spec, cfg_.batch, g.layout);
+      desc.includes = mlp_includes(g.spec);
       g.program = gl::get_program(desc);
       g.state = std::make_unique<gl::Buffer>(gl::ElemType::vec4, gl::texture_buffer_size(3 * PQ * n));  // params, m = 0, v = 0
       for (std::size_t k = 0; k < n; ++k) {

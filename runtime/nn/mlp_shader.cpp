@@ -120,9 +120,16 @@ gl::Defines mlp_defines(const MlpSpec& s) {
   d["MLP_UQ"] = num(unit_chunks(s));
   d["MLP_OUT_UQ"] = num(unit_chunk(s, s.layers()));
   d["MLP_MAX_WIDTH"] = num(s.max_width());
-  d["MLP_ACT"] = num(int(s.activation));
-  d["MLP_OUT_ACT"] = num(int(s.output_activation));
-  d["MLP_SLOPE"] = float_literal(s.slope);
+  auto activation = [&](const std::string& prefix, Activation a) {
+    const std::string fn = activation_glsl_function(a), p = float_literal(s.param(a));
+    d[prefix + "_F(z)"] = fn + "(z, " + p + ")";
+    d[prefix + "_GRAD_Z(z)"] = fn + "_grad(z, " + p + ")";
+    const bool from_output = !activation_def(a).grad_from_output.empty();
+    d[prefix + "_FROM_OUTPUT"] = from_output ? "1" : "0";
+    if (from_output) d[prefix + "_GRAD_A(a)"] = fn + "_grad_a(a, " + p + ")";
+  };
+  activation("MLP_ACT", s.activation);
+  activation("MLP_OUT_ACT", s.output_activation);
   d["MLP_COLOR"] = num(int(s.color));
   const std::vector<Run> runs = layer_runs(s);
   std::string fwd, rev, inner_rev;
@@ -135,6 +142,13 @@ gl::Defines mlp_defines(const MlpSpec& s) {
   d["MLP_RUN_TABLE_REVERSED(X)"] = rev;
   d["MLP_INNER_RUN_TABLE_REVERSED(X)"] = inner_rev;
   return d;
+}
+
+gl::Includes mlp_includes(const MlpSpec& s) {
+  gl::Includes src;
+  src["mlp/act_hidden.glsl"] = activation_glsl_source(s.activation);
+  src["mlp/act_output.glsl"] = s.output_activation == s.activation ? "" : activation_glsl_source(s.output_activation);
+  return src;
 }
 
 std::string TrainLayout::describe() const {

@@ -40,8 +40,10 @@ void unpack_padded(const MlpSpec& spec, const float* padded, float* flat);
 
 // Architecture defines shared by every mlp shader:
 //   MLP_IN, MLP_OUT, MLP_LAYERS, MLP_PARAMS (flat floats), MLP_PQ (padded vec4s), MLP_UQ (unit
-//   vec4s), MLP_IN4, MLP_OUT4, MLP_OUT_UQ (first vec4 of the outputs), MLP_MAX_WIDTH, MLP_ACT,
-//   MLP_OUT_ACT, MLP_SLOPE, MLP_COLOR, and MLP_RUN_TABLE(X) / MLP_RUN_TABLE_REVERSED(X)
+//   vec4s), MLP_IN4, MLP_OUT4, MLP_OUT_UQ (first vec4 of the outputs), MLP_MAX_WIDTH, MLP_COLOR,
+//   the activations (MLP_ACT_F(z), MLP_ACT_GRAD_Z(z), MLP_ACT_FROM_OUTPUT, MLP_ACT_GRAD_A(a) and
+//   the same with MLP_OUT_ACT_ for the output layer: shaders/include/mlp/activation.glsl),
+//   and MLP_RUN_TABLE(X) / MLP_RUN_TABLE_REVERSED(X)
 //   expanding to X(first_layer, count, in, out, in4, out4, weight_chunk, unit_in, q) per run of
 //   equal layers: layer first_layer + k has its weights at vec4 weight_chunk + k*(out*in4 + out4),
 //   its biases out*in4 vec4s later, its input units at vec4 unit_in + k*in4 and its outputs in4
@@ -49,6 +51,9 @@ void unpack_padded(const MlpSpec& spec, const float* padded, float* flat);
 //   layer's loop rolled (shaders declare `uniform int u_zero`). MLP_INNER_RUN_TABLE_REVERSED(X)
 //   lists the runs backpropagation passes through (all but the first layer's), last first.
 gl::Defines mlp_defines(const MlpSpec& spec);
+// The in-memory #includes (gl::Includes) every mlp shader needs with mlp_defines: the GLSL of the network's
+// activations from the registry (mlp/act_hidden.glsl, mlp/act_output.glsl).
+gl::Includes mlp_includes(const MlpSpec& spec);
 
 // Which fused training kernel and where it keeps each array. With `per_net` allowed (a CPU
 // renderer) a small network trains in an invocation of its own, everything in registers

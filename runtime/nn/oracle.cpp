@@ -6,33 +6,9 @@
 
 namespace sn::nn::oracle {
 
-double activate(Activation a, double slope, double z) {
-  switch (a) {
-    case Activation::linear: return z;
-    case Activation::tanh: return std::tanh(z);
-    case Activation::sigmoid: return 1.0 / (1.0 + std::exp(-z));
-    case Activation::relu: return z > 0 ? z : 0.0;
-    case Activation::leaky_relu: return z > 0 ? z : slope * z;
-  }
-  return z;
-}
+double activate(Activation a, double param, double z) { return activation_def(a).f(z, param); }
 
-double activate_grad(Activation a, double slope, double z) {
-  switch (a) {
-    case Activation::linear: return 1.0;
-    case Activation::tanh: {
-      double t = std::tanh(z);
-      return 1.0 - t * t;
-    }
-    case Activation::sigmoid: {
-      double s = 1.0 / (1.0 + std::exp(-z));
-      return s * (1.0 - s);
-    }
-    case Activation::relu: return z > 0 ? 1.0 : 0.0;
-    case Activation::leaky_relu: return z > 0 ? 1.0 : slope;
-  }
-  return 1.0;
-}
+double activate_grad(Activation a, double param, double z) { return activation_def(a).df(z, param); }
 
 namespace {
 Activation layer_activation(const MlpSpec& s, int l) {
@@ -56,7 +32,7 @@ std::vector<double> forward(const MlpSpec& spec, const std::vector<double>& p, c
       double s = b[o];
       for (int i = 0; i < in; ++i) s += w[o * in + i] * a[i];
       z[o] = s;
-      next[o] = activate(layer_activation(spec, l), spec.slope, s);
+      next[o] = activate(layer_activation(spec, l), spec.param(layer_activation(spec, l)), s);
     }
     a = std::move(next);
     if (trace) {
@@ -83,7 +59,7 @@ double loss_grad(const MlpSpec& spec, const std::vector<double>& p, const std::v
     for (int o = 0; o < outs; ++o) {
       double d = y[o] - ys[n][o];
       loss += d * d;
-      delta[o] = scale * d * activate_grad(spec.output_activation, spec.slope, t.z[L][o]);
+      delta[o] = scale * d * activate_grad(spec.output_activation, spec.param(spec.output_activation), t.z[L][o]);
     }
     if (!grad) continue;
     for (int l = L - 1; l >= 0; --l) {
@@ -100,7 +76,7 @@ double loss_grad(const MlpSpec& spec, const std::vector<double>& p, const std::v
       for (int i = 0; i < in; ++i) {
         double s = 0;
         for (int o = 0; o < out; ++o) s += w[o * in + i] * delta[o];
-        prev[i] = s * activate_grad(spec.activation, spec.slope, t.z[l][i]);
+        prev[i] = s * activate_grad(spec.activation, spec.param(spec.activation), t.z[l][i]);
       }
       delta = std::move(prev);
     }

@@ -11,9 +11,10 @@
 
 namespace sn::nn::oracle {
 
-double activate(Activation a, double slope, double z);
+// `param`: the activation's parameter (MlpSpec::param).
+double activate(Activation a, double param, double z);
 // d activation / dz, from the pre-activation z.
-double activate_grad(Activation a, double slope, double z);
+double activate_grad(Activation a, double param, double z);
 
 // Activations of every layer for one sample: a[0] = x, a[layers()] = output; z likewise
 // (z[0] unused).
