@@ -12,6 +12,7 @@
 //    the chunk one step short of it.
 #include "mlp/activation.glsl"
 #include "mlp/adam.glsl"
+#include "mlp/loss.glsl"
 
 layout(local_size_x = MLP_BATCH) in;
 
@@ -172,7 +173,7 @@ void main() {
     }
     MLP_FORWARD()
 
-    // d/dy of mean((y - t)^2) over the minibatch's samples and outputs, then backward.
+    // d/dy of the mean loss over the minibatch's samples and outputs (mlp/loss.glsl), then backward.
     bool ok = true;
     float loss = 0.0;
     for (int q = 0; q < MLP_OUT4; ++q) {
@@ -180,8 +181,8 @@ void main() {
       for (int c = 0; c < 4; ++c)
         if (4 * q + c < MLP_OUT) target[c] = train_y[row * uint(MLP_OUT) + uint(4 * q + c)];
       vec4 e = mix(vec4(0.0), y - target, mlp_live(q, MLP_OUT));
-      loss += dot(e, e);
-      vec4 dq = (2.0 / float(B * MLP_OUT)) * e * MLP_OUT_ACT_DERIV(y, D4(lane, MLP_OUT_UQ + q));
+      loss += dot(mlp_loss(e, target), vec4(1.0));
+      vec4 dq = (1.0 / float(B * MLP_OUT)) * mlp_loss_grad(e, target) * MLP_OUT_ACT_DERIV(y, D4(lane, MLP_OUT_UQ + q));
       ok = ok && mlp_finite(dq);
       D4(lane, MLP_OUT_UQ + q) = dq;
     }

@@ -220,6 +220,36 @@ SN_INLINE v8 hidden_grad(const View& V, int l, int i) {
   return V.dz(l)[i];
 }
 
+// The loss of nn/loss.h per lane (lv) and its derivative by the prediction (lg), for the error
+// e (0 in dead lanes) and the target t.
+struct LossArgs {
+  LossKind kind;
+  float delta;
+};
+SN_INLINE void loss_both(const LossArgs& L, const v8& e, const v8& t, v8& lv, v8& lg) {
+  switch (L.kind) {
+    case LossKind::l1:
+      lv = select(e < 0.0f, -e, e);
+      lg = select(e > 0.0f, splat(1.0f), select(e < 0.0f, splat(-1.0f), splat(0.0f)));
+      break;
+    case LossKind::relative_l2: {
+      const v8 inv = 1.0f / (t * t + float(kRelativeL2Eps));
+      lv = e * e * inv;
+      lg = 2.0f * e * inv;
+      break;
+    }
+    case LossKind::huber: {
+      const v8 a = select(e < 0.0f, -e, e), d = splat(L.delta);
+      lv = select(a <= d, 0.5f * e * e, d * (a - 0.5f * d));  // NaN takes the second: stays NaN
+      lg = select(e > d, d, select(e < -d, -d, e));
+      break;
+    }
+    default:
+      lv = e * e;
+      lg = 2.0f * e;
+  }
+}
+
 // Target rows as lanes (0 beyond n) and the lane mask.
 SN_INLINE v8 gather_target(const float* y, int outputs, int o, const uint32_t* rows, std::size_t first, int n) {
   v8 t = splat(0.0f);
@@ -233,27 +263,38 @@ SN_INLINE v8i lane_mask(int n) {
 
 template <class Isa, int H>
 SN_INLINE bool step_impl(const View& V, const float* x, const float* y, const uint32_t* rows, int batch, const AdamStep& c,
-               double* loss_out) {
+               const LossArgs& lf, double* loss_out) {
   const Layout& S = V.S;
   const float* p = V.p();
   float* g = V.base + S.o_g;
   std::memset(g, 0, S.P * sizeof(float));
   const int outputs = S.out[S.L - 1];
-  const float scale = 2.0f / float(batch * outputs);
+  const float scale = 2.0f / float(batch * outputs);  // l2's: d mean(e^2) / d y'
+  const float mean = 1.0f / float(batch * outputs);
   v8 sq = splat(0.0f);
   for (int first = 0; first < batch; first += kLanes) {
     const int n = batch - first < kLanes ? batch - first : kLanes;
     gather_inputs(V, x, rows, std::size_t(first), n);
     forward_block<H, true>(V);
-    // Output error: d = dMSE/dy' * act'(y').
+    // Output error: d = dloss/dy' * act'(y').
     const v8i mask = lane_mask(n);
     v8* d = V.d(0);
     const v8* yhat = V.act(S.L);
     for (int o = 0; o < outputs; ++o) {
-      v8 diff = yhat[o] - gather_target(y, outputs, o, rows, std::size_t(first), n);
+      const v8 t = gather_target(y, outputs, o, rows, std::size_t(first), n);
+      v8 diff = yhat[o] - t;
       diff = mask ? diff : splat(0.0f);
-      sq += diff * diff;
-      d[o] = S.output == int(Builtin::linear) ? scale * diff : (scale * diff) * V.dz(S.L)[o];
+      v8 g;
+      if (lf.kind == LossKind::l2) {
+        sq += diff * diff;
+        g = scale * diff;
+      } else {
+        v8 lv, lg;
+        loss_both(lf, diff, t, lv, lg);
+        sq += lv;
+        g = mean * lg;
+      }
+      d[o] = S.output == int(Builtin::linear) ? g : g * V.dz(S.L)[o];
     }
     int cur = 0;
     for (int l = S.L - 1; l >= 0; --l) {
@@ -300,7 +341,7 @@ SN_INLINE bool step_impl(const View& V, const float* x, const float* y, const ui
 }
 
 template <int H>
-SN_INLINE double mse_impl(const View& V, const float* x, const float* y, std::size_t count) {
+SN_INLINE double loss_impl(const View& V, const float* x, const float* y, std::size_t count, const LossArgs& lf) {
   const Layout& S = V.S;
   const int outputs = S.out[S.L - 1];
   double sum = 0;
@@ -312,9 +353,12 @@ SN_INLINE double mse_impl(const View& V, const float* x, const float* y, std::si
     const v8* yhat = V.act(S.L);
     v8 sq = splat(0.0f);
     for (int o = 0; o < outputs; ++o) {
-      v8 diff = yhat[o] - gather_target(y, outputs, o, nullptr, first, n);
+      const v8 t = gather_target(y, outputs, o, nullptr, first, n);
+      v8 diff = yhat[o] - t;
       diff = mask ? diff : splat(0.0f);
-      sq += diff * diff;
+      v8 lv, lg;
+      loss_both(lf, diff, t, lv, lg);
+      sq += lv;
     }
     sum += double(hsum(sq));
   }
@@ -379,19 +423,22 @@ SN_INLINE void counts_impl(const View& V, const float* x, std::size_t count,
 }
 
 // The entry points per instruction set; everything above inlines into them.
-using StepFn = bool (*)(const View&, const float*, const float*, const uint32_t*, int, const AdamStep&, double*);
-using MseFn = double (*)(const View&, const float*, const float*, std::size_t);
+using StepFn = bool (*)(const View&, const float*, const float*, const uint32_t*, int, const AdamStep&, const LossArgs&,
+                        double*);
+using LossFn = double (*)(const View&, const float*, const float*, std::size_t, const LossArgs&);
 using ForwardFn = void (*)(const View&, const float*, std::size_t, float*);
 using CountsFn = void (*)(const View&, const float*, std::size_t, std::vector<std::vector<uint32_t>>&);
 
 template <int H>
 __attribute__((target("avx2,fma"))) bool step_avx2(const View& V, const float* x, const float* y,
-                                                   const uint32_t* rows, int batch, const AdamStep& c, double* l) {
-  return step_impl<Avx2, H>(V, x, y, rows, batch, c, l);
+                                                   const uint32_t* rows, int batch, const AdamStep& c,
+                                                   const LossArgs& lf, double* l) {
+  return step_impl<Avx2, H>(V, x, y, rows, batch, c, lf, l);
 }
 template <int H>
-__attribute__((target("avx2,fma"))) double mse_avx2(const View& V, const float* x, const float* y, std::size_t n) {
-  return mse_impl<H>(V, x, y, n);
+__attribute__((target("avx2,fma"))) double loss_avx2(const View& V, const float* x, const float* y, std::size_t n,
+                                                     const LossArgs& lf) {
+  return loss_impl<H>(V, x, y, n, lf);
 }
 template <int H>
 __attribute__((target("avx2,fma"))) void forward_avx2(const View& V, const float* x, std::size_t n, float* out) {
@@ -408,8 +455,8 @@ void counts_sse2(const View& V, const float* x, std::size_t n, std::vector<std::
 }
 template <int H>
 bool step_sse2(const View& V, const float* x, const float* y, const uint32_t* rows, int batch, const AdamStep& c,
-               double* l) {
-  return step_impl<Sse2, H>(V, x, y, rows, batch, c, l);
+               const LossArgs& lf, double* l) {
+  return step_impl<Sse2, H>(V, x, y, rows, batch, c, lf, l);
 }
 
 template <int K>
@@ -435,15 +482,15 @@ void activation_sse2(float p, const float* z, std::size_t n, float* f, float* df
 
 struct Kernels {
   StepFn step;
-  MseFn mse;
+  LossFn loss;
   ForwardFn forward;
   CountsFn counts;
 };
 
 template <int H>
 Kernels kernels_for(bool avx2) {
-  if (avx2) return {step_avx2<H>, mse_avx2<H>, forward_avx2<H>, counts_avx2<H>};
-  return {step_sse2<H>, mse_impl<H>, forward_impl<H>, counts_sse2<H>};
+  if (avx2) return {step_avx2<H>, loss_avx2<H>, forward_avx2<H>, counts_avx2<H>};
+  return {step_sse2<H>, loss_impl<H>, forward_impl<H>, counts_sse2<H>};
 }
 
 bool cpu_has_avx2() {
@@ -541,13 +588,18 @@ void CpuNet::get_gradient(float* flat) const { unpack(spec_, *layout_, arena_ + 
 bool CpuNet::step(const float* x, const float* y, const uint32_t* rows, int batch, const AdamStep& adam,
                   double* loss) {
   const View V{*layout_, arena_, cur_};
-  if (!kernels(layout_->hidden).step(V, x, y, rows, batch, adam, loss)) return false;
+  if (!kernels(layout_->hidden).step(V, x, y, rows, batch, adam, LossArgs{loss_.kind, float(loss_.delta)}, loss))
+    return false;
   cur_ ^= 1;
   return true;
 }
 
 double CpuNet::mse(const float* x, const float* y, std::size_t count) {
-  return kernels(layout_->hidden).mse(View{*layout_, arena_, cur_}, x, y, count);
+  return kernels(layout_->hidden).loss(View{*layout_, arena_, cur_}, x, y, count, LossArgs{LossKind::l2, 1.0f});
+}
+
+double CpuNet::mean_loss(const float* x, const float* y, std::size_t count) {
+  return kernels(layout_->hidden).loss(View{*layout_, arena_, cur_}, x, y, count, LossArgs{loss_.kind, float(loss_.delta)});
 }
 
 void CpuNet::forward(const float* x, std::size_t count, float* out) {

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "nn/loss.h"
 #include "nn/mlp_spec.h"
 #include "nn/trainer.h"
 
@@ -45,13 +46,17 @@ class CpuNet {
   // so the tests compare this directly with the oracle).
   void get_gradient(float* flat) const;
 
+  // The loss step() minimises (nn/loss.h; l2 until set).
+  void set_loss(const Loss& loss) { loss_ = loss; }
+
   // One Adam step on the minibatch of rows `rows[0..batch)` of x (inputs wide) and y (outputs
   // wide). Returns false, leaving the parameters as they were, when the loss or the new
-  // parameters are not finite. `loss` = the minibatch MSE before the update.
+  // parameters are not finite. `loss` = the minibatch's loss before the update.
   bool step(const float* x, const float* y, const uint32_t* rows, int batch, const AdamStep& adam, double* loss);
 
-  // MSE over `count` contiguous rows.
+  // MSE over `count` contiguous rows; mean_loss: the set loss over them.
   double mse(const float* x, const float* y, std::size_t count);
+  double mean_loss(const float* x, const float* y, std::size_t count);
   // Outputs for `count` contiguous rows (count x outputs floats).
   void forward(const float* x, std::size_t count, float* out);
   // Per hidden layer and unit, over `count` rows: how many samples had the unit active (relu,
@@ -66,6 +71,7 @@ class CpuNet {
   std::unique_ptr<Layout> layout_;
   float* arena_ = nullptr;  // 64-byte aligned: params x2, m, v, grad, activations, scratch
   int cur_ = 0;             // which of the two parameter copies is current
+  Loss loss_;
 };
 
 }  // namespace sn::nn

@@ -189,8 +189,16 @@ TrainLayout plan_train_layout(const MlpSpec& spec, int batch, std::size_t max_sh
   return t;
 }
 
-gl::Defines train_defines(const MlpSpec& spec, int batch, const TrainLayout& t) {
+namespace {
+void loss_defines(gl::Defines& d, const Loss& loss) {
+  d["MLP_LOSS"] = num(std::size_t(loss.kind));
+  d["MLP_LOSS_DELTA"] = float_literal(loss.delta);
+}
+}  // namespace
+
+gl::Defines train_defines(const MlpSpec& spec, int batch, const TrainLayout& t, const Loss& loss) {
   gl::Defines d = mlp_defines(spec);
+  loss_defines(d, loss);
   d["MLP_BATCH"] = num(std::size_t(batch));
   d["MLP_PARAMS_SHARED"] = t.params_shared ? "1" : "0";
   d["MLP_MOMENTS_SHARED"] = t.moments_shared ? "1" : "0";
@@ -209,8 +217,9 @@ int eval_local_size(const MlpSpec& spec, std::size_t max_shared) {
   return n;
 }
 
-gl::Defines eval_defines(const MlpSpec& spec, bool loss_mode, int local_size) {
+gl::Defines eval_defines(const MlpSpec& spec, bool loss_mode, int local_size, const Loss& loss) {
   gl::Defines d = mlp_defines(spec);
+  loss_defines(d, loss);
   d["MLP_EVAL_LOSS"] = loss_mode ? "1" : "0";
   d["MLP_EVAL_LOCAL_SIZE"] = num(std::size_t(local_size));
   return d;

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "gl/shader_source.h"
+#include "nn/loss.h"
 #include "nn/mlp_spec.h"
 
 namespace sn::nn {
@@ -71,12 +72,13 @@ struct TrainLayout {
 TrainLayout plan_train_layout(const MlpSpec& spec, int batch, std::size_t max_shared_bytes, bool per_net);
 
 // mlp_defines plus the kernel's batch and layout (the cache key of its program).
-gl::Defines train_defines(const MlpSpec& spec, int batch, const TrainLayout& layout);
+gl::Defines train_defines(const MlpSpec& spec, int batch, const TrainLayout& layout, const Loss& loss);
 
 // mlp_defines plus mlp_eval.comp's mode: "loss" (sums of squared errors per workgroup) or
 // "output" (the outputs per row).
 // Rows per workgroup: 8 (one SIMD vector of llvmpipe) unless their units do not fit in shared memory.
 int eval_local_size(const MlpSpec& spec, std::size_t max_shared_bytes);
-gl::Defines eval_defines(const MlpSpec& spec, bool loss_mode, int local_size);
+// In loss mode the sums are of `loss` (nn/loss.h) instead of squared errors.
+gl::Defines eval_defines(const MlpSpec& spec, bool loss_mode, int local_size, const Loss& loss = {});
 
 }  // namespace sn::nn
