@@ -132,14 +132,24 @@ std::string body(const std::string& code) {
 }
 }  // namespace
 
+std::string activation_glsl_function(const ActivationDef& d, ActivationPart part) {
+  const std::string fn = "sn_act_" + d.name;
+  // The body starts on the header's line: an error's line number counts within the given text.
+  // `x` is the pre-activation too (users' definitions read more naturally as f(x)).
+  switch (part) {
+    case ActivationPart::f: return "vec4 " + fn + "(vec4 z, float p) { vec4 x = z; " + body(d.glsl) + "\n}\n";
+    case ActivationPart::grad: return "vec4 " + fn + "_grad(vec4 z, float p) { vec4 x = z; " + body(d.grad) + "\n}\n";
+    default:
+      return d.grad_from_output.empty()
+                 ? ""
+                 : "vec4 " + fn + "_grad_a(vec4 a, float p) { " + body(d.grad_from_output) + "\n}\n";
+  }
+}
+
 std::string activation_glsl_source(Activation a) {
   const ActivationDef& d = activation_def(a);
-  const std::string fn = activation_glsl_function(a);
-  // Each body on lines of its own, so that an error's line number counts within the user's text.
-  std::string s = "vec4 " + fn + "(vec4 z, float p) {\n" + body(d.glsl) + "\n}\n";
-  s += "vec4 " + fn + "_grad(vec4 z, float p) {\n" + body(d.grad) + "\n}\n";
-  if (!d.grad_from_output.empty()) s += "vec4 " + fn + "_grad_a(vec4 a, float p) {\n" + body(d.grad_from_output) + "\n}\n";
-  return s;
+  return activation_glsl_function(d, ActivationPart::f) + activation_glsl_function(d, ActivationPart::grad) +
+         activation_glsl_function(d, ActivationPart::grad_from_output);
 }
 
 }  // namespace sn::nn

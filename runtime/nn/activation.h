@@ -78,7 +78,9 @@ bool find_activation(const std::string& name, Activation* out);
 
 // GLSL function names of an activation: <fn>(vec4 z, float p), <fn>_grad, <fn>_grad_a.
 std::string activation_glsl_function(Activation a);
-// The GLSL file (as an in-memory #include) defining an activation's functions.
+// The GLSL file (as an in-memory #include) defining an activation's functions, and one of them.
 std::string activation_glsl_source(Activation a);
+enum class ActivationPart { f, grad, grad_from_output };
+std::string activation_glsl_function(const ActivationDef& def, ActivationPart part);
 
 }  // namespace sn::nn

@@ -13,6 +13,8 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
+#include <set>
 #include <stdexcept>
 
 #include "io/atomic_write.h"
@@ -111,6 +113,14 @@ void save_checkpoint(const Mlp& net, const std::string& path) {
     std::snprintf(v, sizeof v, "%.17g", net.spec.param(a));
     if (entries.empty() || entries.back().first != activation_param_name(k)) entries.emplace_back(activation_param_name(k), v);
   }
+  // A user's activation travels by definition: its GLSL (the Lua twins cannot be saved).
+  std::set<std::string> recorded;
+  for (Activation a : {net.spec.activation, net.spec.output_activation}) {
+    const ActivationDef& d = activation_def(a);
+    if (d.simd >= 0 || !recorded.insert(d.name).second) continue;
+    entries.emplace_back("activation " + d.name + " glsl", d.glsl);
+    entries.emplace_back("activation " + d.name + " grad", d.grad);
+  }
   if (!entries.empty()) {
     p.str("entries");
     p.put(uint32_t(entries.size()));
@@ -158,11 +168,13 @@ Mlp load_checkpoint(const std::string& path) {
   const uint32_t hidden = r.get<uint32_t>("spec");
   if (hidden > uint32_t(kMaxHidden)) throw std::runtime_error(path + ": checkpoint has " + std::to_string(hidden) + " hidden layers");
   for (uint32_t i = 0; i < hidden; ++i) s.hidden.push_back(int(r.get<uint32_t>("spec")));
+  std::string hidden_name, output_name;
   try {
-    s.activation = parse_activation(r.str("spec"), Position::hidden);
+    hidden_name = r.str("spec");
     s.slope = r.get<double>("spec");
-    s.output_activation = parse_activation(r.str("spec"), Position::output, "output_activation");
+    output_name = r.str("spec");
     s.color = shading::parse_color_space(r.str("spec"));
+    s.activation = s.output_activation = Activation::tanh;  // resolved below, after the entries
     s.validate();  // widths before they size anything; again below with the entries' parameters
   } catch (const std::invalid_argument& e) {
     throw std::runtime_error(path + ": bad network spec in checkpoint: " + e.what());
@@ -182,6 +194,7 @@ Mlp load_checkpoint(const std::string& path) {
     net.best_params.resize(count);
     for (auto& v : net.best_params) v = r.get<float>("best snapshot");
   }
+  std::map<std::string, std::string> defs;  // "NAME glsl" / "NAME grad" -> text
   while (r.pos != payload.size()) {
     const std::string tag = r.str("sections");
     if (tag == "conditions") {
@@ -205,6 +218,7 @@ Mlp load_checkpoint(const std::string& path) {
         const bool number = !value.empty() && end && *end == 0;
         if (key == "omega" && number) s.omega = v;
         else if (key == "alpha" && number) s.alpha = v;
+        else if (key.rfind("activation ", 0) == 0) defs[key.substr(11)] = value;
         else throw std::runtime_error(path + ": checkpoint entry '" + key + "' = '" + value + "' is not one this build reads");
       }
     } else {
@@ -212,6 +226,27 @@ Mlp load_checkpoint(const std::string& path) {
     }
   }
   if (r.pos != payload.size()) throw std::runtime_error(path + ": checkpoint has unread bytes after the network");
+  // Activations by name; a user's one must be defined, as the checkpoint recorded it.
+  auto resolve = [&](const std::string& name, Position where, const char* option) {
+    const auto glsl = defs.find(name + " glsl"), grad = defs.find(name + " grad");
+    const bool recorded = glsl != defs.end() && grad != defs.end();
+    Activation a;
+    if (!find_activation(name, &a) && recorded)
+      throw std::runtime_error(path + ": the network uses activation '" + name +
+                               "', which is not defined; define it before sn.load with sn.activation.define{ name = \"" +
+                               name + "\", glsl = \"" + glsl->second + "\", grad = \"" + grad->second +
+                               "\", lua = ..., lua_grad = ... }");
+    if (recorded && (activation_def(a).glsl != glsl->second || activation_def(a).grad != grad->second))
+      throw std::runtime_error(path + ": activation '" + name + "' is defined differently from the network's (glsl = \"" +
+                               glsl->second + "\", grad = \"" + grad->second + "\")");
+    try {
+      return parse_activation(name, where, option);
+    } catch (const std::invalid_argument& e) {
+      throw std::runtime_error(path + ": bad network spec in checkpoint: " + e.what());
+    }
+  };
+  s.activation = resolve(hidden_name, Position::hidden, "activation");
+  s.output_activation = resolve(output_name, Position::output, "output_activation");
   try {
     s.validate();
   } catch (const std::invalid_argument& e) {

@@ -16,7 +16,8 @@
 //     "conditions" (a conditioned network): u32 count, per condition str name, f64 min, f64 max,
 //     f64 value
 //     "entries": u32 count, per entry str key, str value ("omega", "alpha": an activation's
-//     parameter, written when the network uses it)
+//     parameter, written when the network uses it; "activation NAME glsl" / "activation NAME
+//     grad": a user's activation, by definition)
 //
 // Saving writes a temporary file beside the target and renames it over the target, so a
 // failed save never leaves a half-written checkpoint. Loading checks magic, version, size and

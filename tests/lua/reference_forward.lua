@@ -2,8 +2,12 @@
 -- weights [out][in] then biases [out]): the reference the gl tests compare against.
 local M = {}
 
+-- Lua twins of user-defined activations, by name (tests add theirs).
+M.custom = {}
+
 -- s: the network's spec (its slope, omega, alpha). GELU in its tanh form, as shadenet's.
 function M.act(kind, s, z)
+  if M.custom[kind] then return M.custom[kind](z) end
   if kind == "tanh" then return math.tanh(z)
   elseif kind == "sigmoid" then return 1 / (1 + math.exp(-z))
   elseif kind == "relu" then return z > 0 and z or 0
@@ -19,8 +23,9 @@ function M.act(kind, s, z)
   return z
 end
 
-function M.forward(net, x)
-  local s, p = net:spec(), net:params()
+-- params: the parameters in double (a table in net:params()' layout), default the net's own.
+function M.forward(net, x, params)
+  local s, p = net:spec(), params or net:params()
   local widths = { s.inputs }
   for _, w in ipairs(s.hidden) do widths[#widths + 1] = w end
   widths[#widths + 1] = s.outputs
