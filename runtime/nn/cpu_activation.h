@@ -112,8 +112,11 @@ SN_INLINE void vsincos(const v8& x, v8& s_out, v8& c_out) {
 SN_INLINE v8 vsigmoid(const v8& z) { return 0.5f + 0.5f * fast_tanh(0.5f * z); }
 SN_INLINE v8 vsigmoid_exp(const v8& z) { return 1.0f / (1.0f + vexp(-z)); }
 
+// softplus keeps f'(z) too: its forward pass has e^-|z| at hand, from which sigmoid(z) costs one
+// division, where 1 - e^-a from the output would cost another exp.
 template <int K>
-constexpr bool kFromOutput = K != int(Builtin::sine) && K != int(Builtin::gelu) && K != int(Builtin::swish);
+constexpr bool kFromOutput = K != int(Builtin::sine) && K != int(Builtin::gelu) && K != int(Builtin::swish) &&
+                             K != int(Builtin::softplus);
 
 constexpr float kGeluC = 0.7978845608028654f, kGeluK = 0.044715f;
 
@@ -137,9 +140,9 @@ SN_INLINE void act_both(const v8 z, float p, v8& a, v8& g) {
     vsincos(p * z, a, g);
     g = p * g;
   } else if constexpr (B == Builtin::softplus) {
-    const v8 neg = select(z > 0.0f, -z, z);  // -|z|
-    a = select(z > 0.0f, z, splat(0.0f)) + vlog1p_unit(vexp(neg));
-    g = vsigmoid(z);
+    const v8 e = vexp(select(z > 0.0f, -z, z));  // e^-|z|
+    a = select(z > 0.0f, z, splat(0.0f)) + vlog1p_unit(e);
+    g = select(z > 0.0f, splat(1.0f), e) / (1.0f + e);  // sigmoid(z)
   } else if constexpr (B == Builtin::squareplus) {
     const v8 s = vsqrt<Sse2>(z * z + 4.0f);
     a = select(z >= 0.0f, 0.5f * (z + s), 2.0f / (s - z));
@@ -190,7 +193,6 @@ SN_INLINE v8 act_grad_a(const v8& a, float p) {
   if constexpr (B == Builtin::sigmoid) return a * (1.0f - a);
   if constexpr (B == Builtin::relu) return select(a > 0.0f, splat(1.0f), splat(0.0f));
   if constexpr (B == Builtin::leaky_relu) return select(a > 0.0f, splat(1.0f), splat(p));
-  if constexpr (B == Builtin::softplus) return 1.0f - vexp(-a);
   if constexpr (B == Builtin::squareplus) return a * a / (a * a + 1.0f);
   if constexpr (B == Builtin::elu) return select(a > 0.0f, splat(1.0f), a + p);
   if constexpr (B == Builtin::exponential) return a;
