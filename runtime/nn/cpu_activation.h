@@ -65,8 +65,10 @@ SN_INLINE v8 vexp(const v8& in) {
   y = y * x + 1.6666665459e-1f;
   y = y * x + 5.0000001201e-1f;
   y = y * (x * x) + x + 1.0f;
-  // 2^n as 2 * 2^(n-1): n reaches 128 just below the overflow threshold.
-  const v8i bits = (n + 126) << 23;
+  // 2^n as 2 * 2^(n-1): n reaches 128 just below the overflow threshold. Shifted unsigned: a
+  // NaN input leaves n = INT_MIN (its y is NaN anyway), which a signed shift would make UB.
+  typedef unsigned v8u __attribute__((vector_size(32)));
+  const v8u bits = ((v8u)(n + 126)) << 23;
   y = (y + y) * (v8)bits;
   return select(over, splat(__builtin_inff()), y);
 }
