@@ -1,13 +1,15 @@
 -- Training throughput: sample-steps per second (one sample through forward, backward and its
 -- share of the Adam step) for the thesis' architectures, with 1 .. 360 networks per job.
 --
---   shadenet bench/train_throughput.lua [backend] [counts] [epochs]
---     backend: cpu | gl | all (default: every backend in this build)
---     counts:  networks per job, comma separated (default 1,2,8,32,360)
---     epochs:  epochs per job (default 1)
+--   shadenet bench/train_throughput.lua [backend] [counts] [epochs] [activations] [archs]
+--     backend:     cpu | gl | all (default: every backend in this build)
+--     counts:      networks per job, comma separated (default 1,2,8,32,360)
+--     epochs:      epochs per job (default 1)
+--     activations: hidden activations, comma separated (default tanh; "all": every built-in)
+--     archs:       hidden layers x width, comma separated (default 4x6,8x8,8x12,12x12)
 --
 -- Synthetic data: 64,000 samples of 6 inputs -> 3 outputs, split 80/20 (51,200 training rows),
--- tanh networks, batch 8, Adam. Wall time includes the per-epoch validation pass. "cpu s" is
+-- batch 8, Adam. Wall time includes the per-epoch validation pass. "cpu s" is
 -- the process CPU time of the job (all threads), "steps/cpu-s" the sample-steps per second of
 -- CPU time; "load" the 1-minute load average before the job: other work on the machine slows
 -- the wall-clock figures, hardly the CPU-time ones.
@@ -17,6 +19,18 @@ local want = arg[1] or "all"
 local counts = {}
 for n in (arg[2] or "1,2,8,32,360"):gmatch("%d+") do counts[#counts + 1] = tonumber(n) end
 local epochs = tonumber(arg[3] or "1")
+local activations = {}
+local all_activations = { "tanh", "sigmoid", "relu", "leaky_relu", "sine", "softplus", "squareplus", "elu", "gelu",
+                          "swish", "exponential" }
+for a in (arg[4] or "tanh"):gmatch("[%w_]+") do
+  if a == "all" then
+    for _, b in ipairs(all_activations) do activations[#activations + 1] = b end
+  else
+    activations[#activations + 1] = a
+  end
+end
+local archs = {}
+for l, w in (arg[5] or "4x6,8x8,8x12,12x12"):gmatch("(%d+)x(%d+)") do archs[#archs + 1] = { tonumber(l), tonumber(w) } end
 
 local function status(field)
   local f = io.open("/proc/self/status")
@@ -56,29 +70,34 @@ local wx, wy = {}, {}
 for i = 1, 80 do wx[i] = { 0, 0, 0, 0, 0, i / 80 } wy[i] = { 0.5, 0.5, 0.5 } end
 local warm = sn.dataset { x = wx, y = wy }
 
-local archs = { {4, 6}, {8, 8}, {8, 12}, {12, 12} }
 local backends = {}
 for _, b in ipairs(sn.backends()) do
   if want == "all" or want == b then backends[#backends + 1] = b end
 end
 assert(#backends > 0, "backend '" .. want .. "' is not in this build (have: " .. table.concat(sn.backends(), ", ") .. ")")
 
+local jobs = {}  -- (architecture, activation) pairs, activations innermost
+for _, a in ipairs(archs) do
+  for _, act in ipairs(activations) do jobs[#jobs + 1] = { a, act } end
+end
+
 local ntrain = data:counts()
-print(("dataset: %d samples (%d training), %d epoch(s), batch 8, tanh"):format(rows, ntrain, epochs))
-print(("%-7s %-6s %5s %14s %12s %8s %8s %14s %6s %9s"):format("backend", "arch", "nets", "total steps/s",
-  "per net", "wall s", "cpu s", "steps/cpu-s", "load", "peak MiB"))
+print(("dataset: %d samples (%d training), %d epoch(s), batch 8"):format(rows, ntrain, epochs))
+print(("%-7s %-6s %-11s %5s %14s %12s %8s %8s %14s %6s %9s"):format("backend", "arch", "activation", "nets",
+  "total steps/s", "per net", "wall s", "cpu s", "steps/cpu-s", "load", "peak MiB"))
 for _, backend in ipairs(backends) do
-  for _, a in ipairs(archs) do
+  for _, job in ipairs(jobs) do
+    local a, act = job[1], job[2]
     local hidden = {}
     for i = 1, a[1] do hidden[i] = a[2] end
     if backend == "gl" then
-      sn.train { nets = sn.mlp { inputs = 6, hidden = hidden, outputs = 3, activation = "tanh" }, data = warm,
+      sn.train { nets = sn.mlp { inputs = 6, hidden = hidden, outputs = 3, activation = act }, data = warm,
                  epochs = 1, batch = 8, backend = "gl" }
     end
     for _, count in ipairs(counts) do
       local nets = {}
       for s = 1, count do
-        nets[s] = sn.mlp { inputs = 6, hidden = hidden, outputs = 3, activation = "tanh", seed = s }
+        nets[s] = sn.mlp { inputs = 6, hidden = hidden, outputs = 3, activation = act, seed = s }
       end
       local load = loadavg()
       local c0 = os.clock()
@@ -88,8 +107,8 @@ for _, backend in ipairs(backends) do
       local steps = 0
       for _, r in ipairs(runs) do steps = steps + r.steps * 8 end
       local wall = runs[1].wall_time
-      print(("%-7s %-6s %5d %14.0f %12.0f %8.2f %8.2f %14.0f %6s %9.1f"):format(backend, a[1] .. "x" .. a[2],
-        count, steps / wall, steps / wall / count, wall, cpu, steps / cpu, load, status("VmHWM") / 1024))
+      print(("%-7s %-6s %-11s %5d %14.0f %12.0f %8.2f %8.2f %14.0f %6s %9.1f"):format(backend, a[1] .. "x" .. a[2],
+        act, count, steps / wall, steps / wall / count, wall, cpu, steps / cpu, load, status("VmHWM") / 1024))
       nets, runs = nil, nil
       collectgarbage()
     end

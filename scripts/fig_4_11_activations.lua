@@ -1,8 +1,12 @@
 -- Figure 4.11: validation curves of a GGX network (8 hidden layers x 8) with each activation
 -- the thesis tried: tanh, sigmoid, ReLU and leaky ReLU with a = 0.05, 0.1, 0.2 (Adam lr 0.00003,
--- 800 epochs in full mode). The thesis saw sigmoid and ReLU stall at the all-zeros output's
--- MSE; the dead-unit diagnostics (per hidden layer: ReLU units active on no sample, sigmoid/tanh
--- units saturated on more than 99% of the samples) say why a curve stalls.
+-- 800 epochs in full mode); beside them the activations shadenet added (sine, softplus,
+-- squareplus, ELU, GELU, swish, exponential), and the thesis' four with the output activation
+-- matching the hidden one ("out" rows): the thesis saw sigmoid and ReLU stall at the all-zeros
+-- output's MSE, which needs outputs that can be pinned at 0 (a ReLU output can; a linear one
+-- cannot). The dead-unit diagnostics (per hidden layer: ReLU units active on no sample,
+-- sigmoid/tanh units saturated, the others flat (|f'| < 0.01), on more than 99% of the samples)
+-- say why a curve stalls.
 --   shadenet scripts/fig_4_11_activations.lua [--quick] [--shard i/n] [--out DIR] [--backend cpu|gl|auto]
 package.path = (arg and arg[0] and arg[0]:match("^(.*)/[^/]*$") or ".") .. "/?.lua;" .. package.path
 local exp = require "lib.experiment"
@@ -20,13 +24,26 @@ local acts = {
   { id = "leaky005", label = "leaky ReLU a=0.05", activation = "leaky_relu", slope = 0.05 },
   { id = "leaky010", label = "leaky ReLU a=0.1", activation = "leaky_relu", slope = 0.1 },
   { id = "leaky020", label = "leaky ReLU a=0.2", activation = "leaky_relu", slope = 0.2 },
+  { id = "sine", label = "sine (w0 = 1)", activation = "sine" },
+  { id = "softplus", label = "softplus", activation = "softplus" },
+  { id = "squareplus", label = "squareplus", activation = "squareplus" },
+  { id = "elu", label = "ELU", activation = "elu" },
+  { id = "gelu", label = "GELU (tanh form)", activation = "gelu" },
+  { id = "swish", label = "swish", activation = "swish" },
+  { id = "exponential", label = "exponential", activation = "exponential" },
+  { id = "tanh-out", label = "tanh (out tanh)", activation = "tanh", output_activation = "tanh" },
+  { id = "sigmoid-out", label = "sigmoid (out sigmoid)", activation = "sigmoid", output_activation = "sigmoid" },
+  { id = "relu-out", label = "ReLU (out ReLU)", activation = "relu", output_activation = "relu" },
+  { id = "leaky010-out", label = "leaky ReLU a=0.1 (out leaky)", activation = "leaky_relu", slope = 0.1,
+    output_activation = "leaky_relu" },
 }
 local desc = E:data_desc { model = "ggx" }
 local runs = {}
 for seed = 1, seeds do
   for _, a in ipairs(acts) do
     runs[#runs + 1] = exp.run { id = string.format("%s-s%02d", a.id, seed), hidden = exp.rep(8, 8), seed = seed,
-                                epochs = epochs, adam = adam, activation = a.activation, slope = a.slope, data = desc }
+                                epochs = epochs, adam = adam, activation = a.activation, slope = a.slope,
+                                output_activation = a.output_activation, data = desc }
   end
 end
 local records = E:sweep(runs)
@@ -92,7 +109,8 @@ E.R:table {
     exp.unseen_note(),
     string.format("Our all-zeros output MSE is %.6f and the constant predictor's %.6f (the thesis' all-zeros MSE on its data: %.5f).",
                   base.zeros, base.constant, thesis.fig_4_11.stall_mse),
-    "Dead units, per hidden layer over the training rows: ReLU / leaky ReLU units never positive; tanh units with |a| > 0.99 and sigmoid units below 0.01 or above 0.99 on more than 99% of the rows.",
+    "Dead units, per hidden layer over the training rows: ReLU / leaky ReLU units never positive; tanh units with |a| > 0.99 and sigmoid units below 0.01 or above 0.99, and units of the other activations with |f'(z)| < 0.01, on more than 99% of the rows.",
+    "Rows marked \"out\" use the hidden activation at the output too (the others a linear output). An empty row diverged: eight exponential layers overflow float (its result records `diverged`).",
   },
 }
 E:finish {

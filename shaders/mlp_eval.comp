@@ -1,8 +1,8 @@
 // Networks of one architecture evaluated over rows of samples (runtime/nn/gl_forward.cpp):
 // invocation = row, workgroup row y = network; parameters in the padded vec4 layout of
 // runtime/nn/mlp_shader.h. MLP_EVAL_LOSS 1 writes, per network and workgroup, the sum of
-// squared errors against the targets (validation MSE without reading outputs back); 0 writes
-// the outputs themselves.
+// the loss (mlp/loss.glsl: squared errors for l2) against the targets (validation MSE without
+// reading outputs back); 0 writes the outputs themselves.
 layout(local_size_x = MLP_EVAL_LOCAL_SIZE) in;
 
 layout(std430, binding = 0) readonly buffer X { float xs[]; };       // rows x MLP_IN
@@ -27,6 +27,7 @@ uint pbase, lane;
 #define MLP_UNIT(b, u0, k) sh_u[lane * uint(MLP_UQ) + uint((u0) + (k))]
 #define MLP_ROLLED(n) ((n) + u_zero)
 #include "mlp/forward.glsl"
+#include "mlp/loss.glsl"
 
 #if MLP_EVAL_LOSS
 shared double sh_sum[MLP_EVAL_LOCAL_SIZE];
@@ -56,8 +57,8 @@ void main() {
 #if MLP_EVAL_LOSS
   double se = 0.0lf;
   for (int o = 0; o < MLP_OUT; ++o) {
-    float e = MLP_UNIT(MLP_LAYERS, MLP_OUT_UQ, o / 4)[o % 4] - ys[r * uint(MLP_OUT) + uint(o)];
-    se += double(e * e);
+    float t = ys[r * uint(MLP_OUT) + uint(o)], e = MLP_UNIT(MLP_LAYERS, MLP_OUT_UQ, o / 4)[o % 4] - t;
+    se += double(mlp_loss(vec4(e), vec4(t)).x);
   }
   sh_sum[lane] = live ? se : 0.0lf;
   barrier();

@@ -12,6 +12,7 @@
 //    the chunk one step short of it.
 #include "mlp/activation.glsl"
 #include "mlp/adam.glsl"
+#include "mlp/loss.glsl"
 
 layout(local_size_x = MLP_BATCH) in;
 
@@ -81,10 +82,12 @@ void adam_at(int k, vec4 g, bvec4 live) {
 
 #define MLP_P4(k) P4(k)
 #define MLP_UNIT(b, u0, k) A4(lane, (u0) + (k))
+// f'(z) of activations that need z waits in the unit's delta slot until backward overwrites it.
+#define MLP_KEEP_GRAD(u, g) D4(lane, u) = (g);
 #include "mlp/forward.glsl"
 
 // This sample's deltas of a layer's inputs from those of its outputs (not for the first layer):
-// delta_i = f'(a_i) * sum_j W[j][i] delta_j, rows in order; runs last layer first.
+// delta_i = f'(z_i) * sum_j W[j][i] delta_j, rows in order; runs last layer first.
 #define BACKWARD_RUN(L0, COUNT, IN, OUT, IN4, OUT4, WQ0, UI0, QN)                    \
   for (int r_ = 0; r_ < MLP_ROLLED(COUNT); ++r_) {                                   \
     const int k_ = COUNT - 1 - r_, wq_ = WQ0 + k_ * (OUT * IN4 + OUT4);              \
@@ -99,7 +102,7 @@ void adam_at(int k, vec4 g, bvec4 live) {
       }                                                                              \
     }                                                                                \
     for (int q = 0; q < QN; ++q) {                                                   \
-      vec4 dq = acc[q] * mlp_activate_grad(MLP_ACT, A4(lane, ui_ + q));              \
+      vec4 dq = acc[q] * MLP_ACT_DERIV(A4(lane, ui_ + q), D4(lane, ui_ + q));        \
       ok = ok && mlp_finite(dq);                                                     \
       D4(lane, ui_ + q) = dq;                                                        \
     }                                                                                \
@@ -170,7 +173,7 @@ void main() {
     }
     MLP_FORWARD()
 
-    // d/dy of mean((y - t)^2) over the minibatch's samples and outputs, then backward.
+    // d/dy of the mean loss over the minibatch's samples and outputs (mlp/loss.glsl), then backward.
     bool ok = true;
     float loss = 0.0;
     for (int q = 0; q < MLP_OUT4; ++q) {
@@ -178,8 +181,8 @@ void main() {
       for (int c = 0; c < 4; ++c)
         if (4 * q + c < MLP_OUT) target[c] = train_y[row * uint(MLP_OUT) + uint(4 * q + c)];
       vec4 e = mix(vec4(0.0), y - target, mlp_live(q, MLP_OUT));
-      loss += dot(e, e);
-      vec4 dq = (2.0 / float(B * MLP_OUT)) * e * mlp_activate_grad(MLP_OUT_ACT, y);
+      loss += dot(mlp_loss(e, target), vec4(1.0));
+      vec4 dq = (1.0 / float(B * MLP_OUT)) * mlp_loss_grad(e, target) * MLP_OUT_ACT_DERIV(y, D4(lane, MLP_OUT_UQ + q));
       ok = ok && mlp_finite(dq);
       D4(lane, MLP_OUT_UQ + q) = dq;
     }

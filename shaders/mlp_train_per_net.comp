@@ -16,6 +16,7 @@
 //  - a step whose new parameters are not finite commits nothing (status 2).
 #include "mlp/activation.glsl"
 #include "mlp/adam.glsl"
+#include "mlp/loss.glsl"
 
 layout(local_size_x = MLP_NETS_PER_GROUP) in;
 

@@ -248,12 +248,12 @@ int w_view_tostring(lua_State* L) {
 
 // ---- the network ----
 
-// sn.mlp{ inputs, hidden = {...}, outputs, activation, slope, output_activation, init, seed,
-//         color, input_names }
+// sn.mlp{ inputs, hidden = {...}, outputs, activation, slope, omega, alpha, output_activation, init,
+//         seed, color, input_names }
 int w_new(lua_State* L) {
   Options o(L, 1, "sn.mlp",
-            {"inputs", "hidden", "outputs", "activation", "slope", "output_activation", "init", "seed", "color",
-             "input_names"});
+            {"inputs", "hidden", "outputs", "activation", "slope", "omega", "alpha", "output_activation", "init", "seed",
+             "color", "input_names"});
   nn::MlpSpec s;
   s.inputs = int(o.integer("inputs"));
   s.outputs = int(o.integer("outputs", 3));
@@ -261,9 +261,11 @@ int w_new(lua_State* L) {
     if (w != std::floor(w)) throw Error("sn.mlp option 'hidden': widths must be integers, got " + std::to_string(w));
     s.hidden.push_back(int(w));
   }
-  s.activation = nn::parse_activation(o.string("activation", "tanh"));
+  s.activation = nn::parse_activation(o.string("activation", "tanh"), nn::Position::hidden);
   s.slope = o.number("slope", 0.01);
-  s.output_activation = nn::parse_activation(o.string("output_activation", "linear"));
+  s.omega = o.number("omega", 1.0);
+  s.alpha = o.number("alpha", 1.0);
+  s.output_activation = nn::parse_activation(o.string("output_activation", "linear"), nn::Position::output, "output_activation");
   s.color = shading::parse_color_space(o.string("color", "rgb"));
   const nn::Init init = nn::parse_init(o.string("init", "xavier"));
   const long long seed = o.integer("seed", 1);
@@ -390,6 +392,10 @@ int w_spec(lua_State* L) {
   lua_setfield(L, -2, "activation");
   lua_pushnumber(L, s.slope);
   lua_setfield(L, -2, "slope");
+  lua_pushnumber(L, s.omega);
+  lua_setfield(L, -2, "omega");
+  lua_pushnumber(L, s.alpha);
+  lua_setfield(L, -2, "alpha");
   lua_pushstring(L, nn::activation_name(s.output_activation));
   lua_setfield(L, -2, "output_activation");
   lua_pushstring(L, shading::color_space_name(s.color));

@@ -35,9 +35,15 @@ void push_result(lua_State* L, const nn::NetResult& r, const nn::JobResult& job)
   lua_setfield(L, -2, "train_mse");
   push_numbers(L, r.val_mse);
   lua_setfield(L, -2, "val_mse");
+  set_string(L, "loss", r.loss);
+  push_numbers(L, r.train_loss);
+  lua_setfield(L, -2, "train_loss");
+  push_numbers(L, r.val_loss);
+  lua_setfield(L, -2, "val_loss");
   if (r.best_epoch > 0) {
     set_number(L, "best_val_mse", r.best_val_mse);
     set_number(L, "best_epoch", r.best_epoch);
+    set_number(L, "best_val_loss", r.val_loss[std::size_t(r.best_epoch - 1)]);
   }
   set_number(L, "wall_time", r.wall_time);
   set_number(L, "sample_steps_per_s", r.sample_steps_per_s);
@@ -56,9 +62,35 @@ void push_result(lua_State* L, const nn::NetResult& r, const nn::JobResult& job)
 
 // sn.train{ nets = {net, ...} | net, data = dataset, epochs = 20, batch = 8,
 //           adam = { lr = 2.5e-4, beta1 = 0.8, beta2 = 0.9, eps = 1e-7 }, seed = 1,
-//           backend = "auto" | "cpu" | "gl", keep = "last" | "best", progress = function(e) }
+//           backend = "auto" | "cpu" | "gl", keep = "last" | "best", progress = function(e),
+//           loss = "l2" | "l1" | "relative_l2" | "huber" | { "huber", delta = 1 } }
+nn::Loss read_loss(lua_State* L, int idx) {
+  const char* where = "sn.train option 'loss'";
+  if (lua_isnil(L, idx)) return nn::Loss{};
+  if (lua_type(L, idx) == LUA_TSTRING) return nn::parse_loss(lua_tostring(L, idx));
+  if (!lua_istable(L, idx)) throw Error(std::string(where) + ": a name or { name, delta = ... } expected, got " + type_name_at(L, idx));
+  double delta = 1.0;
+  std::string name;
+  lua_pushnil(L);
+  while (lua_next(L, idx) != 0) {
+    const bool first = lua_type(L, -2) == LUA_TNUMBER && lua_tonumber(L, -2) == 1;
+    const bool is_delta = lua_type(L, -2) == LUA_TSTRING && std::string(lua_tostring(L, -2)) == "delta";
+    if (first && lua_type(L, -1) == LUA_TSTRING) name = lua_tostring(L, -1);
+    else if (is_delta && lua_type(L, -1) == LUA_TNUMBER) delta = lua_tonumber(L, -1);
+    else {
+      lua_pop(L, 2);
+      throw Error(std::string(where) + ": valid entries are [1] = the loss's name and delta = a number (huber)");
+    }
+    lua_pop(L, 1);
+  }
+  if (name.empty()) throw Error(std::string(where) + ": the table's first entry must be the loss's name");
+  nn::Loss loss = nn::parse_loss(name, delta);
+  if (loss.kind != nn::LossKind::huber && delta != 1.0) throw Error(std::string(where) + ": only huber takes a delta");
+  return loss;
+}
+
 int w_train(lua_State* L) {
-  Options o(L, 1, "sn.train", {"nets", "data", "epochs", "batch", "adam", "seed", "backend", "keep", "progress"});
+  Options o(L, 1, "sn.train", {"nets", "data", "epochs", "batch", "adam", "seed", "backend", "keep", "progress", "loss"});
   nn::TrainJob job;
   // Keep every network (and the dataset) referenced from this stack frame while training runs.
   std::vector<std::shared_ptr<nn::Mlp>> hold;
@@ -102,6 +134,13 @@ int w_train(lua_State* L) {
   }
   lua_pop(L, 1);
 
+  try {
+    c.loss = read_loss(L, o.push("loss"));
+  } catch (const std::invalid_argument& e) {
+    throw Error(std::string("sn.train: ") + e.what());
+  }
+  lua_pop(L, 1);
+
   const std::string backend = o.string("backend", "auto");
   if (backend != "auto" && !nn::has_backend(backend)) {
     std::string avail = "auto";
@@ -116,12 +155,15 @@ int w_train(lua_State* L) {
     if (!lua_isfunction(L, progress)) throw Error("sn.train option 'progress': function expected, got " + type_name_at(L, progress));
     // Runs on this thread between epochs; a Lua error inside stops the job (pcall, then a C++
     // exception: a longjmp must not cross the trainer's frames).
-    job.progress = [L, progress](const nn::ProgressEvent& e) {
+    const bool l2 = c.loss.kind == nn::LossKind::l2;
+    job.progress = [L, progress, l2](const nn::ProgressEvent& e) {
       lua_pushvalue(L, progress);
-      lua_createtable(L, 0, 4);
+      lua_createtable(L, 0, 5);
       set_number(L, "net", e.net + 1);
       set_number(L, "epoch", e.epoch);
-      set_number(L, "train_mse", e.train_mse);
+      set_number(L, "train_loss", e.train_loss);
+      if (l2) set_number(L, "train_mse", e.train_loss);
+      set_number(L, "val_loss", e.val_loss);
       set_number(L, "val_mse", e.val_mse);
       if (lua_pcall(L, 1, 0, 0) != 0) {
         std::string msg = lua_isstring(L, -1) ? lua_tostring(L, -1) : "(error object is not a string)";

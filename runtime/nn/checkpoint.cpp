@@ -7,10 +7,14 @@
 #include <cmath>
 #include <cerrno>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
+#include <set>
 #include <stdexcept>
 
 #include "io/atomic_write.h"
@@ -89,7 +93,8 @@ void save_checkpoint(const Mlp& net, const std::string& path) {
     p.put(double(net.best_val_mse));
     for (float v : net.best_params) p.put(v);
   }
-  // Optional trailing section, absent for an unconditioned network (older files end here).
+  // Optional trailing sections, each a tag and its data; a network that needs none ends here
+  // (older files do, and still load).
   if (!net.conditions.empty()) {
     p.str("conditions");
     p.put(uint32_t(net.conditions.size()));
@@ -98,6 +103,30 @@ void save_checkpoint(const Mlp& net, const std::string& path) {
       p.put(double(c.min));
       p.put(double(c.max));
       p.put(double(c.value));
+    }
+  }
+  std::vector<std::pair<std::string, std::string>> entries;
+  for (Activation a : {net.spec.activation, net.spec.output_activation}) {
+    const ActivationParam k = activation_def(a).param;
+    if (k != ActivationParam::omega && k != ActivationParam::alpha) continue;  // slope has its own field
+    char v[40];
+    std::snprintf(v, sizeof v, "%.17g", net.spec.param(a));
+    if (entries.empty() || entries.back().first != activation_param_name(k)) entries.emplace_back(activation_param_name(k), v);
+  }
+  // A user's activation travels by definition: its GLSL (the Lua twins cannot be saved).
+  std::set<std::string> recorded;
+  for (Activation a : {net.spec.activation, net.spec.output_activation}) {
+    const ActivationDef& d = activation_def(a);
+    if (d.simd >= 0 || !recorded.insert(d.name).second) continue;
+    entries.emplace_back("activation " + d.name + " glsl", d.glsl);
+    entries.emplace_back("activation " + d.name + " grad", d.grad);
+  }
+  if (!entries.empty()) {
+    p.str("entries");
+    p.put(uint32_t(entries.size()));
+    for (const auto& [k, v] : entries) {
+      p.str(k);
+      p.str(v);
     }
   }
 
@@ -139,12 +168,14 @@ Mlp load_checkpoint(const std::string& path) {
   const uint32_t hidden = r.get<uint32_t>("spec");
   if (hidden > uint32_t(kMaxHidden)) throw std::runtime_error(path + ": checkpoint has " + std::to_string(hidden) + " hidden layers");
   for (uint32_t i = 0; i < hidden; ++i) s.hidden.push_back(int(r.get<uint32_t>("spec")));
+  std::string hidden_name, output_name;
   try {
-    s.activation = parse_activation(r.str("spec"));
+    hidden_name = r.str("spec");
     s.slope = r.get<double>("spec");
-    s.output_activation = parse_activation(r.str("spec"));
+    output_name = r.str("spec");
     s.color = shading::parse_color_space(r.str("spec"));
-    s.validate();
+    s.activation = s.output_activation = Activation::tanh;  // resolved below, after the entries
+    s.validate();  // widths before they size anything; again below with the entries' parameters
   } catch (const std::invalid_argument& e) {
     throw std::runtime_error(path + ": bad network spec in checkpoint: " + e.what());
   }
@@ -163,21 +194,64 @@ Mlp load_checkpoint(const std::string& path) {
     net.best_params.resize(count);
     for (auto& v : net.best_params) v = r.get<float>("best snapshot");
   }
-  if (r.pos != payload.size()) {
-    if (r.str("conditions") != "conditions") throw std::runtime_error(path + ": checkpoint has unknown bytes after the network");
-    const uint32_t n = r.get<uint32_t>("conditions");
-    if (n > net.input_names.size()) throw std::runtime_error(path + ": checkpoint has more conditions than inputs");
-    for (uint32_t i = 0; i < n; ++i) {
-      Condition c;
-      c.name = r.str("conditions");
-      c.min = r.get<double>("conditions"), c.max = r.get<double>("conditions"), c.value = r.get<double>("conditions");
-      if (!(std::isfinite(c.min) && std::isfinite(c.max) && std::isfinite(c.value) && c.min <= c.max) ||
-          std::find(net.input_names.begin(), net.input_names.end(), c.name) == net.input_names.end())
-        throw std::runtime_error(path + ": checkpoint has a bad condition '" + c.name + "'");
-      net.conditions.push_back(c);
+  std::map<std::string, std::string> defs;  // "NAME glsl" / "NAME grad" -> text
+  while (r.pos != payload.size()) {
+    const std::string tag = r.str("sections");
+    if (tag == "conditions") {
+      const uint32_t n = r.get<uint32_t>("conditions");
+      if (n > net.input_names.size()) throw std::runtime_error(path + ": checkpoint has more conditions than inputs");
+      for (uint32_t i = 0; i < n; ++i) {
+        Condition c;
+        c.name = r.str("conditions");
+        c.min = r.get<double>("conditions"), c.max = r.get<double>("conditions"), c.value = r.get<double>("conditions");
+        if (!(std::isfinite(c.min) && std::isfinite(c.max) && std::isfinite(c.value) && c.min <= c.max) ||
+            std::find(net.input_names.begin(), net.input_names.end(), c.name) == net.input_names.end())
+          throw std::runtime_error(path + ": checkpoint has a bad condition '" + c.name + "'");
+        net.conditions.push_back(c);
+      }
+    } else if (tag == "entries") {
+      const uint32_t entries = r.get<uint32_t>("entries");
+      for (uint32_t i = 0; i < entries; ++i) {
+        const std::string key = r.str("entries"), value = r.str("entries");
+        char* end = nullptr;
+        const double v = std::strtod(value.c_str(), &end);
+        const bool number = !value.empty() && end && *end == 0;
+        if (key == "omega" && number) s.omega = v;
+        else if (key == "alpha" && number) s.alpha = v;
+        else if (key.rfind("activation ", 0) == 0) defs[key.substr(11)] = value;
+        else throw std::runtime_error(path + ": checkpoint entry '" + key + "' = '" + value + "' is not one this build reads");
+      }
+    } else {
+      throw std::runtime_error(path + ": checkpoint has unknown bytes after the network");
     }
   }
   if (r.pos != payload.size()) throw std::runtime_error(path + ": checkpoint has unread bytes after the network");
+  // Activations by name; a user's one must be defined, as the checkpoint recorded it.
+  auto resolve = [&](const std::string& name, Position where, const char* option) {
+    const auto glsl = defs.find(name + " glsl"), grad = defs.find(name + " grad");
+    const bool recorded = glsl != defs.end() && grad != defs.end();
+    Activation a;
+    if (!find_activation(name, &a) && recorded)
+      throw std::runtime_error(path + ": the network uses activation '" + name +
+                               "', which is not defined; define it before sn.load with sn.activation.define{ name = \"" +
+                               name + "\", glsl = \"" + glsl->second + "\", grad = \"" + grad->second +
+                               "\", lua = ..., lua_grad = ... }");
+    if (recorded && (activation_def(a).glsl != glsl->second || activation_def(a).grad != grad->second))
+      throw std::runtime_error(path + ": activation '" + name + "' is defined differently from the network's (glsl = \"" +
+                               glsl->second + "\", grad = \"" + grad->second + "\")");
+    try {
+      return parse_activation(name, where, option);
+    } catch (const std::invalid_argument& e) {
+      throw std::runtime_error(path + ": bad network spec in checkpoint: " + e.what());
+    }
+  };
+  s.activation = resolve(hidden_name, Position::hidden, "activation");
+  s.output_activation = resolve(output_name, Position::output, "output_activation");
+  try {
+    s.validate();
+  } catch (const std::invalid_argument& e) {
+    throw std::runtime_error(path + ": bad network spec in checkpoint: " + e.what());
+  }
   return net;
 }
 

@@ -11,8 +11,13 @@
 //     u64 trained steps
 //     u64 parameter count, f32 per parameter (the flat layout of nn/mlp_spec.h)
 //     u32 best epoch (0 = no best snapshot); when > 0: f64 best validation MSE, f32 x parameter count
-//     only for a conditioned network: str "conditions", u32 count, per condition str name, f64 min,
-//     f64 max, f64 value (an unconditioned network's file ends before it, as before)
+//   then optional sections, each a str tag and its data (a network that needs none ends before
+//   them, as files before them did):
+//     "conditions" (a conditioned network): u32 count, per condition str name, f64 min, f64 max,
+//     f64 value
+//     "entries": u32 count, per entry str key, str value ("omega", "alpha": an activation's
+//     parameter, written when the network uses it; "activation NAME glsl" / "activation NAME
+//     grad": a user's activation, by definition)
 //
 // Saving writes a temporary file beside the target and renames it over the target, so a
 // failed save never leaves a half-written checkpoint. Loading checks magic, version, size and

@@ -6,8 +6,6 @@
 
 #include "nn/cpu_net.h"
 
-#include <immintrin.h>
-
 #include <atomic>
 #include <cmath>
 #include <stdexcept>
@@ -15,77 +13,19 @@
 #include <cstring>
 #include <new>
 
-#include "nn/fast_tanh.h"
+#include "nn/cpu_activation.h"
 
 namespace sn::nn {
 
 namespace {
 
-typedef float v8 __attribute__((vector_size(32)));
-typedef int v8i __attribute__((vector_size(32)));
-#define SN_INLINE inline __attribute__((always_inline))
+using namespace simd;
 
 constexpr int kLanes = 8;
 std::size_t round8(std::size_t n) { return (n + 7) & ~std::size_t(7); }
 std::size_t round16(std::size_t n) { return (n + 15) & ~std::size_t(15); }
 
-// A broadcast, written as a shuffle: GCC 12 compiles the 8-element constructor (and x - 0)
-// into insert chains, which cost 15-30% of a training step.
-SN_INLINE v8 splat(float x) { return __builtin_shuffle(v8{x, 0, 0, 0, 0, 0, 0, 0}, v8i{}); }
 SN_INLINE float hsum(const v8& v) { return ((v[0] + v[4]) + (v[1] + v[5])) + ((v[2] + v[6]) + (v[3] + v[7])); }
-
-struct Avx2 {};
-struct Sse2 {};
-
-template <class Isa>
-SN_INLINE v8 vsqrt(const v8& x) {
-  if constexpr (std::is_same_v<Isa, Avx2>) {
-    return (v8)__builtin_ia32_sqrtps256((__m256)x);
-  } else {
-    typedef float v4 __attribute__((vector_size(16)));
-    v4 lo = {x[0], x[1], x[2], x[3]}, hi = {x[4], x[5], x[6], x[7]};
-    lo = (v4)_mm_sqrt_ps((__m128)lo);
-    hi = (v4)_mm_sqrt_ps((__m128)hi);
-    return v8{lo[0], lo[1], lo[2], lo[3], hi[0], hi[1], hi[2], hi[3]};
-  }
-}
-
-// a = act(z), and d act / dz written in terms of a (all four hidden activations allow it).
-template <Activation A>
-SN_INLINE v8 act(const v8& z, float slope) {
-  if constexpr (A == Activation::tanh) return fast_tanh(z);
-  if constexpr (A == Activation::sigmoid) return 0.5f + 0.5f * fast_tanh(0.5f * z);
-  if constexpr (A == Activation::relu) return z > 0.0f ? z : splat(0.0f);
-  if constexpr (A == Activation::leaky_relu) return z > 0.0f ? z : slope * z;
-  return z;
-}
-template <Activation A>
-SN_INLINE v8 act_grad(const v8& a, float slope) {
-  if constexpr (A == Activation::tanh) return 1.0f - a * a;
-  if constexpr (A == Activation::sigmoid) return a * (1.0f - a);
-  if constexpr (A == Activation::relu) return a > 0.0f ? splat(1.0f) : splat(0.0f);
-  if constexpr (A == Activation::leaky_relu) return a > 0.0f ? splat(1.0f) : splat(slope);
-  return splat(1.0f);
-}
-// The output layer's activation is chosen per neuron at run time (few neurons, cheap).
-SN_INLINE v8 act_any(Activation a, const v8& z, float slope) {
-  switch (a) {
-    case Activation::tanh: return act<Activation::tanh>(z, slope);
-    case Activation::sigmoid: return act<Activation::sigmoid>(z, slope);
-    case Activation::relu: return act<Activation::relu>(z, slope);
-    case Activation::leaky_relu: return act<Activation::leaky_relu>(z, slope);
-    default: return z;
-  }
-}
-SN_INLINE v8 act_grad_any(Activation a, const v8& y, float slope) {
-  switch (a) {
-    case Activation::tanh: return act_grad<Activation::tanh>(y, slope);
-    case Activation::sigmoid: return act_grad<Activation::sigmoid>(y, slope);
-    case Activation::relu: return act_grad<Activation::relu>(y, slope);
-    case Activation::leaky_relu: return act_grad<Activation::leaky_relu>(y, slope);
-    default: return splat(1.0f);
-  }
-}
 
 }  // namespace
 
@@ -100,15 +40,21 @@ struct CpuNet::Layout {
   std::size_t aoff[kMaxHidden + 2] = {};  // activations of layer l (width(l) x 8), from o_act
   std::size_t toff[kMaxHidden + 1] = {};  // transposed activations (8 x inpad), from o_at
   int maxw = 0;
-  std::size_t o_p[2] = {}, o_m = 0, o_v = 0, o_g = 0, o_act = 0, o_at = 0, o_d[2] = {}, total = 0;
-  Activation hidden = Activation::tanh, output = Activation::linear;
-  float slope = 0;
+  // o_dz: f'(z) of every unit, same offsets as the activations (stored by a training forward
+  // pass for hidden kinds that need z, and for the output layer).
+  std::size_t o_p[2] = {}, o_m = 0, o_v = 0, o_g = 0, o_act = 0, o_dz = 0, o_at = 0, o_d[2] = {}, total = 0;
+  int hidden = int(Builtin::tanh), output = int(Builtin::linear);  // Builtin ids (SIMD code)
+  float hp = 0, op = 0;  // their parameters
 
   explicit Layout(const MlpSpec& s) {
     L = s.layers();
-    hidden = s.activation;
-    output = s.output_activation;
-    slope = float(s.slope);
+    hidden = activation_def(s.activation).simd;
+    output = activation_def(s.output_activation).simd;
+    if (hidden < 0 || output < 0)
+      throw std::invalid_argument("activation '" + std::string(activation_name(hidden < 0 ? s.activation : s.output_activation)) +
+                                  "' has no cpu code: train it with backend = \"gl\"");
+    hp = float(s.param(s.activation));
+    op = float(s.param(s.output_activation));
     maxw = s.max_width();
     std::size_t at = 0, a = 0;
     for (int l = 0; l < L; ++l) {
@@ -129,6 +75,7 @@ struct CpuNet::Layout {
     std::size_t o = 0;
     for (auto* f : {&o_p[0], &o_p[1], &o_m, &o_v, &o_g}) *f = o, o += P;
     o_act = o, o += a;
+    o_dz = o, o += a;
     o_at = o, o += at;
     o_d[0] = o, o += d;
     o_d[1] = o, o += d;
@@ -148,6 +95,7 @@ struct View {
   float* p() const { return base + S.o_p[cur]; }
   float* pnext() const { return base + S.o_p[cur ^ 1]; }
   v8* act(int l) const { return reinterpret_cast<v8*>(base + S.o_act + S.aoff[l]); }
+  v8* dz(int l) const { return reinterpret_cast<v8*>(base + S.o_dz + S.aoff[l]); }
   float* at(int l) const { return base + S.o_at + S.toff[l]; }
   v8* d(int k) const { return reinterpret_cast<v8*>(base + S.o_d[k]); }
 };
@@ -240,7 +188,9 @@ SN_INLINE void gather_inputs(const View& V, const float* x, const uint32_t* rows
   }
 }
 
-template <Activation H>
+// The forward pass; kTrain also stores f'(z) where backpropagation needs it: for hidden kinds
+// whose derivative does not follow from a (sine, gelu, swish), and for a non-linear output layer.
+template <int H, bool kTrain = false>
 SN_INLINE void forward_block(const View& V) {
   const Layout& S = V.S;
   const float* p = V.p();
@@ -248,10 +198,55 @@ SN_INLINE void forward_block(const View& V) {
     v8* z = V.act(l + 1);
     in_groups<Forward>(S.out[l], p + S.woff[l], S.inpad[l], p + S.boff[l], S.in[l], V.act(l), z);
     if (l + 1 < S.L) {
-      for (int o = 0; o < S.out[l]; ++o) z[o] = act<H>(z[o], S.slope);
-    } else if (S.output != Activation::linear) {
-      for (int o = 0; o < S.out[l]; ++o) z[o] = act_any(S.output, z[o], S.slope);
+      if constexpr (kTrain && !kFromOutput<H>) {
+        v8* g = V.dz(l + 1);
+        for (int o = 0; o < S.out[l]; ++o) act_both<H>(z[o], S.hp, z[o], g[o]);
+      } else {
+        for (int o = 0; o < S.out[l]; ++o) z[o] = act<H>(z[o], S.hp);
+      }
+    } else if (kTrain && S.output != int(Builtin::linear)) {
+      v8* g = V.dz(l + 1);
+      for (int o = 0; o < S.out[l]; ++o) act_both_any(S.output, z[o], S.op, z[o], g[o]);
+    } else if (S.output != int(Builtin::linear)) {
+      for (int o = 0; o < S.out[l]; ++o) z[o] = act_any(S.output, z[o], S.op);
     }
+  }
+}
+
+// f'(z) of unit vector i of hidden width block l, after a training forward pass.
+template <int H>
+SN_INLINE v8 hidden_grad(const View& V, int l, int i) {
+  if constexpr (kFromOutput<H>) return act_grad_a<H>(V.act(l)[i], V.S.hp);
+  return V.dz(l)[i];
+}
+
+// The loss of nn/loss.h per lane (lv) and its derivative by the prediction (lg), for the error
+// e (0 in dead lanes) and the target t.
+struct LossArgs {
+  LossKind kind;
+  float delta;
+};
+SN_INLINE void loss_both(const LossArgs& L, const v8& e, const v8& t, v8& lv, v8& lg) {
+  switch (L.kind) {
+    case LossKind::l1:
+      lv = select(e < 0.0f, -e, e);
+      lg = select(e > 0.0f, splat(1.0f), select(e < 0.0f, splat(-1.0f), splat(0.0f)));
+      break;
+    case LossKind::relative_l2: {
+      const v8 inv = 1.0f / (t * t + float(kRelativeL2Eps));
+      lv = e * e * inv;
+      lg = 2.0f * e * inv;
+      break;
+    }
+    case LossKind::huber: {
+      const v8 a = select(e < 0.0f, -e, e), d = splat(L.delta);
+      lv = select(a <= d, 0.5f * e * e, d * (a - 0.5f * d));  // NaN takes the second: stays NaN
+      lg = select(e > d, d, select(e < -d, -d, e));
+      break;
+    }
+    default:
+      lv = e * e;
+      lg = 2.0f * e;
   }
 }
 
@@ -266,29 +261,40 @@ SN_INLINE v8i lane_mask(int n) {
   return lanes < n;
 }
 
-template <class Isa, Activation H>
+template <class Isa, int H>
 SN_INLINE bool step_impl(const View& V, const float* x, const float* y, const uint32_t* rows, int batch, const AdamStep& c,
-               double* loss_out) {
+               const LossArgs& lf, double* loss_out) {
   const Layout& S = V.S;
   const float* p = V.p();
   float* g = V.base + S.o_g;
   std::memset(g, 0, S.P * sizeof(float));
   const int outputs = S.out[S.L - 1];
-  const float scale = 2.0f / float(batch * outputs);
+  const float scale = 2.0f / float(batch * outputs);  // l2's: d mean(e^2) / d y'
+  const float mean = 1.0f / float(batch * outputs);
   v8 sq = splat(0.0f);
   for (int first = 0; first < batch; first += kLanes) {
     const int n = batch - first < kLanes ? batch - first : kLanes;
     gather_inputs(V, x, rows, std::size_t(first), n);
-    forward_block<H>(V);
-    // Output error: d = dMSE/dy' * act'(y').
+    forward_block<H, true>(V);
+    // Output error: d = dloss/dy' * act'(y').
     const v8i mask = lane_mask(n);
     v8* d = V.d(0);
     const v8* yhat = V.act(S.L);
     for (int o = 0; o < outputs; ++o) {
-      v8 diff = yhat[o] - gather_target(y, outputs, o, rows, std::size_t(first), n);
+      const v8 t = gather_target(y, outputs, o, rows, std::size_t(first), n);
+      v8 diff = yhat[o] - t;
       diff = mask ? diff : splat(0.0f);
-      sq += diff * diff;
-      d[o] = (scale * diff) * act_grad_any(S.output, yhat[o], S.slope);
+      v8 g;
+      if (lf.kind == LossKind::l2) {
+        sq += diff * diff;
+        g = scale * diff;
+      } else {
+        v8 lv, lg;
+        loss_both(lf, diff, t, lv, lg);
+        sq += lv;
+        g = mean * lg;
+      }
+      d[o] = S.output == int(Builtin::linear) ? g : g * V.dz(S.L)[o];
     }
     int cur = 0;
     for (int l = S.L - 1; l >= 0; --l) {
@@ -305,8 +311,7 @@ SN_INLINE bool step_impl(const View& V, const float* x, const float* y, const ui
       if (l == 0) break;
       v8* prev = V.d(cur ^ 1);
       in_groups<Backward>(in, p + S.woff[l], inpad, out, dl, prev);
-      const v8* al = V.act(l);
-      for (int i = 0; i < in; ++i) prev[i] *= act_grad<H>(al[i], S.slope);
+      for (int i = 0; i < in; ++i) prev[i] *= hidden_grad<H>(V, l, i);
       cur ^= 1;
     }
   }
@@ -335,8 +340,8 @@ SN_INLINE bool step_impl(const View& V, const float* x, const float* y, const ui
   return hsum(bad) == 0.0f;
 }
 
-template <Activation H>
-SN_INLINE double mse_impl(const View& V, const float* x, const float* y, std::size_t count) {
+template <int H>
+SN_INLINE double loss_impl(const View& V, const float* x, const float* y, std::size_t count, const LossArgs& lf) {
   const Layout& S = V.S;
   const int outputs = S.out[S.L - 1];
   double sum = 0;
@@ -348,16 +353,19 @@ SN_INLINE double mse_impl(const View& V, const float* x, const float* y, std::si
     const v8* yhat = V.act(S.L);
     v8 sq = splat(0.0f);
     for (int o = 0; o < outputs; ++o) {
-      v8 diff = yhat[o] - gather_target(y, outputs, o, nullptr, first, n);
+      const v8 t = gather_target(y, outputs, o, nullptr, first, n);
+      v8 diff = yhat[o] - t;
       diff = mask ? diff : splat(0.0f);
-      sq += diff * diff;
+      v8 lv, lg;
+      loss_both(lf, diff, t, lv, lg);
+      sq += lv;
     }
     sum += double(hsum(sq));
   }
   return count ? sum / (double(count) * outputs) : 0.0;
 }
 
-template <Activation H>
+template <int H>
 SN_INLINE void forward_impl(const View& V, const float* x, std::size_t count, float* out) {
   const Layout& S = V.S;
   const int outputs = S.out[S.L - 1];
@@ -371,7 +379,7 @@ SN_INLINE void forward_impl(const View& V, const float* x, std::size_t count, fl
   }
 }
 
-template <Activation H>
+template <int H>
 SN_INLINE void counts_impl(const View& V, const float* x, std::size_t count,
                            std::vector<std::vector<uint32_t>>& counts) {
   const Layout& S = V.S;
@@ -383,16 +391,20 @@ SN_INLINE void counts_impl(const View& V, const float* x, std::size_t count,
   for (std::size_t first = 0; first < count; first += kLanes) {
     const int n = count - first < std::size_t(kLanes) ? int(count - first) : kLanes;
     gather_inputs(V, x, nullptr, first, n);
-    forward_block<H>(V);
+    forward_block<H, true>(V);
     const v8i valid = lane_mask(n);
     std::size_t u = 0;
     for (int l = 1; l < S.L; ++l) {
       const v8* a = V.act(l);
       for (int i = 0; i < S.in[l]; ++i, ++u) {
         v8i hit;
-        if constexpr (H == Activation::tanh) hit = (a[i] > 0.99f) | (a[i] < -0.99f);
-        else if constexpr (H == Activation::sigmoid) hit = (a[i] < 0.01f) | (a[i] > 0.99f);
-        else hit = a[i] > 0.0f;
+        if constexpr (H == int(Builtin::tanh)) hit = (a[i] > 0.99f) | (a[i] < -0.99f);
+        else if constexpr (H == int(Builtin::sigmoid)) hit = (a[i] < 0.01f) | (a[i] > 0.99f);
+        else if constexpr (H == int(Builtin::relu) || H == int(Builtin::leaky_relu)) hit = a[i] > 0.0f;
+        else {
+          const v8 g = hidden_grad<H>(V, l, i);
+          hit = (g < 0.01f) & (g > -0.01f);  // flat: the unit passes (almost) no gradient
+        }
         v8i h;
         std::memcpy(&h, &hits[u * kLanes], sizeof h);
         h += hit & valid;  // comparisons give -1 per true lane
@@ -411,50 +423,74 @@ SN_INLINE void counts_impl(const View& V, const float* x, std::size_t count,
 }
 
 // The entry points per instruction set; everything above inlines into them.
-using StepFn = bool (*)(const View&, const float*, const float*, const uint32_t*, int, const AdamStep&, double*);
-using MseFn = double (*)(const View&, const float*, const float*, std::size_t);
+using StepFn = bool (*)(const View&, const float*, const float*, const uint32_t*, int, const AdamStep&, const LossArgs&,
+                        double*);
+using LossFn = double (*)(const View&, const float*, const float*, std::size_t, const LossArgs&);
 using ForwardFn = void (*)(const View&, const float*, std::size_t, float*);
 using CountsFn = void (*)(const View&, const float*, std::size_t, std::vector<std::vector<uint32_t>>&);
 
-template <Activation H>
+template <int H>
 __attribute__((target("avx2,fma"))) bool step_avx2(const View& V, const float* x, const float* y,
-                                                   const uint32_t* rows, int batch, const AdamStep& c, double* l) {
-  return step_impl<Avx2, H>(V, x, y, rows, batch, c, l);
+                                                   const uint32_t* rows, int batch, const AdamStep& c,
+                                                   const LossArgs& lf, double* l) {
+  return step_impl<Avx2, H>(V, x, y, rows, batch, c, lf, l);
 }
-template <Activation H>
-__attribute__((target("avx2,fma"))) double mse_avx2(const View& V, const float* x, const float* y, std::size_t n) {
-  return mse_impl<H>(V, x, y, n);
+template <int H>
+__attribute__((target("avx2,fma"))) double loss_avx2(const View& V, const float* x, const float* y, std::size_t n,
+                                                     const LossArgs& lf) {
+  return loss_impl<H>(V, x, y, n, lf);
 }
-template <Activation H>
+template <int H>
 __attribute__((target("avx2,fma"))) void forward_avx2(const View& V, const float* x, std::size_t n, float* out) {
   forward_impl<H>(V, x, n, out);
 }
-template <Activation H>
+template <int H>
 __attribute__((target("avx2,fma"))) void counts_avx2(const View& V, const float* x, std::size_t n,
                                                      std::vector<std::vector<uint32_t>>& counts) {
   counts_impl<H>(V, x, n, counts);
 }
-template <Activation H>
+template <int H>
 void counts_sse2(const View& V, const float* x, std::size_t n, std::vector<std::vector<uint32_t>>& counts) {
   counts_impl<H>(V, x, n, counts);
 }
-template <Activation H>
+template <int H>
 bool step_sse2(const View& V, const float* x, const float* y, const uint32_t* rows, int batch, const AdamStep& c,
-               double* l) {
-  return step_impl<Sse2, H>(V, x, y, rows, batch, c, l);
+               const LossArgs& lf, double* l) {
+  return step_impl<Sse2, H>(V, x, y, rows, batch, c, lf, l);
+}
+
+template <int K>
+SN_INLINE void activation_impl(float p, const float* z, std::size_t n, float* f, float* df) {
+  for (std::size_t i = 0; i < n; i += kLanes) {
+    v8 zv = splat(0.0f);
+    for (std::size_t k = 0; k < kLanes && i + k < n; ++k) zv[k] = z[i + k];
+    v8 a, g;
+    act_both<K>(zv, p, a, g);
+    const v8 a_only = act<K>(zv, p);
+    if constexpr (kFromOutput<K>) g = act_grad_a<K>(a_only, p);
+    for (std::size_t k = 0; k < kLanes && i + k < n; ++k) f[i + k] = a_only[k], df[i + k] = g[k];
+  }
+}
+template <int K>
+__attribute__((target("avx2,fma"))) void activation_avx2(float p, const float* z, std::size_t n, float* f, float* df) {
+  activation_impl<K>(p, z, n, f, df);
+}
+template <int K>
+void activation_sse2(float p, const float* z, std::size_t n, float* f, float* df) {
+  activation_impl<K>(p, z, n, f, df);
 }
 
 struct Kernels {
   StepFn step;
-  MseFn mse;
+  LossFn loss;
   ForwardFn forward;
   CountsFn counts;
 };
 
-template <Activation H>
+template <int H>
 Kernels kernels_for(bool avx2) {
-  if (avx2) return {step_avx2<H>, mse_avx2<H>, forward_avx2<H>, counts_avx2<H>};
-  return {step_sse2<H>, mse_impl<H>, forward_impl<H>, counts_sse2<H>};
+  if (avx2) return {step_avx2<H>, loss_avx2<H>, forward_avx2<H>, counts_avx2<H>};
+  return {step_sse2<H>, loss_impl<H>, forward_impl<H>, counts_sse2<H>};
 }
 
 bool cpu_has_avx2() {
@@ -471,17 +507,24 @@ std::atomic<bool>& avx2_flag() {
 }
 bool use_avx2() { return avx2_flag().load(std::memory_order_relaxed); }
 
-Kernels kernels(Activation hidden) {
+Kernels kernels(int hidden) {
   const bool avx2 = use_avx2();
-  switch (hidden) {
-    case Activation::sigmoid: return kernels_for<Activation::sigmoid>(avx2);
-    case Activation::relu: return kernels_for<Activation::relu>(avx2);
-    case Activation::leaky_relu: return kernels_for<Activation::leaky_relu>(avx2);
-    default: return kernels_for<Activation::tanh>(avx2);
-  }
+  Kernels k{};
+  with_builtin(hidden, [&](auto h) { k = kernels_for<decltype(h)::value>(avx2); });
+  return k;
 }
 
 }  // namespace
+
+void cpu_activation(Activation a, float param, const float* z, std::size_t n, float* f, float* df) {
+  const int kind = activation_def(a).simd;
+  if (kind < 0) throw std::invalid_argument(std::string("activation '") + activation_name(a) + "' has no cpu code");
+  const bool avx2 = use_avx2();
+  with_builtin(kind, [&](auto k) {
+    constexpr int K = decltype(k)::value;
+    (avx2 ? activation_avx2<K> : activation_sse2<K>)(param, z, n, f, df);
+  });
+}
 
 AdamStep AdamStep::at(const TrainConfig& cfg, long long t) {
   AdamStep s;
@@ -545,13 +588,18 @@ void CpuNet::get_gradient(float* flat) const { unpack(spec_, *layout_, arena_ + 
 bool CpuNet::step(const float* x, const float* y, const uint32_t* rows, int batch, const AdamStep& adam,
                   double* loss) {
   const View V{*layout_, arena_, cur_};
-  if (!kernels(layout_->hidden).step(V, x, y, rows, batch, adam, loss)) return false;
+  if (!kernels(layout_->hidden).step(V, x, y, rows, batch, adam, LossArgs{loss_.kind, float(loss_.delta)}, loss))
+    return false;
   cur_ ^= 1;
   return true;
 }
 
 double CpuNet::mse(const float* x, const float* y, std::size_t count) {
-  return kernels(layout_->hidden).mse(View{*layout_, arena_, cur_}, x, y, count);
+  return kernels(layout_->hidden).loss(View{*layout_, arena_, cur_}, x, y, count, LossArgs{LossKind::l2, 1.0f});
+}
+
+double CpuNet::mean_loss(const float* x, const float* y, std::size_t count) {
+  return kernels(layout_->hidden).loss(View{*layout_, arena_, cur_}, x, y, count, LossArgs{loss_.kind, float(loss_.delta)});
 }
 
 void CpuNet::forward(const float* x, std::size_t count, float* out) {

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "nn/loss.h"
 #include "nn/mlp_spec.h"
 #include "nn/trainer.h"
 
@@ -26,6 +27,11 @@ const char* cpu_kernel_name();
 // Switches kernels (tests compare both with the oracle); throws when the CPU lacks it.
 void use_cpu_kernel(const std::string& name);
 
+// The SIMD code of built-in activation `a` in the kernel in use, over n pre-activations z (the
+// tests compare it with the double twins): f(z), and f'(z) as the backward pass gets it (from
+// f(z) where the activation allows, else as the forward pass stores it).
+void cpu_activation(Activation a, float param, const float* z, std::size_t n, float* f, float* df);
+
 class CpuNet {
  public:
   CpuNet(const MlpSpec& spec, const float* params);  // params in the shared flat layout
@@ -40,17 +46,22 @@ class CpuNet {
   // so the tests compare this directly with the oracle).
   void get_gradient(float* flat) const;
 
+  // The loss step() minimises (nn/loss.h; l2 until set).
+  void set_loss(const Loss& loss) { loss_ = loss; }
+
   // One Adam step on the minibatch of rows `rows[0..batch)` of x (inputs wide) and y (outputs
   // wide). Returns false, leaving the parameters as they were, when the loss or the new
-  // parameters are not finite. `loss` = the minibatch MSE before the update.
+  // parameters are not finite. `loss` = the minibatch's loss before the update.
   bool step(const float* x, const float* y, const uint32_t* rows, int batch, const AdamStep& adam, double* loss);
 
-  // MSE over `count` contiguous rows.
+  // MSE over `count` contiguous rows; mean_loss: the set loss over them.
   double mse(const float* x, const float* y, std::size_t count);
+  double mean_loss(const float* x, const float* y, std::size_t count);
   // Outputs for `count` contiguous rows (count x outputs floats).
   void forward(const float* x, std::size_t count, float* out);
   // Per hidden layer and unit, over `count` rows: how many samples had the unit active (relu,
-  // leaky_relu: output > 0) or saturated (tanh: |a| > 0.99; sigmoid: a < 0.01 or a > 0.99).
+  // leaky_relu: output > 0) or saturated (tanh: |a| > 0.99; sigmoid: a < 0.01 or a > 0.99; the
+  // other activations: flat, |f'(z)| < 0.01).
   std::vector<std::vector<uint32_t>> unit_counts(const float* x, std::size_t count);
 
   struct Layout;  // padded offsets, private to cpu_net.cpp
@@ -60,6 +71,7 @@ class CpuNet {
   std::unique_ptr<Layout> layout_;
   float* arena_ = nullptr;  // 64-byte aligned: params x2, m, v, grad, activations, scratch
   int cur_ = 0;             // which of the two parameter copies is current
+  Loss loss_;
 };
 
 }  // namespace sn::nn

@@ -47,6 +47,7 @@ class CpuBackend : public Backend {
     std::vector<NetResult> results(static_cast<std::size_t>(count));
     parallel_for(count, threads_, [&](int i) {
       work[i] = std::make_unique<CpuNet>(nets[i]->spec, nets[i]->params.data());
+      work[i]->set_loss(cfg.loss);
     });
 
     const uint32_t n = uint32_t(data.train_count());
@@ -76,14 +77,17 @@ class CpuBackend : public Backend {
           ++r.steps;
         }
         const double val = net.mse(data.val_x.data(), data.val_y.data(), data.val_count());
+        const double val_loss =
+            cfg.loss.kind == LossKind::l2 ? val : net.mean_loss(data.val_x.data(), data.val_y.data(), data.val_count());
         std::vector<float> p(net.spec().param_count());
         net.get_params(p.data());
-        r.end_epoch(sum / double(steps), val, p.data(), p.size());
+        r.end_epoch(cfg.loss, sum / double(steps), val, val_loss, p.data(), p.size());
         finished[i] = 1;
       });
       if (progress)
         for (int i = 0; i < count; ++i)
-          if (finished[i]) progress({i, e + 1, results[i].train_mse.back(), results[i].val_mse.back()});
+          if (finished[i])
+            progress({i, e + 1, results[i].train_loss.back(), results[i].val_mse.back(), results[i].val_loss.back()});
     }
     for (int i = 0; i < count; ++i) {
       results[i].final_params.resize(nets[i]->spec.param_count());

@@ -5,6 +5,8 @@
 namespace sn::nn {
 
 std::vector<double> dead_unit_fractions(const Mlp& net, const float* x, std::size_t count) {
+  // Counted by the cpu backend's kernels: a custom activation without them has no figure.
+  if (activation_def(net.spec.activation).simd < 0 || activation_def(net.spec.output_activation).simd < 0) return {};
   CpuNet work(net.spec, net.params.data());
   const auto counts = work.unit_counts(x, count);
   const bool relu_like = net.spec.activation == Activation::relu || net.spec.activation == Activation::leaky_relu;

@@ -45,11 +45,12 @@ void check_params(const MlpSpec& spec, const GlParams& p) {
 
 // Runs mlp_eval.comp over all rows in dispatches of at most kMaxGroupsPerDispatch workgroups.
 void run_eval(const MlpSpec& spec, bool loss, const GlParams& p, const gl::Buffer& x, const gl::Buffer* y,
-              gl::Buffer* out, gl::Buffer* partial, std::size_t rows) {
+              gl::Buffer* out, gl::Buffer* partial, std::size_t rows, const Loss& loss_fn = {}) {
   gl::ProgramDesc desc;
   desc.compute = "mlp_eval.comp";
   const int local = eval_local_size(spec, std::size_t(gl::current().info().max_shared_memory));
-  desc.defines = eval_defines(spec, loss, local);
+  desc.defines = eval_defines(spec, loss, local, loss_fn);
+  desc.includes = mlp_includes(spec);
   auto program = gl::get_program(desc);
   const std::size_t groups = (rows + std::size_t(local) - 1) / std::size_t(local);
   gl::Buffer cut(gl::ElemType::uint32, std::size_t(p.nets));
@@ -85,7 +86,7 @@ void gl_forward(const MlpSpec& spec, const GlParams& p, const gl::Buffer& x, std
 }
 
 std::vector<double> gl_squared_errors(const MlpSpec& spec, const GlParams& p, const gl::Buffer& x, const gl::Buffer& y,
-                                      std::size_t rows) {
+                                      std::size_t rows, const Loss& loss) {
   check_params(spec, p);
   std::vector<double> sums(std::size_t(p.nets), 0.0);
   if (rows == 0) return sums;
@@ -94,7 +95,7 @@ std::vector<double> gl_squared_errors(const MlpSpec& spec, const GlParams& p, co
   const int local = eval_local_size(spec, std::size_t(gl::current().info().max_shared_memory));
   const std::size_t groups = (rows + std::size_t(local) - 1) / std::size_t(local);
   gl::Buffer partial(gl::ElemType::uint32, 2 * groups * std::size_t(p.nets));  // doubles
-  run_eval(spec, true, p, x, &y, nullptr, &partial, rows);
+  run_eval(spec, true, p, x, &y, nullptr, &partial, rows, loss);
   std::vector<double> part(groups * std::size_t(p.nets));
   partial.download(part.data(), 0, 2 * part.size());
   for (int n = 0; n < p.nets; ++n)

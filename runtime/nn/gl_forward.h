@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "gl/buffer.h"
+#include "nn/loss.h"
 #include "nn/mlp.h"
 
 namespace sn::nn {
@@ -24,9 +25,10 @@ struct GlParams {
 // loop limit cut a forward pass short (the network is too large for llvmpipe).
 void gl_forward(const MlpSpec& spec, const GlParams& params, const gl::Buffer& x, std::size_t rows, gl::Buffer& out);
 
-// Per network: the sum over rows and outputs of (net(x) - y)^2, in double.
+// Per network: the sum over rows and outputs of (net(x) - y)^2, in double; with `loss`, of that
+// loss of net(x) - y (nn/loss.h).
 std::vector<double> gl_squared_errors(const MlpSpec& spec, const GlParams& params, const gl::Buffer& x,
-                                      const gl::Buffer& y, std::size_t rows);
+                                      const gl::Buffer& y, std::size_t rows, const Loss& loss = {});
 
 // One network over host rows (rows x net.spec.inputs floats): its outputs, rows x outputs.
 std::vector<float> gl_forward(const Mlp& net, const std::vector<float>& x);

@@ -170,7 +170,8 @@ class Job {
                                                  "per-network kernel reads"));
       gl::ProgramDesc desc;
       desc.compute = g.layout.per_net ? "mlp_train_per_net.comp" : "mlp_train.comp";
-      desc.defines = train_defines(g.spec, cfg_.batch, g.layout);
+      desc.defines = train_defines(g.spec, cfg_.batch, g.layout, cfg_.loss);
+      desc.includes = mlp_includes(g.spec);
       g.program = gl::get_program(desc);
       g.state = std::make_unique<gl::Buffer>(gl::ElemType::vec4, gl::texture_buffer_size(3 * PQ * n));  // params, m = 0, v = 0
       for (std::size_t k = 0; k < n; ++k) {
@@ -347,10 +348,12 @@ class Job {
     const std::size_t val_rows = data_.val_count();
     for (Group& g : groups_) {
       const std::size_t PQ = padded_chunks(g.spec);
-      std::vector<double> sums(g.runs.size(), 0.0);
-      if (val_rows)
-        sums = gl_squared_errors(g.spec, GlParams{g.state.get(), 0, 3 * PQ, int(g.runs.size())}, *buf_.val_x,
-                                 *buf_.val_y, val_rows);
+      std::vector<double> sums(g.runs.size(), 0.0), loss_sums;
+      const GlParams params{g.state.get(), 0, 3 * PQ, int(g.runs.size())};
+      if (val_rows) sums = gl_squared_errors(g.spec, params, *buf_.val_x, *buf_.val_y, val_rows);
+      // The run's own loss too, unless it is the MSE.
+      if (val_rows && cfg_.loss.kind != LossKind::l2)
+        loss_sums = gl_squared_errors(g.spec, params, *buf_.val_x, *buf_.val_y, val_rows, cfg_.loss);
       for (std::size_t k = 0; k < g.runs.size(); ++k) {
         NetRun& r = g.runs[k];
         if (!r.active) continue;
@@ -358,11 +361,12 @@ class Job {
         const double denom = double(steps_) * cfg_.batch * g.spec.outputs;
         const double train = r.loss_sum / denom;
         const double val = val_rows ? sums[k] / (double(val_rows) * g.spec.outputs) : 0.0;
-        std::vector<float> params = download_params(g, k);
-        results_[std::size_t(r.index)].end_epoch(train, val, params.data(), params.size());
+        const double val_loss = loss_sums.empty() ? val : loss_sums[k] / (double(val_rows) * g.spec.outputs);
+        std::vector<float> p = download_params(g, k);
+        results_[std::size_t(r.index)].end_epoch(cfg_.loss, train, val, val_loss, p.data(), p.size());
         r.step = 0;
         r.loss_sum = 0;
-        if (progress) progress(ProgressEvent{r.index, e + 1, train, val});
+        if (progress) progress(ProgressEvent{r.index, e + 1, train, val, val_loss});
       }
     }
     return any_active;

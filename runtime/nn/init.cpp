@@ -23,6 +23,7 @@ std::vector<float> init_params(const MlpSpec& spec, Init init, uint64_t seed) {
   for (int l = 0; l < spec.layers(); ++l) {
     int in = spec.width(l), out = spec.width(l + 1);
     double limit = std::sqrt(6.0 / (init == Init::xavier ? in + out : in));
+    if (init == Init::siren) limit = l == 0 ? 1.0 / in : std::sqrt(6.0 / in) / spec.omega;
     std::size_t off = spec.weight_offset(l);
     for (std::size_t j = 0; j < std::size_t(in) * out; ++j)
       p[off + j] = float((2.0 * uniform01(seed, off + j) - 1.0) * limit);

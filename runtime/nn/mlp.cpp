@@ -6,12 +6,13 @@
 
 namespace sn::nn {
 
-const char* init_name(Init i) { return i == Init::xavier ? "xavier" : "he"; }
+const char* init_name(Init i) { return i == Init::xavier ? "xavier" : i == Init::he ? "he" : "siren"; }
 
 Init parse_init(const std::string& name) {
   if (name == "xavier") return Init::xavier;
   if (name == "he") return Init::he;
-  throw std::invalid_argument("unknown init '" + name + "' (valid: xavier, he)");
+  if (name == "siren") return Init::siren;
+  throw std::invalid_argument("unknown init '" + name + "' (valid: xavier, he, siren)");
 }
 
 Mlp::Mlp(const MlpSpec& s, Init init, uint64_t seed) : spec(s) {

@@ -10,9 +10,9 @@
 
 namespace sn::nn {
 
-enum class Init { xavier, he };
+enum class Init { xavier, he, siren };
 const char* init_name(Init i);
-Init parse_init(const std::string& name);  // "xavier" | "he"; throws listing the valid names
+Init parse_init(const std::string& name);  // "xavier" | "he" | "siren"; throws listing the valid names
 
 // An input that is a lighting-model parameter (a network conditioned on it, trained on a dataset
 // that varied it per row): its training range, and the value it takes when the network renders

@@ -23,7 +23,8 @@ std::string masked(const std::string& value, int q, int width) {
 struct Layer {
   int in, out, in4, out4;
   std::size_t wq, bq, ui, uo;  // weights, biases (parameter vec4s); input and output units (unit vec4s)
-  const char* act;
+  const char* act;             // the activation's define prefix (shaders/include/mlp/activation.glsl)
+  bool keeps_grad;             // its derivative needs z: the forward pass keeps f'(z) in r_d
 };
 
 Layer layer(const MlpSpec& s, int l) {
@@ -35,7 +36,8 @@ Layer layer(const MlpSpec& s, int l) {
                padded_bias_chunk(s, l),
                unit_chunk(s, l),
                unit_chunk(s, l + 1),
-               l == s.layers() - 1 ? "MLP_OUT_ACT" : "MLP_ACT"};
+               l == s.layers() - 1 ? "MLP_OUT_ACT" : "MLP_ACT",
+               activation_def(l == s.layers() - 1 ? s.output_activation : s.activation).grad_from_output.empty()};
 }
 
 std::string p(std::size_t k) { return "r_p[" + i(k) + "]"; }
@@ -89,8 +91,9 @@ std::string forward(const MlpSpec& s) {
           out += (q ? " + " : "") + ("dot(" + p(row + std::size_t(q)) + ", " + a(L.ui + std::size_t(q)) + ")");
         out += ";";
       }
-      out += " " + a(L.uo + std::size_t(jq)) + " = " + masked("mlp_activate(" + std::string(L.act) + ", z)", jq, L.out) +
-             "; } ";
+      out += " " + a(L.uo + std::size_t(jq)) + " = " + masked(std::string(L.act) + "_F(z)", jq, L.out) + ";";
+      if (L.keeps_grad) out += " " + d(L.uo + std::size_t(jq)) + " = " + masked(std::string(L.act) + "_GRAD_Z(z)", jq, L.out) + ";";
+      out += " } ";
     }
   }
   return out;
@@ -101,14 +104,15 @@ std::string output_deltas(const MlpSpec& s, int batch) {
   const std::size_t first = unit_chunk(s, s.layers());
   for (int q = 0; q < chunks4(s.outputs); ++q) {
     const std::string y = a(first + std::size_t(q));
-    out += "{ vec4 e = " + y + " - " + row_vec4("u_train_y", s.outputs, q) + "; loss += dot(e, e); ";
-    out += "vec4 dq = (2.0 / " + i(std::size_t(batch * s.outputs)) + ".0) * e * mlp_activate_grad(MLP_OUT_ACT, " + y +
-           "); ok = ok && mlp_finite(dq); " + d(first + std::size_t(q)) + " = dq; } ";
+    out += "{ vec4 t = " + row_vec4("u_train_y", s.outputs, q) + "; vec4 e = " + y + " - t; loss += dot(mlp_loss(e, t), vec4(1.0)); ";
+    out += "vec4 dq = (1.0 / " + i(std::size_t(batch * s.outputs)) + ".0) * mlp_loss_grad(e, t) * MLP_OUT_ACT_DERIV(" + y + ", " +
+           d(first + std::size_t(q)) + "); ok = ok && mlp_finite(dq); " + d(first + std::size_t(q)) + " = dq; } ";
   }
   return out;
 }
 
-// delta_i = f'(a_i) * sum_j W[j][i] delta_j, rows in order, last layer first (not the first layer).
+// delta_i = f'(z_i) * sum_j W[j][i] delta_j, rows in order, last layer first (not the first layer);
+// f'(z_i) from the unit's output, or what the forward pass kept in its delta slot.
 std::string backward(const MlpSpec& s) {
   std::string out;
   for (int l = s.layers() - 1; l >= 1; --l) {
@@ -118,7 +122,7 @@ std::string backward(const MlpSpec& s) {
       out += dq + " = (";
       for (int j = 0; j < L.out; ++j)
         out += (j ? " + " : "") + p(L.wq + std::size_t(j * L.in4 + q)) + " * " + d_unit(L.uo, j);
-      out += ") * mlp_activate_grad(MLP_ACT, " + a(L.ui + std::size_t(q)) + "); ok = ok && mlp_finite(" + dq + "); ";
+      out += ") * MLP_ACT_DERIV(" + a(L.ui + std::size_t(q)) + ", " + dq + "); ok = ok && mlp_finite(" + dq + "); ";
     }
   }
   return out;

@@ -128,6 +128,7 @@ void draw_mlp(const std::shared_ptr<const Mlp>& net, const scene::GBuffer& g, gl
   desc.vertex = "fullscreen.vert";
   desc.fragment = "mlp_shade.frag";
   desc.defines = mlp_defines(net->spec);
+  desc.includes = mlp_includes(net->spec);
   const std::vector<std::string> attributes = attributes_of(*net);
   desc.defines["MLP_ATTRS"] = std::to_string(attributes.size());
   desc.defines["MLP_GATHER_INPUTS"] = gather_inputs(*net);

@@ -120,9 +120,16 @@ gl::Defines mlp_defines(const MlpSpec& s) {
   d["MLP_UQ"] = num(unit_chunks(s));
   d["MLP_OUT_UQ"] = num(unit_chunk(s, s.layers()));
   d["MLP_MAX_WIDTH"] = num(s.max_width());
-  d["MLP_ACT"] = num(int(s.activation));
-  d["MLP_OUT_ACT"] = num(int(s.output_activation));
-  d["MLP_SLOPE"] = float_literal(s.slope);
+  auto activation = [&](const std::string& prefix, Activation a) {
+    const std::string fn = activation_glsl_function(a), p = float_literal(s.param(a));
+    d[prefix + "_F(z)"] = fn + "(z, " + p + ")";
+    d[prefix + "_GRAD_Z(z)"] = fn + "_grad(z, " + p + ")";
+    const bool from_output = !activation_def(a).grad_from_output.empty();
+    d[prefix + "_FROM_OUTPUT"] = from_output ? "1" : "0";
+    if (from_output) d[prefix + "_GRAD_A(a)"] = fn + "_grad_a(a, " + p + ")";
+  };
+  activation("MLP_ACT", s.activation);
+  activation("MLP_OUT_ACT", s.output_activation);
   d["MLP_COLOR"] = num(int(s.color));
   const std::vector<Run> runs = layer_runs(s);
   std::string fwd, rev, inner_rev;
@@ -135,6 +142,13 @@ gl::Defines mlp_defines(const MlpSpec& s) {
   d["MLP_RUN_TABLE_REVERSED(X)"] = rev;
   d["MLP_INNER_RUN_TABLE_REVERSED(X)"] = inner_rev;
   return d;
+}
+
+gl::Includes mlp_includes(const MlpSpec& s) {
+  gl::Includes src;
+  src["mlp/act_hidden.glsl"] = activation_glsl_source(s.activation);
+  src["mlp/act_output.glsl"] = s.output_activation == s.activation ? "" : activation_glsl_source(s.output_activation);
+  return src;
 }
 
 std::string TrainLayout::describe() const {
@@ -175,8 +189,16 @@ TrainLayout plan_train_layout(const MlpSpec& spec, int batch, std::size_t max_sh
   return t;
 }
 
-gl::Defines train_defines(const MlpSpec& spec, int batch, const TrainLayout& t) {
+namespace {
+void loss_defines(gl::Defines& d, const Loss& loss) {
+  d["MLP_LOSS"] = num(std::size_t(loss.kind));
+  d["MLP_LOSS_DELTA"] = float_literal(loss.delta);
+}
+}  // namespace
+
+gl::Defines train_defines(const MlpSpec& spec, int batch, const TrainLayout& t, const Loss& loss) {
   gl::Defines d = mlp_defines(spec);
+  loss_defines(d, loss);
   d["MLP_BATCH"] = num(std::size_t(batch));
   d["MLP_PARAMS_SHARED"] = t.params_shared ? "1" : "0";
   d["MLP_MOMENTS_SHARED"] = t.moments_shared ? "1" : "0";
@@ -195,8 +217,9 @@ int eval_local_size(const MlpSpec& spec, std::size_t max_shared) {
   return n;
 }
 
-gl::Defines eval_defines(const MlpSpec& spec, bool loss_mode, int local_size) {
+gl::Defines eval_defines(const MlpSpec& spec, bool loss_mode, int local_size, const Loss& loss) {
   gl::Defines d = mlp_defines(spec);
+  loss_defines(d, loss);
   d["MLP_EVAL_LOSS"] = loss_mode ? "1" : "0";
   d["MLP_EVAL_LOCAL_SIZE"] = num(std::size_t(local_size));
   return d;

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "gl/shader_source.h"
+#include "nn/loss.h"
 #include "nn/mlp_spec.h"
 
 namespace sn::nn {
@@ -40,8 +41,10 @@ void unpack_padded(const MlpSpec& spec, const float* padded, float* flat);
 
 // Architecture defines shared by every mlp shader:
 //   MLP_IN, MLP_OUT, MLP_LAYERS, MLP_PARAMS (flat floats), MLP_PQ (padded vec4s), MLP_UQ (unit
-//   vec4s), MLP_IN4, MLP_OUT4, MLP_OUT_UQ (first vec4 of the outputs), MLP_MAX_WIDTH, MLP_ACT,
-//   MLP_OUT_ACT, MLP_SLOPE, MLP_COLOR, and MLP_RUN_TABLE(X) / MLP_RUN_TABLE_REVERSED(X)
+//   vec4s), MLP_IN4, MLP_OUT4, MLP_OUT_UQ (first vec4 of the outputs), MLP_MAX_WIDTH, MLP_COLOR,
+//   the activations (MLP_ACT_F(z), MLP_ACT_GRAD_Z(z), MLP_ACT_FROM_OUTPUT, MLP_ACT_GRAD_A(a) and
+//   the same with MLP_OUT_ACT_ for the output layer: shaders/include/mlp/activation.glsl),
+//   and MLP_RUN_TABLE(X) / MLP_RUN_TABLE_REVERSED(X)
 //   expanding to X(first_layer, count, in, out, in4, out4, weight_chunk, unit_in, q) per run of
 //   equal layers: layer first_layer + k has its weights at vec4 weight_chunk + k*(out*in4 + out4),
 //   its biases out*in4 vec4s later, its input units at vec4 unit_in + k*in4 and its outputs in4
@@ -49,6 +52,9 @@ void unpack_padded(const MlpSpec& spec, const float* padded, float* flat);
 //   layer's loop rolled (shaders declare `uniform int u_zero`). MLP_INNER_RUN_TABLE_REVERSED(X)
 //   lists the runs backpropagation passes through (all but the first layer's), last first.
 gl::Defines mlp_defines(const MlpSpec& spec);
+// The in-memory #includes (gl::Includes) every mlp shader needs with mlp_defines: the GLSL of the network's
+// activations from the registry (mlp/act_hidden.glsl, mlp/act_output.glsl).
+gl::Includes mlp_includes(const MlpSpec& spec);
 
 // Which fused training kernel and where it keeps each array. With `per_net` allowed (a CPU
 // renderer) a small network trains in an invocation of its own, everything in registers
@@ -66,12 +72,13 @@ struct TrainLayout {
 TrainLayout plan_train_layout(const MlpSpec& spec, int batch, std::size_t max_shared_bytes, bool per_net);
 
 // mlp_defines plus the kernel's batch and layout (the cache key of its program).
-gl::Defines train_defines(const MlpSpec& spec, int batch, const TrainLayout& layout);
+gl::Defines train_defines(const MlpSpec& spec, int batch, const TrainLayout& layout, const Loss& loss);
 
 // mlp_defines plus mlp_eval.comp's mode: "loss" (sums of squared errors per workgroup) or
 // "output" (the outputs per row).
 // Rows per workgroup: 8 (one SIMD vector of llvmpipe) unless their units do not fit in shared memory.
 int eval_local_size(const MlpSpec& spec, std::size_t max_shared_bytes);
-gl::Defines eval_defines(const MlpSpec& spec, bool loss_mode, int local_size);
+// In loss mode the sums are of `loss` (nn/loss.h) instead of squared errors.
+gl::Defines eval_defines(const MlpSpec& spec, bool loss_mode, int local_size, const Loss& loss = {});
 
 }  // namespace sn::nn

@@ -1,20 +1,27 @@
 #include "nn/mlp_spec.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <stdexcept>
 
 namespace sn::nn {
 
 namespace {
-const char* kActivations[] = {"linear", "tanh", "sigmoid", "relu", "leaky_relu"};
+// "%g" of a parameter, as describe() writes it.
+std::string short_number(double v) {
+  char buf[32];
+  snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
 }  // namespace
 
-const char* activation_name(Activation a) { return kActivations[int(a)]; }
-
-Activation parse_activation(const std::string& name) {
-  for (int i = 0; i < 5; ++i)
-    if (name == kActivations[i]) return Activation(i);
-  throw std::invalid_argument("unknown activation '" + name + "' (valid: linear, tanh, sigmoid, relu, leaky_relu)");
+double MlpSpec::param(Activation a) const {
+  switch (activation_def(a).param) {
+    case ActivationParam::slope: return slope;
+    case ActivationParam::omega: return omega;
+    case ActivationParam::alpha: return alpha;
+    default: return 0.0;
+  }
 }
 
 int MlpSpec::width(int i) const {
@@ -52,9 +59,19 @@ void MlpSpec::validate() const {
   range("number of hidden layers", int(hidden.size()), 1, kMaxHidden);
   for (size_t i = 0; i < hidden.size(); ++i)
     range("hidden layer " + std::to_string(i + 1) + " width", hidden[i], 1, kMaxWidth);
-  if (activation == Activation::linear) throw std::invalid_argument("hidden activation cannot be linear");
-  if (activation == Activation::leaky_relu && !(slope > 0 && slope < 1))
-    throw std::invalid_argument("leaky_relu slope a must be in (0, 1), got " + std::to_string(slope));
+  if (!activation_def(activation).hidden)
+    parse_activation(activation_name(activation), Position::hidden);  // throws listing the valid ones
+  if (!activation_def(output_activation).output)
+    parse_activation(activation_name(output_activation), Position::output, "output_activation");
+  for (Activation a : {activation, output_activation}) {
+    const ActivationParam p = activation_def(a).param;
+    if (p == ActivationParam::slope && !(slope > 0 && slope < 1))
+      throw std::invalid_argument("leaky_relu slope a must be in (0, 1), got " + short_number(slope));
+    if (p == ActivationParam::omega && !(omega > 0 && omega <= 1e4))
+      throw std::invalid_argument("sine omega must be in (0, 10000], got " + short_number(omega));
+    if (p == ActivationParam::alpha && !(alpha > 0 && alpha <= 1e3))
+      throw std::invalid_argument("elu alpha must be in (0, 1000], got " + short_number(alpha));
+  }
 }
 
 std::string MlpSpec::describe() const {
@@ -67,19 +84,20 @@ std::string MlpSpec::describe() const {
     i = j;
   }
   s += " -> " + std::to_string(outputs) + ", " + activation_name(activation);
-  if (activation == Activation::leaky_relu) {
-    char buf[32];
-    snprintf(buf, sizeof buf, " %g", slope);
-    s += buf;
+  if (activation_def(activation).param != ActivationParam::none) s += " " + short_number(param(activation));
+  if (output_activation != Activation::linear) {
+    s += std::string(", out ") + activation_name(output_activation);
+    if (activation_def(output_activation).param != ActivationParam::none && output_activation != activation)
+      s += " " + short_number(param(output_activation));
   }
-  if (output_activation != Activation::linear) s += std::string(", out ") + activation_name(output_activation);
   if (color != shading::ColorSpace::rgb) s += std::string(", ") + shading::color_space_name(color);
   return s + ")";
 }
 
 bool MlpSpec::same_shape(const MlpSpec& o) const {
   return inputs == o.inputs && hidden == o.hidden && outputs == o.outputs && activation == o.activation &&
-         slope == o.slope && output_activation == o.output_activation;
+         output_activation == o.output_activation && param(activation) == o.param(activation) &&
+         param(output_activation) == o.param(output_activation);
 }
 
 }  // namespace sn::nn

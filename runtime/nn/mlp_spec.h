@@ -7,14 +7,10 @@
 #include <string>
 #include <vector>
 
+#include "nn/activation.h"
 #include "shading/color.h"
 
 namespace sn::nn {
-
-enum class Activation { linear, tanh, sigmoid, relu, leaky_relu };
-
-const char* activation_name(Activation a);
-Activation parse_activation(const std::string& name);  // throws listing the valid names
 
 constexpr int kMaxWidth = 64;
 constexpr int kMaxHidden = 32;
@@ -24,8 +20,11 @@ struct MlpSpec {
   std::vector<int> hidden;  // widths of the hidden layers, 1..kMaxWidth each, 1..kMaxHidden of them
   int outputs = 3;
   Activation activation = Activation::tanh;
-  double slope = 0.01;  // leaky_relu's a
   Activation output_activation = Activation::linear;
+  // The activations' parameters (nn/activation.h), shared by the hidden and output layers.
+  double slope = 0.01;  // leaky_relu's a
+  double omega = 1.0;   // sine's frequency w0: sin(w0 z)
+  double alpha = 1.0;   // elu's alpha
   shading::ColorSpace color = shading::ColorSpace::rgb;
 
   int layers() const { return int(hidden.size()) + 1; }  // weight layers
@@ -34,6 +33,8 @@ struct MlpSpec {
   std::size_t bias_offset(int layer) const;
   std::size_t param_count() const;
   int max_width() const;
+  // The value of `a`'s parameter (0 when it has none).
+  double param(Activation a) const;
   // Throws with a message naming the bad field and its valid range.
   void validate() const;
   // "mlp(6 -> 13x4 -> 6x4 -> 3, tanh)": runs of equal widths are written WIDTHxCOUNT.

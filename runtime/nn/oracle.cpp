@@ -6,33 +6,9 @@
 
 namespace sn::nn::oracle {
 
-double activate(Activation a, double slope, double z) {
-  switch (a) {
-    case Activation::linear: return z;
-    case Activation::tanh: return std::tanh(z);
-    case Activation::sigmoid: return 1.0 / (1.0 + std::exp(-z));
-    case Activation::relu: return z > 0 ? z : 0.0;
-    case Activation::leaky_relu: return z > 0 ? z : slope * z;
-  }
-  return z;
-}
+double activate(Activation a, double param, double z) { return activation_def(a).f(z, param); }
 
-double activate_grad(Activation a, double slope, double z) {
-  switch (a) {
-    case Activation::linear: return 1.0;
-    case Activation::tanh: {
-      double t = std::tanh(z);
-      return 1.0 - t * t;
-    }
-    case Activation::sigmoid: {
-      double s = 1.0 / (1.0 + std::exp(-z));
-      return s * (1.0 - s);
-    }
-    case Activation::relu: return z > 0 ? 1.0 : 0.0;
-    case Activation::leaky_relu: return z > 0 ? 1.0 : slope;
-  }
-  return 1.0;
-}
+double activate_grad(Activation a, double param, double z) { return activation_def(a).df(z, param); }
 
 namespace {
 Activation layer_activation(const MlpSpec& s, int l) {
@@ -56,7 +32,7 @@ std::vector<double> forward(const MlpSpec& spec, const std::vector<double>& p, c
       double s = b[o];
       for (int i = 0; i < in; ++i) s += w[o * in + i] * a[i];
       z[o] = s;
-      next[o] = activate(layer_activation(spec, l), spec.slope, s);
+      next[o] = activate(layer_activation(spec, l), spec.param(layer_activation(spec, l)), s);
     }
     a = std::move(next);
     if (trace) {
@@ -68,12 +44,12 @@ std::vector<double> forward(const MlpSpec& spec, const std::vector<double>& p, c
 }
 
 double loss_grad(const MlpSpec& spec, const std::vector<double>& p, const std::vector<const float*>& xs,
-                 const std::vector<const float*>& ys, std::vector<double>* grad) {
+                 const std::vector<const float*>& ys, std::vector<double>* grad, const Loss& lf) {
   const std::size_t count = xs.size();
   const int L = spec.layers(), outs = spec.outputs;
   if (grad) grad->assign(spec.param_count(), 0.0);
   double loss = 0;
-  const double scale = 2.0 / (double(count) * outs);  // d mean((y'-y)^2) / d y'
+  const double scale = 1.0 / (double(count) * outs);  // of the mean
   Trace t;
   std::vector<double> x(spec.inputs);
   for (std::size_t n = 0; n < count; ++n) {
@@ -82,8 +58,8 @@ double loss_grad(const MlpSpec& spec, const std::vector<double>& p, const std::v
     std::vector<double> delta(outs);
     for (int o = 0; o < outs; ++o) {
       double d = y[o] - ys[n][o];
-      loss += d * d;
-      delta[o] = scale * d * activate_grad(spec.output_activation, spec.slope, t.z[L][o]);
+      loss += lf.value(d, ys[n][o]);
+      delta[o] = scale * lf.grad(d, ys[n][o]) * activate_grad(spec.output_activation, spec.param(spec.output_activation), t.z[L][o]);
     }
     if (!grad) continue;
     for (int l = L - 1; l >= 0; --l) {
@@ -100,7 +76,7 @@ double loss_grad(const MlpSpec& spec, const std::vector<double>& p, const std::v
       for (int i = 0; i < in; ++i) {
         double s = 0;
         for (int o = 0; o < out; ++o) s += w[o * in + i] * delta[o];
-        prev[i] = s * activate_grad(spec.activation, spec.slope, t.z[l][i]);
+        prev[i] = s * activate_grad(spec.activation, spec.param(spec.activation), t.z[l][i]);
       }
       delta = std::move(prev);
     }
@@ -124,6 +100,11 @@ void Adam::step(std::vector<double>& p, const std::vector<double>& g, const Trai
 }
 
 double mse(const MlpSpec& spec, const std::vector<double>& p, const float* x, const float* y, std::size_t count) {
+  return mean_loss(spec, p, x, y, count, Loss{});
+}
+
+double mean_loss(const MlpSpec& spec, const std::vector<double>& p, const float* x, const float* y, std::size_t count,
+                 const Loss& lf) {
   double sum = 0;
   std::vector<double> xi(spec.inputs);
   for (std::size_t n = 0; n < count; ++n) {
@@ -131,7 +112,7 @@ double mse(const MlpSpec& spec, const std::vector<double>& p, const float* x, co
     auto out = forward(spec, p, xi.data());
     for (int o = 0; o < spec.outputs; ++o) {
       double d = out[o] - y[n * spec.outputs + o];
-      sum += d * d;
+      sum += lf.value(d, y[n * spec.outputs + o]);
     }
   }
   return count ? sum / (double(count) * spec.outputs) : 0.0;
@@ -153,7 +134,7 @@ NetResult train(const MlpSpec& spec, const std::vector<float>& params, const dat
         xs[k] = data.train_x.data() + std::size_t(row) * data.inputs;
         ys[k] = data.train_y.data() + std::size_t(row) * data.outputs;
       }
-      double loss = loss_grad(spec, p, xs, ys, &g);
+      double loss = loss_grad(spec, p, xs, ys, &g, cfg.loss);
       auto before = p;
       adam.step(p, g, cfg);
       bool finite = std::isfinite(loss);
@@ -168,8 +149,11 @@ NetResult train(const MlpSpec& spec, const std::vector<float>& params, const dat
     }
     if (r.diverged) break;
     std::vector<float> pf(p.begin(), p.end());
-    r.end_epoch(sum / double(steps), mse(spec, p, data.val_x.data(), data.val_y.data(), data.val_count()), pf.data(),
-                pf.size());
+    const double val = mse(spec, p, data.val_x.data(), data.val_y.data(), data.val_count());
+    const double val_loss = cfg.loss.kind == LossKind::l2
+                                ? val
+                                : mean_loss(spec, p, data.val_x.data(), data.val_y.data(), data.val_count(), cfg.loss);
+    r.end_epoch(cfg.loss, sum / double(steps), val, val_loss, pf.data(), pf.size());
   }
   r.final_params.assign(p.begin(), p.end());
   return r;

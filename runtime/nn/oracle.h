@@ -11,9 +11,10 @@
 
 namespace sn::nn::oracle {
 
-double activate(Activation a, double slope, double z);
+// `param`: the activation's parameter (MlpSpec::param).
+double activate(Activation a, double param, double z);
 // d activation / dz, from the pre-activation z.
-double activate_grad(Activation a, double slope, double z);
+double activate_grad(Activation a, double param, double z);
 
 // Activations of every layer for one sample: a[0] = x, a[layers()] = output; z likewise
 // (z[0] unused).
@@ -23,10 +24,10 @@ struct Trace {
 std::vector<double> forward(const MlpSpec& spec, const std::vector<double>& params, const double* x,
                             Trace* trace = nullptr);
 
-// MSE over `count` samples (rows of x and y) and its gradient with respect to every parameter
-// (grad resized to param_count()).
+// The loss (nn/loss.h; MSE by default) over `count` samples (rows of x and y) and its gradient
+// with respect to every parameter (grad resized to param_count()).
 double loss_grad(const MlpSpec& spec, const std::vector<double>& params, const std::vector<const float*>& xs,
-                 const std::vector<const float*>& ys, std::vector<double>* grad);
+                 const std::vector<const float*>& ys, std::vector<double>* grad, const Loss& loss = {});
 
 struct Adam {
   std::vector<double> m, v;
@@ -34,8 +35,10 @@ struct Adam {
   void step(std::vector<double>& params, const std::vector<double>& grad, const TrainConfig& cfg);
 };
 
-// MSE of the network over rows [0, count) of x/y.
+// MSE of the network over rows [0, count) of x/y; mean_loss: the same with another loss.
 double mse(const MlpSpec& spec, const std::vector<double>& params, const float* x, const float* y, std::size_t count);
+double mean_loss(const MlpSpec& spec, const std::vector<double>& params, const float* x, const float* y,
+                 std::size_t count, const Loss& loss);
 
 // A whole run as nn/trainer.h defines it (shuffle, minibatches, Adam, curves), in double.
 // For tiny datasets in tests: it is slow.

@@ -91,10 +91,34 @@ void validate(const TrainJob& job) {
   check_dataset(d);
 }
 
-std::string resolve_backend(const std::string& requested, std::string* reason) {
+namespace {
+// The first net whose activations have no cpu code (custom ones), or nullptr.
+const Mlp* net_without_cpu_code(const std::vector<Mlp*>& nets, std::size_t* index) {
+  for (std::size_t i = 0; i < nets.size(); ++i)
+    if (activation_def(nets[i]->spec.activation).simd < 0 || activation_def(nets[i]->spec.output_activation).simd < 0) {
+      *index = i;
+      return nets[i];
+    }
+  return nullptr;
+}
+}  // namespace
+
+std::string resolve_backend(const std::string& requested, std::string* reason, const std::vector<Mlp*>& nets) {
+  std::size_t i = 0;
+  const Mlp* custom = net_without_cpu_code(nets, &i);
+  if (requested == "cpu" && custom) {
+    const MlpSpec& s = custom->spec;
+    const Activation a = activation_def(s.activation).simd < 0 ? s.activation : s.output_activation;
+    throw std::invalid_argument("net " + std::to_string(i + 1) + " (" + s.describe() + "): activation '" +
+                                activation_name(a) + "' is a definition without cpu code: train it with backend = \"gl\"");
+  }
   if (requested != "auto") {
     if (reason) *reason = "requested";
     return requested;
+  }
+  if (custom && has_backend("gl")) {
+    if (reason) *reason = std::string("activation '") + activation_name(custom->spec.activation) + "' runs on gl only";
+    return "gl";
   }
   if (!has_backend("gl")) {
     if (reason) *reason = "no gl backend in this build";
@@ -112,7 +136,7 @@ std::string resolve_backend(const std::string& requested, std::string* reason) {
 JobResult train(const TrainJob& job) {
   validate(job);
   JobResult out;
-  out.backend = resolve_backend(job.backend, &out.reason);
+  out.backend = resolve_backend(job.backend, &out.reason, job.nets);
   auto backend = make_backend(out.backend);
   out.device = backend->device();
   std::vector<const Mlp*> nets(job.nets.begin(), job.nets.end());

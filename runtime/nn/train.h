@@ -35,8 +35,10 @@ void validate(const TrainJob& job);
 // Every input and target of the dataset is finite and the row counts add up; throws naming the
 // first bad row and column (1-based).
 void check_dataset(const data::Dataset& data);
-// "auto" -> "gl" on a hardware GPU when the gl backend is built in, else "cpu".
-std::string resolve_backend(const std::string& requested, std::string* reason);
+// "auto" -> "gl" on a hardware GPU when the gl backend is built in, or when a net has an
+// activation without cpu code (a custom definition); else "cpu". "cpu" with such a net throws
+// naming the net and backend = "gl".
+std::string resolve_backend(const std::string& requested, std::string* reason, const std::vector<Mlp*>& nets = {});
 JobResult train(const TrainJob& job);
 
 }  // namespace sn::nn

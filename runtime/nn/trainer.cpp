@@ -8,9 +8,13 @@
 
 namespace sn::nn {
 
-void NetResult::end_epoch(double train, double val, const float* params, std::size_t count) {
-  train_mse.push_back(train);
+void NetResult::end_epoch(const Loss& l, double train, double val, double vloss, const float* params,
+                          std::size_t count) {
+  loss = l.describe();
+  train_loss.push_back(train);
+  if (l.kind == LossKind::l2) train_mse.push_back(train);
   val_mse.push_back(val);
+  val_loss.push_back(vloss);
   // A NaN validation MSE never counts as the best (nor blocks a later finite one).
   if (best_epoch == 0 || val < best_val_mse || (std::isnan(best_val_mse) && !std::isnan(val))) {
     best_val_mse = val;

@@ -2,8 +2,9 @@
 // and the job around it (nn/train.h: validation, backend choice, diagnostics, commit to nets).
 //
 // What one run computes, identical on every backend:
-//  - loss: MSE = mean over the minibatch's samples and the network's outputs of
-//    (net(x) - y)^2, in the dataset's (= the network's) colour space.
+//  - loss: the mean over the minibatch's samples and the network's outputs of a per-component
+//    loss of net(x) - y (nn/loss.h; l2, the MSE, by default), in the dataset's (= the network's)
+//    colour space.
 //  - epoch e (0-based) visits the training rows in the order nn::shuffle_index(seed, e, k, n)
 //    for k = 0..n-1 (nn/shuffle.h); step s takes rows k = s*batch .. s*batch+batch-1;
 //    steps per epoch = n / batch (a partial last minibatch is dropped; it changes every epoch).
@@ -11,8 +12,11 @@
 //    fresh moments m = v = 0 per run:
 //      m = b1*m + (1-b1)*g;  v = b2*v + (1-b2)*g*g;
 //      w -= lr * (m / (1 - b1^t)) / (sqrt(v / (1 - b2^t)) + eps)
-//  - train_mse[e] = mean of the minibatch losses of epoch e (each taken in that step's forward
-//    pass, before its update); val_mse[e] = MSE over all validation rows after epoch e.
+//  - train_loss[e] = mean of the minibatch losses of epoch e (each taken in that step's forward
+//    pass, before its update); val_loss[e] = the loss over all validation rows after epoch e,
+//    val_mse[e] their MSE (always, so that runs with different losses compare). For l2,
+//    train_mse = train_loss; with another loss train_mse stays empty. The best epoch is the
+//    one of the lowest val_mse.
 //  - divergence: a step whose loss or new parameters are not finite is not applied; the net
 //    stops with its parameters from before that step and `diverged` = {epoch, step} (1-based).
 #pragma once
@@ -24,6 +28,7 @@
 #include <vector>
 
 #include "data/dataset.h"
+#include "nn/loss.h"
 #include "nn/mlp.h"
 
 namespace sn::nn {
@@ -33,6 +38,7 @@ struct TrainConfig {
   int batch = 8;
   double lr = 2.5e-4, beta1 = 0.8, beta2 = 0.9, eps = 1e-7;  // the thesis' Adam settings
   uint32_t seed = 1;  // shuffle seed, shared by all nets of the job
+  Loss loss;
 };
 
 struct Divergence {
@@ -43,7 +49,9 @@ struct Divergence {
 // One network's run. A backend fills the curves through end_epoch() and `diverged`; the job
 // (nn/train.h) fills the rest.
 struct NetResult {
-  std::vector<double> train_mse, val_mse;  // per finished epoch
+  std::vector<double> train_loss, val_loss, val_mse;  // per finished epoch
+  std::vector<double> train_mse;  // = train_loss for l2, else empty
+  std::string loss = "l2";        // Loss::describe() of the run's loss
   double best_val_mse = 0;
   int best_epoch = 0;  // 1-based, 0 = no epoch finished
   std::vector<float> best_params;  // parameters after best_epoch
@@ -55,13 +63,14 @@ struct NetResult {
   std::vector<double> dead_units;  // per hidden layer, see nn/diagnostics.h
 
   // Appends an epoch; keeps a copy of `params` when val_mse is a new minimum (first wins ties).
-  void end_epoch(double train, double val, const float* params, std::size_t count);
+  void end_epoch(const Loss& loss, double train_loss, double val_mse, double val_loss, const float* params,
+                 std::size_t count);
 };
 
 struct ProgressEvent {
   int net = 0;    // 0-based index into the job's nets
   int epoch = 0;  // 1-based, just finished
-  double train_mse = 0, val_mse = 0;
+  double train_loss = 0, val_mse = 0, val_loss = 0;
 };
 // Called on the thread that called train(), after each finished epoch of each net (order across
 // nets unspecified). An exception thrown by it aborts the run; the nets keep their parameters.

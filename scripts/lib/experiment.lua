@@ -366,7 +366,8 @@ end
 
 -- A run: { id, config }. The config holds the network, the training settings and the dataset's
 -- description, so a finished run is reused only for exactly the same experiment.
--- o = { id, hidden, seed, activation, slope, color, epochs, batch, adam, data (desc), keep_params }
+-- o = { id, hidden, seed, activation, slope, omega, alpha, output_activation, init, color, epochs,
+--       batch, adam, data (desc), keep_params }
 function exp.run(o)
   local adam = o.adam or exp.adam
   return {
@@ -376,6 +377,10 @@ function exp.run(o)
       outputs = o.outputs or 3,
       activation = o.activation or "tanh",
       slope = o.slope,
+      omega = o.omega,                       -- nil (the defaults) keeps older configs' keys
+      alpha = o.alpha,
+      output_activation = o.output_activation,
+      init = o.init,
       color = o.data.color,
       seed = o.seed,
       epochs = o.epochs or exp.epochs,
@@ -404,7 +409,8 @@ end
 -- A fresh network for a run's config (its seed picks the initial weights).
 function exp.make_net(c)
   return sn.mlp { inputs = exp.input_count(c.data.inputs), hidden = c.hidden, outputs = c.outputs,
-                  activation = c.activation, slope = c.slope, color = c.color, seed = c.seed,
+                  activation = c.activation, slope = c.slope, omega = c.omega, alpha = c.alpha,
+                  output_activation = c.output_activation, init = c.init, color = c.color, seed = c.seed,
                   input_names = c.data.inputs }
 end
 

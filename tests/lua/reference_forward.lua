@@ -2,16 +2,30 @@
 -- weights [out][in] then biases [out]): the reference the gl tests compare against.
 local M = {}
 
-function M.act(kind, slope, z)
+-- Lua twins of user-defined activations, by name (tests add theirs).
+M.custom = {}
+
+-- s: the network's spec (its slope, omega, alpha). GELU in its tanh form, as shadenet's.
+function M.act(kind, s, z)
+  if M.custom[kind] then return M.custom[kind](z) end
   if kind == "tanh" then return math.tanh(z)
   elseif kind == "sigmoid" then return 1 / (1 + math.exp(-z))
   elseif kind == "relu" then return z > 0 and z or 0
-  elseif kind == "leaky_relu" then return z > 0 and z or slope * z end
+  elseif kind == "leaky_relu" then return z > 0 and z or s.slope * z
+  elseif kind == "sine" then return math.sin(s.omega * z)
+  elseif kind == "softplus" then return math.max(z, 0) + math.log(1 + math.exp(-math.abs(z)))
+  elseif kind == "squareplus" then return 0.5 * (z + math.sqrt(z * z + 4))
+  elseif kind == "elu" then return z > 0 and z or s.alpha * (math.exp(z) - 1)
+  elseif kind == "gelu" then return 0.5 * z * (1 + math.tanh(math.sqrt(2 / math.pi) * (z + 0.044715 * z ^ 3)))
+  elseif kind == "swish" then return z / (1 + math.exp(-z))
+  elseif kind == "exponential" then return math.exp(z) end
+  assert(kind == "linear", "reference_forward: no twin for activation " .. tostring(kind))
   return z
 end
 
-function M.forward(net, x)
-  local s, p = net:spec(), net:params()
+-- params: the parameters in double (a table in net:params()' layout), default the net's own.
+function M.forward(net, x, params)
+  local s, p = net:spec(), params or net:params()
   local widths = { s.inputs }
   for _, w in ipairs(s.hidden) do widths[#widths + 1] = w end
   widths[#widths + 1] = s.outputs
@@ -23,7 +37,7 @@ function M.forward(net, x)
     for j = 1, nout do
       local z = p[b + j]
       for i = 1, nin do z = z + p[off + (j - 1) * nin + i] * a[i] end
-      out[j] = M.act(kind, s.slope, z)
+      out[j] = M.act(kind, s, z)
     end
     a, off = out, b + nout
   end

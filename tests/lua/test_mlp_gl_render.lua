@@ -42,9 +42,19 @@ for _, case in ipairs {
   { activation = "leaky_relu", color = "hsv", hidden = { 12, 12 }, slope = 0.2 },
   { activation = "sigmoid", color = "cie", hidden = { 13, 13, 6, 6 } },
   { activation = "relu", color = "cie_xyz", hidden = { 20, 5 } },
+  -- the activations added beside the thesis' four (sine with SIREN's w0 and initialisation)
+  { activation = "sine", color = "rgb", hidden = { 8, 8 }, omega = 30, init = "siren" },
+  { activation = "softplus", color = "rgb", hidden = { 8, 8 }, output_activation = "softplus" },
+  { activation = "squareplus", color = "rgb", hidden = { 8, 8 } },
+  { activation = "elu", color = "rgb", hidden = { 8, 8 }, alpha = 0.5 },
+  { activation = "gelu", color = "rgb", hidden = { 8, 8 }, output_activation = "sigmoid" },
+  { activation = "swish", color = "rgb", hidden = { 8, 8 } },
+  { activation = "exponential", color = "rgb", hidden = { 8 }, output_activation = "exponential" },
 } do
   local net = sn.mlp { inputs = 6, hidden = case.hidden, outputs = 3, activation = case.activation,
-                       slope = case.slope, color = case.color, seed = 7, input_names = { "normal", "view" } }
+                       slope = case.slope, omega = case.omega, alpha = case.alpha, init = case.init,
+                       output_activation = case.output_activation, color = case.color, seed = 7,
+                       input_names = { "normal", "view" } }
   -- Outputs near the middle of each colour space's range, so the decoded colours are ordinary.
   local L = #net.layers
   local bias = case.color == "cie" and { 0.5, 0.5, 0.5 } or { 0.4, 0.5, 0.6 }

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "nn/checkpoint.h"
+#include "nn/oracle.h"
 
 namespace sn::nn {
 namespace {
@@ -81,7 +82,7 @@ TEST(Checkpoint, RoundTripKeepsEverything) {
   EXPECT_EQ(back.best_epoch, 17);
   EXPECT_EQ(back.input_names, net.input_names);
   EXPECT_EQ(back.trained_steps, net.trained_steps);
-  // Header: magic, version 1, payload size = file size - 24.
+  // Header: magic, version, payload size = file size - 24.
   std::string bytes = read_all(path);
   EXPECT_EQ(bytes.substr(0, 5), "snmlp");
   EXPECT_EQ(uint8_t(bytes[8]), kCheckpointVersion);
@@ -119,6 +120,43 @@ TEST(Checkpoint, DamagedFilesAreClearErrors) {
   EXPECT_NE(load_error(bad).find("not a shadenet network checkpoint"), std::string::npos);
   EXPECT_NE(load_error(scratch("missing.snmlp")).find("cannot open checkpoint"), std::string::npos);
   EXPECT_EQ(load_error(path), "(loaded)");
+}
+
+// A checkpoint written before the activation registry (tests/data/checkpoint_v1.snmlp, saved by
+// `net:save` at ccace90) loads, and computes what it computed then.
+TEST(Checkpoint, VersionOneFilesStillLoad) {
+  Mlp net = load_checkpoint(std::string(SHADENET_TEST_DIR) + "/data/checkpoint_v1.snmlp");
+  EXPECT_EQ(net.spec.describe(), "mlp(3 -> 5 -> 4 -> 2, leaky_relu 0.2, out sigmoid)");
+  EXPECT_EQ(net.input_names, std::vector<std::string>{"normal"});
+  const std::string bytes = read_all(std::string(SHADENET_TEST_DIR) + "/data/checkpoint_v1.snmlp");
+  EXPECT_EQ(uint8_t(bytes[8]), 1);
+  // Outputs for (0.3, -0.7, 0.5), printed by that build: 0.50289911 0.578237057.
+  std::vector<double> p(net.params.begin(), net.params.end());
+  const double x[3] = {0.3f, -0.7f, 0.5f};
+  auto y = oracle::forward(net.spec, p, x);
+  EXPECT_NEAR(y[0], 0.50289911, 1e-6);
+  EXPECT_NEAR(y[1], 0.578237057, 1e-6);
+}
+
+// The activations' parameters other than leaky_relu's slope travel in the "entries" section.
+TEST(Checkpoint, ActivationParametersRoundTrip) {
+  MlpSpec s;
+  s.inputs = 3;
+  s.hidden = {4};
+  s.outputs = 2;
+  s.activation = Activation::sine;
+  s.omega = 30;
+  s.output_activation = Activation::elu;
+  s.alpha = 0.35;
+  Mlp net(s, Init::siren, 2);
+  auto path = scratch("sine.snmlp");
+  save_checkpoint(net, path.string());
+  Mlp back = load_checkpoint(path.string());
+  EXPECT_EQ(back.spec.omega, 30);
+  EXPECT_EQ(back.spec.alpha, 0.35);
+  EXPECT_EQ(back.spec.describe(), "mlp(3 -> 4 -> 2, sine 30, out elu 0.35)");
+  EXPECT_TRUE(back.spec.same_shape(net.spec));
+  EXPECT_EQ(back.params, net.params);
 }
 
 TEST(Checkpoint, FailedSaveLeavesTheOldFile) {

@@ -167,7 +167,16 @@ INSTANTIATE_TEST_SUITE_P(
                       Shape{{1, 9}, Activation::sigmoid, Activation::linear},
                       Shape{{12, 12}, Activation::relu, Activation::linear},
                       Shape{{8, 8, 8}, Activation::leaky_relu, Activation::sigmoid},
-                      Shape{{64, 17}, Activation::tanh, Activation::tanh}));
+                      Shape{{64, 17}, Activation::tanh, Activation::tanh},
+                      // The activations whose derivative needs z (kept by the forward pass), and the rest.
+                      Shape{{8, 8}, Activation::sine, Activation::linear},
+                      Shape{{9, 7}, Activation::gelu, Activation::gelu},
+                      Shape{{8, 8}, Activation::swish, Activation::sine},
+                      Shape{{8, 8}, Activation::softplus, Activation::softplus},
+                      Shape{{10, 6}, Activation::squareplus, Activation::linear},
+                      Shape{{8, 8}, Activation::elu, Activation::elu},
+                      Shape{{8, 5}, Activation::exponential, Activation::swish},
+                      Shape{{12, 12}, Activation::tanh, Activation::exponential}));
 
 TEST(CpuTrainer, TwoEpochCurvesMatchTheOracle) {
   KernelGuard guard;

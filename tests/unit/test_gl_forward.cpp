@@ -85,7 +85,14 @@ INSTANTIATE_TEST_SUITE_P(
                       ForwardCase{"relu", make_spec(6, {9, 9, 9}, 3, Activation::relu)},
                       ForwardCase{"leaky_relu", make_spec(6, {8, 8}, 3, Activation::leaky_relu, Activation::linear, 0.2)},
                       ForwardCase{"wide_loops_not_unrolled", make_spec(6, {40, 33, 40}, 4, Activation::tanh, Activation::tanh)},
-                      ForwardCase{"thesis_13_to_6", make_spec(6, {13, 13, 13, 13, 6, 6, 6, 6}, 3, Activation::tanh)}),
+                      ForwardCase{"thesis_13_to_6", make_spec(6, {13, 13, 13, 13, 6, 6, 6, 6}, 3, Activation::tanh)},
+                      ForwardCase{"sine", make_spec(6, {8, 8}, 3, Activation::sine, Activation::sine)},
+                      ForwardCase{"softplus", make_spec(6, {8, 8}, 3, Activation::softplus, Activation::softplus)},
+                      ForwardCase{"squareplus", make_spec(6, {8, 8}, 3, Activation::squareplus)},
+                      ForwardCase{"elu", make_spec(6, {8, 8}, 3, Activation::elu, Activation::elu)},
+                      ForwardCase{"gelu", make_spec(6, {8, 8}, 3, Activation::gelu, Activation::gelu)},
+                      ForwardCase{"swish", make_spec(6, {8, 8}, 3, Activation::swish, Activation::swish)},
+                      ForwardCase{"exponential", make_spec(6, {8}, 3, Activation::exponential)}),
     [](const ::testing::TestParamInfo<ForwardCase>& i) { return std::string(i.param.name); });
 
 TEST(GlForwardLoss, SquaredErrorsOfManyNetsInOneDispatch) {

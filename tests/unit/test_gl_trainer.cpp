@@ -117,6 +117,68 @@ TEST_P(GlKernel, OneAdamStepMatchesOracleWithin1e5) {
   }
 }
 
+// Every other activation (and output activation), on a smaller network: each is a program of
+// its own, and llvmpipe compiles the per-network kernel's straight-line code slowly.
+TEST_P(GlKernel, OneAdamStepMatchesOracleForEveryActivation) {
+  sn::gl::current();
+  const std::pair<Activation, Activation> cases[] = {
+      {Activation::sine, Activation::linear},     {Activation::softplus, Activation::softplus},
+      {Activation::squareplus, Activation::linear}, {Activation::elu, Activation::elu},
+      {Activation::gelu, Activation::gelu},       {Activation::swish, Activation::sine},
+      {Activation::exponential, Activation::swish}, {Activation::tanh, Activation::exponential}};
+  for (const auto& [act, out] : cases) {
+    MlpSpec spec = spec_of({8, 8}, act);
+    spec.output_activation = out;
+    spec.omega = 2.0;  // sine: away from the plain sin, so that omega's place in the derivative shows
+    spec.alpha = 0.7;
+    Mlp net(spec, Init::xavier, 7);
+    Dataset data = phong_like(8, 16, 1);
+    TrainConfig cfg;
+    cfg.epochs = 1;
+    cfg.batch = 8;
+    cfg.lr = 1e-2;
+    GlTrainer gl = trainer();
+    auto r = gl.train({&net}, data, cfg, nullptr);
+    expect_kernel(gl);
+    auto o = oracle::train(spec, net.params, data, cfg);
+    ASSERT_EQ(r.size(), 1u);
+    EXPECT_EQ(r[0].steps, 1) << spec.describe();
+    EXPECT_LE(max_abs_diff(r[0].final_params, o.final_params), 1e-5) << spec.describe();
+    EXPECT_GT(max_abs_diff(r[0].final_params, net.params), 5e-3) << "the step changed nothing";
+    EXPECT_NEAR(r[0].train_mse[0], o.train_mse[0], 1e-5 * o.train_mse[0]) << spec.describe();
+    EXPECT_NEAR(r[0].val_mse[0], o.val_mse[0], 1e-5 * o.val_mse[0]) << spec.describe();
+  }
+}
+
+// Every loss (nn/loss.h): one step against the oracle, the validation loss and MSE beside it.
+TEST_P(GlKernel, EveryLossMatchesTheOracle) {
+  sn::gl::current();
+  MlpSpec spec = spec_of({8, 8}, Activation::tanh);
+  spec.output_activation = Activation::sigmoid;
+  Mlp net(spec, Init::xavier, 3);
+  Dataset data = phong_like(8, 16, 2);
+  for (const Loss& loss : {parse_loss("l1"), parse_loss("relative_l2"), parse_loss("huber", 0.1)}) {
+    TrainConfig cfg;
+    cfg.epochs = 1;
+    cfg.batch = 8;
+    cfg.lr = 1e-2;
+    cfg.loss = loss;
+    GlTrainer gl = trainer();
+    auto r = gl.train({&net}, data, cfg, nullptr);
+    expect_kernel(gl);
+    auto o = oracle::train(spec, net.params, data, cfg);
+    ASSERT_EQ(r.size(), 1u);
+    EXPECT_EQ(r[0].loss, loss.describe());
+    EXPECT_LE(max_abs_diff(r[0].final_params, o.final_params), 1e-5) << loss.describe();
+    EXPECT_GT(max_abs_diff(r[0].final_params, net.params), 5e-3) << "the step changed nothing";
+    EXPECT_NEAR(r[0].train_loss[0], o.train_loss[0], 1e-5 * o.train_loss[0]) << loss.describe();
+    EXPECT_NEAR(r[0].val_loss[0], o.val_loss[0], 1e-5 * o.val_loss[0]) << loss.describe();
+    EXPECT_NEAR(r[0].val_mse[0], o.val_mse[0], 1e-5 * o.val_mse[0]) << loss.describe();
+    EXPECT_NE(r[0].val_loss[0], r[0].val_mse[0]);
+    EXPECT_TRUE(r[0].train_mse.empty());
+  }
+}
+
 // Four steps over two epochs: the minibatches follow the epoch permutation of nn/shuffle.h, so
 // the parameters equal the oracle's; another shuffle seed gives other minibatches and other
 // parameters.

@@ -93,12 +93,12 @@ TEST(Oracle, AdamStepFollowsTheFormula) {
 TEST(NetResult, BestEpochIsTheFirstMinimumAndNeverNaN) {
   NetResult r;
   float p[2] = {1, 2};
-  r.end_epoch(0.5, std::nan(""), p, 2);
-  r.end_epoch(0.4, 0.3, p, 2);
+  r.end_epoch(Loss{}, 0.5, std::nan(""), std::nan(""), p, 2);
+  r.end_epoch(Loss{}, 0.4, 0.3, 0.3, p, 2);
   p[0] = 7;
-  r.end_epoch(0.3, 0.2, p, 2);
-  r.end_epoch(0.2, 0.2, p + 1, 1);  // a tie: the earlier epoch stays
-  r.end_epoch(0.1, 0.25, p, 2);
+  r.end_epoch(Loss{}, 0.3, 0.2, 0.2, p, 2);
+  r.end_epoch(Loss{}, 0.2, 0.2, 0.2, p + 1, 1);  // a tie: the earlier epoch stays
+  r.end_epoch(Loss{}, 0.1, 0.25, 0.25, p, 2);
   EXPECT_EQ(r.best_epoch, 3);
   EXPECT_EQ(r.best_val_mse, 0.2);
   EXPECT_EQ(r.best_params, (std::vector<float>{7, 2}));

@@ -55,3 +55,17 @@ TEST(ShaderSource, IncludeCycleIsAnError) {
     EXPECT_NE(std::string(e.what()).find("self_include.glsl:2: #include cycle"), std::string::npos) << e.what();
   }
 }
+
+// In-memory includes (gl::Includes): found before the disk, pasted once, and a log line in one
+// names the include, with its own line numbers.
+TEST(ShaderSource, InMemoryIncludeShadowsTheDiskAndMapsItsLines) {
+  Includes mem;
+  mem["broken_helper.glsl"] = "float helper(float x) {\n  return bad_name;\n}\n";
+  ShaderSource s = preprocess("tests/data/shaders/uses_broken.comp", {}, mem);
+  ASSERT_EQ(s.files.size(), 2u);
+  EXPECT_EQ(s.files[1], "broken_helper.glsl");
+  EXPECT_NE(s.text.find("return bad_name;"), std::string::npos);
+  EXPECT_EQ(s.text.find("undeclared_thing"), std::string::npos);  // the file on disk was not read
+  std::string out = rewrite_log("0:100002(10): error: `bad_name' undeclared\n", s);
+  EXPECT_EQ(out, "broken_helper.glsl:2: error: `bad_name' undeclared\n      return bad_name;\n");
+}

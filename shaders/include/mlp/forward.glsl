@@ -5,10 +5,17 @@
 //                          = outputs), which starts at unit vec4 u0 when the blocks are laid end
 //                          to end (inputs filled by the shader; the outputs' padding ends 0),
 //   MLP_ROLLED(n)          the bound of a loop that should stay a loop: `((n) + u_zero)` (code
-//                          size, compile time), or `(n)` to let the compiler unroll it.
+//                          size, compile time), or `(n)` to let the compiler unroll it;
+//   MLP_KEEP_GRAD(u, g)    optional (training): store f'(z) of output unit vec4 u (its index
+//                          among the unit vec4s) where the backward pass finds it; called only
+//                          for layers whose derivative does not follow from their output.
 // Rows past the layer's width (the padding of its last output vec4) repeat its last row and are
 // masked to 0, so every row loop runs over whole vec4s.
 #include "mlp/activation.glsl"
+
+#ifndef MLP_KEEP_GRAD
+#define MLP_KEEP_GRAD(u, g)
+#endif
 
 #define MLP_FORWARD_RUN(L0, COUNT, IN, OUT, IN4, OUT4, WQ0, UI0, QN)                             \
   for (int k_ = 0; k_ < MLP_ROLLED(COUNT); ++k_) {                                               \
@@ -24,7 +31,9 @@
         for (int q = 0; q < QN; ++q) s += dot(MLP_P4(wq_ + j * IN4 + q), ain[q]);                \
         z[c] += s;                                                                               \
       }                                                                                          \
-      MLP_UNIT(l_ + 1, uo_, jq) = mix(vec4(0.0), mlp_activate(MLP_LAYER_ACT(L0), z), mlp_live(jq, OUT)); \
+      MLP_UNIT(l_ + 1, uo_, jq) = mix(vec4(0.0), MLP_LAYER_ACTIVATE(L0, z), mlp_live(jq, OUT));          \
+      if (MLP_LAYER_KEEPS_GRAD(L0))                                                              \
+        MLP_KEEP_GRAD(uo_ + jq, mix(vec4(0.0), MLP_LAYER_GRAD_Z(L0, z), mlp_live(jq, OUT)));     \
     }                                                                                            \
   }
 

@@ -1,0 +1,127 @@
+-- sn.activation.define: softsign defined by a user (GLSL + Lua twins). Its derivative against
+-- central differences; two gl training steps against a Lua reference that takes its gradients
+-- by central differences of the Lua twin; the fragment shader against the Lua twin; the cpu
+-- backend's refusal; checkpoints that carry the definition; the names sn.mlp then accepts.
+local sn = require "shadenet"
+local reference = require "reference_forward"
+local forward = reference.forward
+
+local function softsign(x) return x / (1 + math.abs(x)) end
+local function softsign_grad(x) return 1 / ((1 + math.abs(x)) * (1 + math.abs(x))) end
+reference.custom.softsign = softsign
+sn.activation.define {
+  name = "softsign",
+  glsl = "x / (1.0 + abs(x))",
+  grad = "1.0 / ((1.0 + abs(x)) * (1.0 + abs(x)))",
+  lua = softsign,
+  lua_grad = softsign_grad,
+}
+-- the twin's derivative against central differences
+for x = -5.03, 5, 0.1 do
+  local h = 1e-6
+  local fd = (softsign(x + h) - softsign(x - h)) / (2 * h)
+  assert(math.abs(fd - softsign_grad(x)) < 1e-8, ("softsign' at %g: %g vs %g"):format(x, softsign_grad(x), fd))
+end
+local hidden = sn.activation.names("hidden")
+assert(hidden[#hidden] == "softsign", "the new name is valid: " .. table.concat(hidden, ", "))
+assert(sn.activation.names("output")[1] == "linear")
+
+-- 16 rows, 8 training: one minibatch of every training row per epoch, so the order does not matter
+local x, y = {}, {}
+for i = 1, 16 do
+  local a, b = math.sin(i * 1.7), math.cos(i * 0.9)
+  x[i] = { a, b, a * b, 0.3, -a, 0.8 * b }
+  y[i] = { 0.5 + 0.4 * a * b, 0.4 + 0.3 * a, 0.2 - 0.1 * b }
+end
+local data = sn.dataset { x = x, y = y, split = 0.5, seed = 4 }
+local net = sn.mlp { inputs = 6, hidden = { 8, 8 }, outputs = 3, activation = "softsign", output_activation = "softsign", seed = 3 }
+assert(tostring(net) == "mlp(6 -> 8x2 -> 3, softsign, out softsign)", tostring(net))
+local p0 = net:params()
+
+-- the Lua reference: loss = mean squared error over the training rows, gradient by central
+-- differences of it, Adam as docs/lua-api/networks.md writes it. eps = 1 makes each step about
+-- lr * g (not lr * sign g), so that the comparison sees every gradient's size.
+local rows = {}
+for i = 1, 8 do rows[i] = { data:row("train", i) } end
+local ref = sn.mlp { inputs = 6, hidden = { 8, 8 }, outputs = 3, activation = "softsign", output_activation = "softsign" }
+local function loss(p)
+  local sum = 0
+  for _, r in ipairs(rows) do
+    local out = forward(ref, r[1], p)  -- in double: set_params would round p +- h to float
+    for o = 1, 3 do sum = sum + (out[o] - r[2][o]) ^ 2 end
+  end
+  return sum / (8 * 3)
+end
+local lr, b1, b2, eps = 0.1, 0.8, 0.9, 1
+local p, m, v = {}, {}, {}
+for j = 1, #p0 do p[j], m[j], v[j] = p0[j], 0, 0 end
+for t = 1, 2 do
+  local g = {}
+  for j = 1, #p do
+    local keep, h = p[j], 1e-6
+    p[j] = keep + h
+    local up = loss(p)
+    p[j] = keep - h
+    local down = loss(p)
+    p[j] = keep
+    g[j] = (up - down) / (2 * h)
+  end
+  for j = 1, #p do
+    m[j] = b1 * m[j] + (1 - b1) * g[j]
+    v[j] = b2 * v[j] + (1 - b2) * g[j] * g[j]
+    p[j] = p[j] - lr * (m[j] / (1 - b1 ^ t)) / (math.sqrt(v[j] / (1 - b2 ^ t)) + eps)
+  end
+end
+local r = sn.train { nets = net, data = data, epochs = 2, batch = 8, adam = { lr = lr, eps = eps }, backend = "auto" }[1]
+assert(r.backend == "gl", "auto picks gl for an activation without cpu code, got " .. r.backend)
+assert(r.steps == 2 and math.abs(r.train_loss[1] - loss(p0)) < 1e-6 * loss(p0), "the same rows and forward pass")
+local got, worst, moved = net:params(), 0, 0
+for j = 1, #p do
+  worst = math.max(worst, math.abs(got[j] - p[j]))
+  moved = math.max(moved, math.abs(p[j] - p0[j]))
+end
+assert(moved > 1e-3, "two steps moved the parameters: " .. moved)
+assert(worst < 1e-6, ("gl after two steps vs the central-difference reference: %g"):format(worst))
+print(("softsign: two gl steps moved parameters up to %.2g; vs the central-difference reference: %.2g"):format(moved, worst))
+assert(#r.dead_units == 0, "no dead-unit figure without cpu code")
+
+-- the cpu backend refuses it, naming the way out
+local ok, err = pcall(sn.train, { nets = net, data = data, epochs = 1, batch = 8, backend = "cpu" })
+assert(not ok and tostring(err):find('softsign\' is a definition without cpu code: train it with backend = "gl"'), tostring(err))
+
+-- rendering: the fragment shader against the Lua twin
+local scene = sn.scene { mesh = "meshes/test_blob.glb", size = { 48, 32 }, views = { count = 1, elevation = 15 } }
+local g = scene:gbuffer { view = 1, attributes = { "normal", "view" } }
+local shown = sn.mlp { inputs = 6, hidden = { 8, 8 }, outputs = 3, activation = "softsign", seed = 7,
+                       input_names = { "normal", "view" } }
+shown.layers[3].bias = { 0.4, 0.5, 0.6 }
+local img, normals, views = shown:render(g), g:read("normal"), g:read("view")
+local w, h = g:size()
+local checked, rworst = 0, 0
+for py = 1, h do
+  for px = 1, w do
+    local n = normals:get(px, py)
+    if n[4] > 0.5 then
+      local vv, c = views:get(px, py), img:get(px, py)
+      local out = forward(shown, { n[1], n[2], n[3], vv[1], vv[2], vv[3] })
+      for k = 1, 3 do rworst = math.max(rworst, math.abs(c[k] - out[k])) end
+      checked = checked + 1
+    end
+  end
+end
+assert(checked > 100 and rworst < 2e-5, ("render: %d pixels, worst %g"):format(checked, rworst))
+
+-- checkpoints carry the definition; a different definition of the name is an error
+local path = os.tmpname() .. ".snmlp"
+net:save(path)
+local back = sn.load(path)
+assert(tostring(back) == tostring(net) and back:params()[5] == net:params()[5])
+sn.activation.define { name = "softsign", glsl = "x / (1.0 + abs(x))", grad = "1.0 / ((1.0 + abs(x)) * (1.0 + abs(x)))",
+                       lua = softsign, lua_grad = softsign_grad }  -- the same again: fine
+sn.activation.define { name = "softsign", glsl = "x / (2.0 + abs(x))", grad = "2.0 / ((2.0 + abs(x)) * (2.0 + abs(x)))",
+                       lua = function(t) return t / (2 + math.abs(t)) end,
+                       lua_grad = function(t) return 2 / ((2 + math.abs(t)) * (2 + math.abs(t))) end }
+ok, err = pcall(sn.load, path)
+assert(not ok and tostring(err):find("activation 'softsign' is defined differently from the network's"), tostring(err))
+os.remove(path)
+print("ok")
