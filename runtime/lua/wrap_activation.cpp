@@ -10,10 +10,11 @@ namespace sn::lua {
 
 namespace {
 
-// A Lua function as a double twin. Runs on the thread that runs the script (the oracle and the
-// definition checks; the cpu backend refuses custom activations).
-std::function<double(double, double)> lua_twin(lua_State* L, int ref, const std::string& what) {
-  return [L, ref, what](double z, double) {
+// A Lua function as a double twin, called on the Lua thread of the binding running now (never a
+// coroutine that defined it and may have ended; the cpu backend refuses custom activations).
+std::function<double(double, double)> lua_twin(lua_State* defined_on, int ref, const std::string& what) {
+  return [defined_on, ref, what](double z, double) {
+    lua_State* L = running_state(defined_on);
     lua_rawgeti(L, LUA_REGISTRYINDEX, ref);
     lua_pushnumber(L, z);
     if (lua_pcall(L, 1, 1, 0) != 0) {

@@ -255,8 +255,8 @@ int w_new(lua_State* L) {
             {"inputs", "hidden", "outputs", "activation", "slope", "omega", "alpha", "output_activation", "init", "seed",
              "color", "input_names"});
   nn::MlpSpec s;
-  s.inputs = int(o.integer("inputs"));
-  s.outputs = int(o.integer("outputs", 3));
+  s.inputs = o.int32("inputs");
+  s.outputs = o.int32("outputs", 3);
   for (double w : o.numbers("hidden")) {
     if (w != std::floor(w)) throw Error("sn.mlp option 'hidden': widths must be integers, got " + std::to_string(w));
     s.hidden.push_back(int(w));

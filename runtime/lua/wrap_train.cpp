@@ -119,8 +119,8 @@ int w_train(lua_State* L) {
   job.data = dataset.get();
 
   nn::TrainConfig& c = job.config;
-  c.epochs = int(o.integer("epochs", c.epochs));
-  c.batch = int(o.integer("batch", c.batch));
+  c.epochs = o.int32("epochs", c.epochs);
+  c.batch = o.int32("batch", c.batch);
   const long long seed = o.integer("seed", c.seed);
   if (seed < 0 || seed > 0xffffffffll) throw Error("sn.train option 'seed' must be in 0..4294967295");
   c.seed = uint32_t(seed);
