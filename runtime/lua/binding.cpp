@@ -110,6 +110,14 @@ std::string check_string(lua_State* L, int idx, const char* what) {
   return std::string(s, len);
 }
 
+void push_strings(lua_State* L, const std::vector<std::string>& items) {
+  lua_createtable(L, int(items.size()), 0);
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    lua_pushlstring(L, items[i].data(), items[i].size());
+    lua_rawseti(L, -2, int(i + 1));
+  }
+}
+
 std::vector<double> check_numbers(lua_State* L, int idx, const char* what, int n) {
   idx = absindex(L, idx);
   if (lua_type(L, idx) == LUA_TNUMBER && n <= 1) return {lua_tonumber(L, idx)};

@@ -110,6 +110,8 @@ std::vector<double> check_numbers(lua_State* L, int idx, const char* what, int n
 // Picks `value` from `valid`; throws "unknown WHAT 'value' (valid: a, b, c)".
 int check_choice(const std::string& value, std::initializer_list<const char*> valid, const char* what);
 std::string join(const std::vector<std::string>& items, const char* sep = ", ");
+// Pushes {"a", "b", ...}, a Lua array of the strings.
+void push_strings(lua_State* L, const std::vector<std::string>& items);
 
 // ---- option tables ----
 // Reads a table argument of named options; unknown keys are an error listing the valid keys.

@@ -66,11 +66,7 @@ int w_names(lua_State* L) {
   const std::string where = luaL_optstring(L, 1, "hidden");
   if (where != "hidden" && where != "output") throw Error("sn.activation.names: 'hidden' or 'output' expected, got '" + where + "'");
   const auto names = nn::activation_names(where == "hidden" ? nn::Position::hidden : nn::Position::output);
-  lua_createtable(L, int(names.size()), 0);
-  for (std::size_t i = 0; i < names.size(); ++i) {
-    lua_pushstring(L, names[i].c_str());
-    lua_rawseti(L, -2, int(i + 1));
-  }
+  push_strings(L, names);
   return 1;
 }
 

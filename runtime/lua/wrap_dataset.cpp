@@ -135,11 +135,7 @@ int w_color(lua_State* L) {
 
 int w_input_names(lua_State* L) {
   const Dataset& d = self(L);
-  lua_createtable(L, int(d.input_names.size()), 0);
-  for (std::size_t i = 0; i < d.input_names.size(); ++i) {
-    lua_pushstring(L, d.input_names[i].c_str());
-    lua_rawseti(L, -2, int(i + 1));
-  }
+  push_strings(L, d.input_names);
   return 1;
 }
 

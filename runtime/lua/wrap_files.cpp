@@ -35,11 +35,7 @@ int w_list(lua_State* L) {
   for (const auto& e : fs::directory_iterator(dir, ec)) names.push_back(e.path().filename().string());
   if (ec) throw Error("cannot list '" + dir + "': " + ec.message());
   std::sort(names.begin(), names.end());
-  lua_createtable(L, int(names.size()), 0);
-  for (size_t i = 0; i < names.size(); ++i) {
-    lua_pushstring(L, names[i].c_str());
-    lua_rawseti(L, -2, int(i + 1));
-  }
+  push_strings(L, names);
   return 1;
 }
 

@@ -114,12 +114,9 @@ int w_new(lua_State* L) {
 
 // sn.lighting.models() -> {"phong", "blinn_phong", ..., then defined models}
 int w_models(lua_State* L) {
-  auto all = shading::models();
-  lua_createtable(L, int(all.size()), 0);
-  for (std::size_t i = 0; i < all.size(); ++i) {
-    lua_pushstring(L, all[i]->name.c_str());
-    lua_rawseti(L, -2, int(i + 1));
-  }
+  std::vector<std::string> names;
+  for (const auto& m : shading::models()) names.push_back(m->name);
+  push_strings(L, names);
   return 1;
 }
 
@@ -182,11 +179,7 @@ int w_with(lua_State* L) {
 // model:attributes() -> the G-buffer attributes it reads
 int w_attributes(lua_State* L) {
   auto a = shading::model_attributes(self(L));
-  lua_createtable(L, int(a.size()), 0);
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    lua_pushstring(L, a[i].c_str());
-    lua_rawseti(L, -2, int(i + 1));
-  }
+  push_strings(L, a);
   return 1;
 }
 

@@ -312,11 +312,7 @@ int w_trained_steps(lua_State* L) {
 
 int w_inputs(lua_State* L) {
   const Mlp& net = self(L);
-  lua_createtable(L, int(net.input_names.size()), 0);
-  for (std::size_t i = 0; i < net.input_names.size(); ++i) {
-    lua_pushstring(L, net.input_names[i].c_str());
-    lua_rawseti(L, -2, int(i + 1));
-  }
+  push_strings(L, net.input_names);
   return 1;
 }
 

@@ -66,11 +66,7 @@ int w_dispatch(lua_State* L) {
 
 int w_uniforms(lua_State* L) {
   auto names = check<Program>(L, 1, kType).uniform_names();
-  lua_createtable(L, int(names.size()), 0);
-  for (size_t i = 0; i < names.size(); ++i) {
-    lua_pushstring(L, names[i].c_str());
-    lua_rawseti(L, -2, int(i + 1));
-  }
+  push_strings(L, names);
   return 1;
 }
 

@@ -416,11 +416,7 @@ int w_meshes(lua_State* L) {
 
 int w_notes(lua_State* L) {
   LuaScene& s = self(L);
-  lua_createtable(L, int(s.notes.size()), 0);
-  for (std::size_t i = 0; i < s.notes.size(); ++i) {
-    lua_pushstring(L, s.notes[i].c_str());
-    lua_rawseti(L, -2, int(i + 1));
-  }
+  push_strings(L, s.notes);
   return 1;
 }
 
@@ -453,11 +449,7 @@ int w_gb_read(lua_State* L) {
 
 int w_gb_attributes(lua_State* L) {
   scene::GBuffer& g = gbuffer(L);
-  lua_createtable(L, int(g.attributes.size()), 0);
-  for (std::size_t i = 0; i < g.attributes.size(); ++i) {
-    lua_pushstring(L, g.attributes[i].c_str());
-    lua_rawseti(L, -2, int(i + 1));
-  }
+  push_strings(L, g.attributes);
   return 1;
 }
 

@@ -197,11 +197,7 @@ int w_train(lua_State* L) {
 // sn.backends() -> names of the training backends in this build ("cpu", "gl", ...)
 int w_backends(lua_State* L) {
   auto names = nn::backend_names();
-  lua_createtable(L, int(names.size()), 0);
-  for (std::size_t i = 0; i < names.size(); ++i) {
-    lua_pushstring(L, names[i].c_str());
-    lua_rawseti(L, -2, int(i + 1));
-  }
+  push_strings(L, names);
   return 1;
 }
 
