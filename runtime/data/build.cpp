@@ -83,8 +83,9 @@ std::shared_ptr<Dataset> build_dataset(const scene::Scene& s, const DatasetReque
     if (std::find(attributes.begin(), attributes.end(), a) == attributes.end()) attributes.push_back(a);
   auto index_of = [&](const std::string& a) { return int(std::find(attributes.begin(), attributes.end(), a) - attributes.begin()); };
 
+  std::vector<int> widths;  // columns of each input, looked up once, not per row
   int in_width = 0;
-  for (const auto& a : r.inputs) in_width += is_varied(r, a) ? 1 : scene::attribute_width(a);
+  for (const auto& a : r.inputs) in_width += widths.emplace_back(is_varied(r, a) ? 1 : scene::attribute_width(a));
 
   struct Row {
     uint64_t key;  // pose << 48 | view << 32 | pixel
@@ -133,8 +134,7 @@ std::shared_ptr<Dataset> build_dataset(const scene::Scene& s, const DatasetReque
     for (std::size_t i = 0; i < smp.count; ++i) {
       rows.push_back({key_of(i), base + i});
       for (std::size_t k = 0; k < r.inputs.size(); ++k)
-        for (int c = 0; c < (is_varied(r, r.inputs[k]) ? 1 : scene::attribute_width(r.inputs[k])); ++c)
-          xs.push_back(in[k][i * 4 + c]);
+        for (int c = 0; c < widths[k]; ++c) xs.push_back(in[k][i * 4 + c]);
       for (int c = 0; c < 3; ++c) ys.push_back(t[i * 4 + c]);
     }
   }

@@ -161,8 +161,7 @@ StressResult stress_test(const LightingParams& p, const std::vector<scene::Light
 namespace {
 // Everyday points beside the adversarial ones: random unit n and v (xorshift, fixed seed), with
 // the other attributes cycling through the grid's values.
-std::vector<StressSample> random_grid(const scene::Light& light, std::size_t count) {
-  std::vector<StressSample> grid = adversarial_grid(light);
+std::vector<StressSample> random_grid(const std::vector<StressSample>& grid, std::size_t count) {
   uint64_t x = 0x9e3779b97f4a7c15ull;
   auto unit = [&] {
     for (;;) {
@@ -191,7 +190,7 @@ TwinCheck check_twin(const LightingParams& p, const std::vector<scene::Light>& l
   TwinCheck c;
   for (const scene::Light& light : lights) {
     auto grid = adversarial_grid(light);
-    auto everyday = random_grid(light, 20000);
+    auto everyday = random_grid(grid, 20000);
     grid.insert(grid.end(), everyday.begin(), everyday.end());
     auto gpu = evaluate(p, light, model_samples(p, stress_samples(grid)), shading::ColorSpace::rgb, true);
     for (std::size_t i = 0; i < grid.size(); ++i) {
