@@ -12,6 +12,7 @@ packages=(
   libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libgbm1   # GL 4.5 core through EGL (llvmpipe without a GPU)
   xvfb xauth                        # windowed tests without a display
   libgtest-dev                      # unit tests
+  clang libclang-rt-14-dev          # fuzz targets (tools/fuzz.sh: libFuzzer, ASan, UBSan)
   gnuplot-nox                       # plots
   fonts-dejavu-core                 # figure labels (OpenImageIO render_text; its default DroidSans is not packaged)
 )
