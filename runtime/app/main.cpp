@@ -1,5 +1,5 @@
 // shadenet [options] script.lua [args...]: runs a Lua experiment script, headless by default;
-// --watch keeps it live (runtime/app/live_loop.h).
+// --watch keeps it live (runtime/live/live_loop.h).
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -7,7 +7,7 @@
 
 #include <lua.hpp>
 
-#include "app/live_loop.h"
+#include "live/live_loop.h"
 #include "app/options.h"
 #include "gl/context.h"
 #include "lua/module.h"

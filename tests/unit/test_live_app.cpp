@@ -13,9 +13,9 @@
 #include <fstream>
 #include <thread>
 
-#include "app/file_watcher.h"
-#include "app/input.h"
-#include "app/repl.h"
+#include "live/file_watcher.h"
+#include "live/input.h"
+#include "live/repl.h"
 
 using namespace sn::app;
 namespace fs = std::filesystem;

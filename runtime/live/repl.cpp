@@ -1,4 +1,4 @@
-#include "app/repl.h"
+#include "live/repl.h"
 
 #include <fcntl.h>
 #include <poll.h>

@@ -1,4 +1,4 @@
-#include "app/input.h"
+#include "live/input.h"
 
 #include <GLFW/glfw3.h>
 

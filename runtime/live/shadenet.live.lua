@@ -1,6 +1,6 @@
 -- Live mode, the Lua side: what survives a reload (sn.keep), what the window shows
 -- (sn.live.show), the same view headless (sn.live.render), screenshots and recordings
--- (sn.live.screenshot, sn.record). The C++ loop (runtime/app/live_loop.cpp) drives it through
+-- (sn.live.screenshot, sn.record). The C++ loop (runtime/live/live_loop.cpp) drives it through
 -- the live._* functions at the bottom; a plain headless script uses the same functions, so
 -- every image the window shows can be produced without a display.
 local sn = require "shadenet.core"
@@ -529,7 +529,7 @@ end
 live.record = sn.record
 
 ---------------------------------------------------------------------------------------------
--- The loop's side (runtime/app/live_loop.cpp). Not for scripts.
+-- The loop's side (runtime/live/live_loop.cpp). Not for scripts.
 
 -- Before each (re)run of the watched script: its modules load afresh, kept networks go back
 -- to their snapshot, and sn.live.show calls collect in `pending`.

@@ -1,4 +1,4 @@
-#include "app/file_watcher.h"
+#include "live/file_watcher.h"
 
 #include <fcntl.h>
 #include <poll.h>

@@ -1,4 +1,4 @@
-#include "app/live_loop.h"
+#include "live/live_loop.h"
 
 #include <GLFW/glfw3.h>
 #include <unistd.h>
@@ -18,9 +18,9 @@
 #include <set>
 #include <sstream>
 
-#include "app/file_watcher.h"
-#include "app/input.h"
-#include "app/repl.h"
+#include "live/file_watcher.h"
+#include "live/input.h"
+#include "live/repl.h"
 #include "gl/buffer.h"  // gl::finish
 #include "gl/context.h"
 #include "gl/program.h"
