@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace sn::app {
+namespace sn::live {
 
 namespace {
 constexpr double kPi = 3.14159265358979323846;
@@ -165,4 +165,4 @@ void Input::on_key(GLFWwindow* w, int key, int, int action, int mods) {
     static_cast<Input*>(glfwGetWindowUserPointer(w))->key(key, mods);
 }
 
-}  // namespace sn::app
+}  // namespace sn::live

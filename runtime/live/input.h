@@ -7,7 +7,7 @@
 
 struct GLFWwindow;
 
-namespace sn::app {
+namespace sn::live {
 
 enum class Mode { network, truth, error, side };
 const char* mode_name(Mode m);
@@ -72,4 +72,4 @@ class Input {
   double last_x_ = 0, last_y_ = 0;
 };
 
-}  // namespace sn::app
+}  // namespace sn::live

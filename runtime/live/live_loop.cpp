@@ -29,7 +29,7 @@
 #include "io/image.h"
 #include "lua/binding.h"
 
-namespace sn::app {
+namespace sn::live {
 
 namespace {
 
@@ -562,4 +562,4 @@ int run_live(lua_State* L, const LiveOptions& options) {
   return loop.run();
 }
 
-}  // namespace sn::app
+}  // namespace sn::live

@@ -13,7 +13,7 @@
 
 #include <lua.hpp>
 
-namespace sn::app {
+namespace sn::live {
 
 struct LiveOptions {
   std::string script;                // the script to (re)run; arguments are in the global `arg`
@@ -26,4 +26,4 @@ struct LiveOptions {
 // SHADENET_LIVE_EXIT_AFTER time. Returns the exit status (0; 1 when the loop cannot start).
 int run_live(lua_State* L, const LiveOptions& options);
 
-}  // namespace sn::app
+}  // namespace sn::live

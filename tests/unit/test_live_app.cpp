@@ -17,7 +17,7 @@
 #include "live/input.h"
 #include "live/repl.h"
 
-using namespace sn::app;
+using namespace sn::live;
 namespace fs = std::filesystem;
 
 TEST(LiveInput, OrbitRoundTrip) {
