@@ -50,12 +50,12 @@ Orbit Orbit::from(const std::array<double, 3>& c, const std::array<double, 3>& p
   return o;
 }
 
-void Input::set_initial(const Orbit& camera, double fov, const Orbit& light, Mode mode, bool reset) {
+void Input::set_initial(const Orbit& camera, double fov, const Orbit& light, Mode mode, Reset reset) {
   initial_camera_ = camera, initial_light_ = light, initial_mode_ = mode;
   view_.fov = fov;
-  if (reset || !view_.camera_moved) view_.camera = camera, view_.camera_moved = false;
-  if (reset || !view_.light_moved) view_.light = light, view_.light_moved = false;
-  if (reset) view_.mode = mode;
+  if (reset.camera || !view_.camera_moved) view_.camera = camera, view_.camera_moved = false;
+  if (reset.light || !view_.light_moved) view_.light = light, view_.light_moved = false;
+  if (reset.mode) view_.mode = mode;
   dirty_ = true;
 }
 

@@ -41,9 +41,12 @@ class Input {
  public:
   // Installs the callbacks on `window` (its user pointer is this object).
   void attach(GLFWwindow* window);
-  // Sets the camera and light the script asked for; what the user moved since is dropped
-  // only when `reset` (the script's camera or light changed, or the Home key).
-  void set_initial(const Orbit& camera, double fov, const Orbit& light, Mode mode, bool reset);
+  // Sets the camera, light and mode the script asked for; what the user changed since is
+  // dropped only for the parts in `reset` (the script changed that part).
+  struct Reset {
+    bool camera = false, light = false, mode = false;
+  };
+  void set_initial(const Orbit& camera, double fov, const Orbit& light, Mode mode, Reset reset);
 
   ViewState& view() { return view_; }
   // True once since the last call when the view changed (a redraw is due).

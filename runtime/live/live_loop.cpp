@@ -37,15 +37,21 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-// The line of an error message to show in a title: the first that names a file:line (a GLSL
-// error's second line), else the first.
+// The line of an error message to show in a title: the first that names a shader's file:line
+// (a GLSL error raised inside the script names the script's line first, and the shader's is
+// the one to fix), else the first that names any file:line, else the first line.
 std::string headline(const std::string& s) {
   std::istringstream in(s);
-  std::string line;
-  static const std::regex where(R"([^\s:]+:\d+:)");
-  while (std::getline(in, line))
-    if (std::regex_search(line, where)) return line;
-  return s.substr(0, s.find('\n'));
+  std::string line, first_where;
+  static const std::regex where(R"(([^\s:]+):\d+:)");
+  std::smatch m;
+  while (std::getline(in, line)) {
+    if (!std::regex_search(line, m, where)) continue;
+    std::string file = m[1];
+    if (file.size() < 4 || file.compare(file.size() - 4, 4, ".lua") != 0) return line;
+    if (first_where.empty()) first_where = line;
+  }
+  return !first_where.empty() ? first_where : s.substr(0, s.find('\n'));
 }
 
 std::string read_all(const std::string& path) {
@@ -159,7 +165,11 @@ class Loop {
   long frame_ = 0;
   std::array<double, 9> initial_{};  // eye, target, light dir of the script's view
   std::string initial_mode_;
+  double initial_fov_ = 0;
   std::pair<int, int> drawn_size_{0, 0};
+  bool reload_pending_ = false;
+  Clock::time_point reload_at_;
+  static constexpr std::chrono::milliseconds kSettle{40};
 };
 
 bool Loop::push_live(const char* fn) {
@@ -252,10 +262,17 @@ bool Loop::files_changed() {
 void Loop::run_script() {
   auto t0 = Clock::now();
   for (const auto& f : watched_) contents_[f] = read_all(f);
-  // A syntax error changes nothing: the last good state stays, networks included.
-  if (luaL_loadfile(L_, o_.script.c_str()) != 0) {
-    script_error_ = lua_tostring(L_, -1);
+  // A syntax error changes nothing: the last good state stays, networks included. The files
+  // are still watched (the first run may be the broken one), so the fix is seen.
+  std::string source = read_all(o_.script);
+  bool empty = source.find_first_not_of(" \t\r\n") == std::string::npos;
+  if (empty || luaL_loadfile(L_, o_.script.c_str()) != 0) {
+    // An empty file is a save in progress (truncated, not yet written) or a mistake, never a good run.
+    script_error_ = !empty ? lua_tostring(L_, -1)
+                   : source == "\x01missing" ? o_.script + ": cannot read the script (missing?); waiting for it"
+                                             : o_.script + ": the script is empty; waiting for the next save";
     lua_settop(L_, 0);
+    update_watch_set();
     set_status();
     return;
   }
@@ -309,14 +326,19 @@ void Loop::sync_view(bool force_reset) {
   double fov = lua_tonumber(L_, 3);
   std::string mode = lua_tostring(L_, 5) ? lua_tostring(L_, 5) : "network";
   lua_settop(L_, 0);
-  bool reset = force_reset || v != initial_ || mode != initial_mode_;
-  initial_ = v, initial_mode_ = mode;
+  // Each part resets only when the script changed that part: a new light keeps the mode the
+  // user picked, a new mode keeps the camera the user moved.
+  auto differs = [&](int from, int to) { return !std::equal(v.begin() + from, v.begin() + to, initial_.begin() + from); };
+  bool reset_camera = force_reset || differs(0, 6) || fov != initial_fov_;
+  bool reset_light = force_reset || differs(6, 9);
+  bool reset_mode = force_reset || mode != initial_mode_;
+  initial_ = v, initial_mode_ = mode, initial_fov_ = fov;
   Mode m = Mode::network;
   parse_mode(mode, m);
   Orbit cam = Orbit::from({v[3], v[4], v[5]}, {v[0], v[1], v[2]});
   Orbit light = Orbit::from({0, 0, 0}, {v[6], v[7], v[8]});
   light.distance = 1;
-  input_.set_initial(cam, fov, light, m, reset);
+  input_.set_initial(cam, fov, light, m, {reset_camera, reset_light, reset_mode});
 }
 
 void Loop::take_requests() {
@@ -412,6 +434,7 @@ void Loop::redraw() {
   std::string err;
   if (!call("_frame", 1, 2, &err)) {
     frame_error_ = err;
+    update_watch_set();  // a module the frame required (and that broke) must stay watched
     return set_status();
   }
   frame_error_.clear();
@@ -521,8 +544,11 @@ int Loop::run() {
   if (console_) console_->prompt();
 
   while (!quit_) {
-    if (files_changed()) run_script();
-    console();
+    // A save is run once its files were quiet for kSettle: an editor that truncates, then writes,
+    // or two saves in a row, give one run of the finished file.
+    if (files_changed()) reload_at_ = Clock::now() + kSettle, reload_pending_ = true;
+    if (reload_pending_ && Clock::now() >= reload_at_) reload_pending_ = false, run_script();
+    if (!reload_pending_) console();  // a line typed after a save runs after its reload
     actions();
     if (input_.take_dirty()) dirty_ = true;
     if (ctx_.windowed()) {
@@ -548,6 +574,8 @@ int Loop::run() {
       timeout = exit_after_ - seconds_since(start);
       if (timeout <= 0) break;
     }
+    if (reload_pending_)
+      timeout = std::min(timeout, std::max(0.0, std::chrono::duration<double>(reload_at_ - Clock::now()).count()));
     if (ctx_.windowed()) ctx_.poll(timeout);  // sleeps until an event, a file save or a console line
     else waker_.wait(timeout);
   }

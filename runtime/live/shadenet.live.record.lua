@@ -8,26 +8,17 @@ local live = sn.live
 local strict, is_mode, MODES = check.strict, check.is_mode, check.MODES
 local render, resolve_view, current_spec = view_of.render, view_of.resolve_view, view_of.current_spec
 
-local function numbered(dir, stem, ext)
-  os.execute(("mkdir -p %q"):format(dir))
-  for i = 1, 99999 do
-    local p = ("%s/%s-%04d%s"):format(dir, stem, i, ext)
-    local f = io.open(p, "r")
-    if not f then return p end
-    f:close()
-  end
-  error("sn.live: no free file name in " .. dir)
-end
-
 local absolute = sn.live_absolute
 
 -- sn.live.screenshot([path]) -> absolute path: saves the current view (PNG unless the path
 -- says otherwise); by default out/live/screenshot-NNNN.png.
 function live.screenshot(path)
   local view = S.view or resolve_view(current_spec("sn.live.screenshot"), {})
-  path = path or numbered("out/live", "screenshot", ".png")
   local spec = current_spec("sn.live.screenshot")
-  render(spec, view):read():save(path)
+  local image = render(spec, view):read()
+  -- claimed, not looked for: another instance saving at the same moment gets the next number
+  path = path or sn.fs.claim("out/live", "screenshot", ".png")
+  image:save(path)
   return absolute(path)
 end
 
@@ -52,18 +43,11 @@ function sn.record(o)
   end
   view.width, view.height = o.width or view.width, o.height or view.height
   local dir = o.dir
-  if not dir then
-    os.execute("mkdir -p out/live")
-    for i = 1, 9999 do
-      dir = ("out/live/record-%04d"):format(i)
-      local f = io.open(dir .. "/frame-0001.png", "r")
-      if not f then break end
-      f:close()
-    end
-  end
-  os.execute(("mkdir -p %q"):format(dir))
   local paths = {}
   local function frame(k)
+    if k == 1 then  -- the folder is made once the options were checked: no empty folder on a typo
+      dir = dir and sn.fs.mkdir(dir) or sn.fs.claim("out/live", "record")
+    end
     local p = ("%s/frame-%04d.png"):format(dir, k)
     render(spec, view):read():save(p)
     paths[#paths + 1] = absolute(p)
@@ -100,6 +84,6 @@ function sn.record(o)
     if before ~= nil then s.set(before) end
     if not ok then error("sn.record: " .. tostring(err), 2) end
   end
-  return absolute(dir), paths
+  return dir and absolute(dir), paths  -- nil when count was 0: nothing was written
 end
 live.record = sn.record
