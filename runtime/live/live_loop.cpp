@@ -18,7 +18,9 @@
 #include <set>
 #include <sstream>
 
+#include "live/error_report.h"
 #include "live/file_watcher.h"
+#include "live/hud.h"
 #include "live/input.h"
 #include "live/repl.h"
 #include "gl/buffer.h"  // gl::finish
@@ -36,23 +38,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-
-// The line of an error message to show in a title: the first that names a shader's file:line
-// (a GLSL error raised inside the script names the script's line first, and the shader's is
-// the one to fix), else the first that names any file:line, else the first line.
-std::string headline(const std::string& s) {
-  std::istringstream in(s);
-  std::string line, first_where;
-  static const std::regex where(R"(([^\s:]+):\d+:)");
-  std::smatch m;
-  while (std::getline(in, line)) {
-    if (!std::regex_search(line, m, where)) continue;
-    std::string file = m[1];
-    if (file.size() < 4 || file.compare(file.size() - 4, 4, ".lua") != 0) return line;
-    if (first_where.empty()) first_where = line;
-  }
-  return !first_where.empty() ? first_where : s.substr(0, s.find('\n'));
-}
 
 std::string read_all(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -137,7 +122,7 @@ class Loop {
   void console();
   void take_requests();
   void redraw();
-  void present_last();
+  void present();
   void actions();
   void set_status();
   void report(const std::string& message);
@@ -147,6 +132,7 @@ class Loop {
   gl::Context& ctx_;
   Waker waker_;
   Input input_;
+  Hud hud_;
   std::unique_ptr<FileWatcher> watcher_;
   std::unique_ptr<StdinReader> stdin_;
   std::unique_ptr<Console> console_;
@@ -158,7 +144,9 @@ class Loop {
   std::vector<std::string> watched_;
 
   std::string script_error_, frame_error_, shader_error_, last_reported_, title_;
-  std::string snapshot_;
+  std::string snapshot_, shown_path_;
+  long shown_count_ = 0;
+  bool present_due_ = false;
   double exit_after_ = 0, frame_ms_ = 0;
   bool dirty_ = true, quit_ = false, prompt_after_frame_ = false;
   std::string shown_title_;
@@ -201,11 +189,20 @@ bool Loop::call(const char* fn, int nargs, int nresults, std::string* error) {
   return true;
 }
 
+// The terminal gets the overlay's text (headline, source line, context), then the traceback.
 void Loop::report(const std::string& message) {
   if (message == last_reported_) return;
-  if (!message.empty()) fprintf(stderr, "[live] error: %s\n", message.c_str());
-  else fprintf(stderr, "[live] fixed: the error is gone\n");
+  if (!message.empty()) {
+    ErrorReport r = report_error(message);
+    std::string text;
+    for (const auto& l : report_lines(r, size_t(-1))) text += (text.empty() ? "" : "\n") + l;
+    fprintf(stderr, "[live] error: %s\n%s", text.c_str(), r.traceback.empty() ? "" : (r.traceback + "\n").c_str());
+  } else {
+    fprintf(stderr, "[live] fixed: the error is gone\n");
+  }
   last_reported_ = message;
+  hud_.set_error(message);
+  present_due_ = true;  // the overlay shows or clears over the picture as it is
   fflush(stderr);
 }
 
@@ -215,7 +212,7 @@ void Loop::set_status() {
   report(err);
   char ms[32] = "";
   if (frame_ms_ > 0) snprintf(ms, sizeof ms, " · %.1f ms", frame_ms_);
-  std::string title = (err.empty() ? "" : "ERROR " + headline(err) + " | ") + (title_.empty() ? "shadenet" : title_) + ms;
+  std::string title = (err.empty() ? "" : "ERROR " + report_error(err).headline + " | ") + (title_.empty() ? "shadenet" : title_) + ms;
   if (title != shown_title_) ctx_.set_title(title), shown_title_ = title;
   lua_pushstring(L_, title.c_str());
   lua_pushstring(L_, err.c_str());
@@ -449,7 +446,7 @@ void Loop::redraw() {
   if (target_ref_ != LUA_NOREF) luaL_unref(L_, LUA_REGISTRYINDEX, target_ref_);
   lua_pushvalue(L_, 1);
   target_ref_ = luaL_ref(L_, LUA_REGISTRYINDEX);  // shown again when the window is uncovered
-  ctx_.present(target.fbo(), target.width(), target.height());
+  present_due_ = true;
   if (!snapshot_.empty()) {
     char path[4096];
     snprintf(path, sizeof path, snapshot_.c_str(), int(frame_));
@@ -465,12 +462,28 @@ void Loop::redraw() {
   set_status();
 }
 
-void Loop::present_last() {
-  if (target_ref_ == LUA_NOREF) return;
-  lua_rawgeti(L_, LUA_REGISTRYINDEX, target_ref_);
-  auto& t = lua::check<gl::RenderTarget>(L_, -1, "Target");
-  ctx_.present(t.fbo(), t.width(), t.height());
-  lua_pop(L_, 1);
+// Shows the last picture with the overlays over it; SHADENET_LIVE_SHOWN saves what is shown.
+void Loop::present() {
+  present_due_ = false;
+  if (!ctx_.windowed() && shown_path_.empty()) return;
+  const gl::RenderTarget* frame = nullptr;
+  if (target_ref_ != LUA_NOREF) {
+    lua_rawgeti(L_, LUA_REGISTRYINDEX, target_ref_);
+    frame = &lua::check<gl::RenderTarget>(L_, -1, "Target");
+    lua_pop(L_, 1);  // the registry keeps it alive
+  }
+  auto [w, h] = ctx_.windowed() ? ctx_.framebuffer_size() : std::pair<int, int>{640, 480};
+  if (w < 1 || h < 1) return;  // minimised
+  const gl::RenderTarget& shown = hud_.compose(frame, w, h);
+  ctx_.present(shown.fbo(), shown.width(), shown.height());
+  if (shown_path_.empty()) return;
+  char path[4096];
+  snprintf(path, sizeof path, shown_path_.c_str(), int(++shown_count_));
+  try {
+    io::save_image(shown.read(), path);
+  } catch (const std::exception& e) {
+    fprintf(stderr, "[live] SHADENET_LIVE_SHOWN: %s\n", e.what());
+  }
 }
 
 void Loop::actions() {
@@ -489,13 +502,14 @@ void Loop::actions() {
     run_lua("local sn = require 'shadenet'; local dir, frames = sn.record { orbit = { count = 36 } }; "
             "print(('[live] recorded %d frames of an orbit in %s'):format(#frames, dir))");
   if (a.print_view) run_lua("local sn = require 'shadenet'; print(sn.live.view_code())");
-  if (a.present && !dirty_) present_last();
+  if (a.present && !dirty_) present_due_ = true;
   fflush(stdout);
 }
 
 int Loop::run() {
   if (const char* s = getenv("SHADENET_LIVE_SNAPSHOT"); s && *s) snapshot_ = s;
   if (const char* s = getenv("SHADENET_LIVE_EXIT_AFTER"); s && *s) exit_after_ = atof(s);
+  if (const char* s = getenv("SHADENET_LIVE_SHOWN"); s && *s) shown_path_ = s;
   auto start = Clock::now();
 
   // The module table: `require "shadenet"` before the script, so its sn.live functions exist.
@@ -564,6 +578,13 @@ int Loop::run() {
         lua_settop(L_, 0);
         frame_error_ = e.what();
         set_status();
+      }
+    }
+    if (present_due_ && !quit_) {
+      try {
+        present();
+      } catch (const std::exception& e) {
+        fprintf(stderr, "[live] cannot show the overlay: %s\n", e.what());
       }
     }
     if (prompt_after_frame_ && console_) console_->prompt(), prompt_after_frame_ = false;

@@ -4,8 +4,10 @@
 // redraws only when one of those changed, sleeping in between.
 //
 // Test hooks (environment):
-//   SHADENET_LIVE_SNAPSHOT=path   save each redrawn frame (the offscreen image the window shows)
-//                                 to path; a "%d" in it is replaced by the frame number
+//   SHADENET_LIVE_SNAPSHOT=path   save each redrawn frame (the view, without overlays) to path;
+//                                 a "%d" in it is replaced by the frame number
+//   SHADENET_LIVE_SHOWN=path      save what the window shows (the view with its overlays: error,
+//                                 progress, counter, labels) each time it is shown, headless too
 //   SHADENET_LIVE_EXIT_AFTER=s    leave the loop after s seconds
 #pragma once
 #include <string>

@@ -58,7 +58,7 @@ assert(status_error() == "", "the error was cleared by the good save")
 
 -- 4. A broken shader: reported with its file:line, the last good program keeps drawing.
 H.write(frag, (shader:gsub("float lambert", "float lambert = ;\n  float lambert2")))
-local msg = s:wait_log("%[live%] error: (GLSL compile error[^\n]*)")
+local msg = s:wait_log("%[live%] error: ([^\n]*tint%.frag:%d+: error[^\n]*)")
 local frag_line = s:wait_log("(tint%.frag:%d+): error")
 assert(frag_line == "tint.frag:8", "shader error at " .. frag_line .. ", expected tint.frag:8 (the broken statement)")
 assert(status_error():find("tint.frag", 1, true), "the status names the shader")

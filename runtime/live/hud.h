@@ -1,0 +1,40 @@
+// What live mode draws over its view (the heads-up display): the error overlay, the training
+// progress bar, the frame-time counter and the panels' labels. It keeps the last good picture
+// untouched: the overlays go on a copy, which the window shows (and SHADENET_LIVE_SHOWN saves).
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "gl/render_target.h"
+#include "io/image.h"
+
+namespace sn::live {
+
+struct Placed {
+  io::Image image;  // RGBA
+  int x = 0, y = 0;  // top-left, in the picture's pixels
+};
+
+class Hud {
+ public:
+  // The error to show ("" = none): its report's lines over the bottom of the picture.
+  void set_error(const std::string& message);
+  bool has_error() const { return !error_lines_.empty(); }
+
+  // The overlays for a w x h picture, in drawing order.
+  std::vector<Placed> layout(int w, int h) const;
+
+  // The picture to show: `frame` (may be null: nothing drawn yet, a w x h dark picture) with the
+  // overlays blended over a copy. Returns the target to present (frame itself when no overlay).
+  const gl::RenderTarget& compose(const gl::RenderTarget* frame, int w, int h);
+
+ private:
+  std::vector<std::string> error_lines_;
+  std::unique_ptr<gl::RenderTarget> shown_;
+};
+
+// The font size for overlays on a picture `w` pixels wide.
+float overlay_font_size(int w);
+
+}  // namespace sn::live
