@@ -29,6 +29,11 @@ std::vector<Placed> Hud::layout(int w, int h) const {
     p.y = std::max(0, h - p.image.height);
     out.push_back(std::move(p));
   }
+  if (!progress_text_.empty()) {
+    io::OverlayStyle style;
+    style.size = overlay_font_size(w);
+    out.push_back({io::progress_bar(progress_, progress_text_, w, {0.15f, 0.45f, 0.85f}, style), 0, 0});
+  }
   return out;
 }
 

@@ -21,6 +21,9 @@ class Hud {
   // The error to show ("" = none): its report's lines over the bottom of the picture.
   void set_error(const std::string& message);
   bool has_error() const { return !error_lines_.empty(); }
+  // Long work under way: a bar across the top, `fraction` (0..1) filled, `text` on it. "" = none.
+  void set_progress(const std::string& text, double fraction) { progress_text_ = text, progress_ = fraction; }
+  bool has_progress() const { return !progress_text_.empty(); }
 
   // The overlays for a w x h picture, in drawing order.
   std::vector<Placed> layout(int w, int h) const;
@@ -31,6 +34,8 @@ class Hud {
 
  private:
   std::vector<std::string> error_lines_;
+  std::string progress_text_;
+  double progress_ = 0;
   std::unique_ptr<gl::RenderTarget> shown_;
 };
 

@@ -71,11 +71,17 @@ Actions Input::take_actions() {
   return a;
 }
 
+bool Input::take_cancel() {
+  bool c = actions_.cancel || actions_.quit;
+  actions_.cancel = actions_.quit = false;
+  return c;
+}
+
 const char* Input::help() {
   return "keys: 1 network  2 truth  3 |error| heatmap  4 side by side (truth | network | error)  Tab next view\n"
          "      left drag: orbit   wheel: zoom   right drag or arrows: move the light   Home: reset view\n"
          "      [ ] heatmap scale   S or F12: screenshot   R: record an orbit   P: print the view as Lua\n"
-         "      H: this help   Esc or Q: quit\n";
+         "      H: this help   Esc or Q: quit (while training or recording: cancel it; C too)\n";
 }
 
 void Input::drag(double dx, double dy, bool light) {
@@ -124,6 +130,7 @@ void Input::key(int k, int mods) {
     case GLFW_KEY_F1: actions_.help = true; break;
     case GLFW_KEY_ESCAPE:
     case GLFW_KEY_Q: actions_.quit = true; break;
+    case GLFW_KEY_C: actions_.cancel = true; break;
     default: break;
   }
 }

@@ -33,7 +33,7 @@ struct ViewState {
 };
 
 struct Actions {
-  bool screenshot = false, record = false, print_view = false, quit = false, help = false;
+  bool screenshot = false, record = false, print_view = false, quit = false, help = false, cancel = false;
   bool present = false;  // the window was uncovered: show the last frame again (no new render)
 };
 
@@ -52,6 +52,9 @@ class Input {
   // True once since the last call when the view changed (a redraw is due).
   bool take_dirty();
   Actions take_actions();
+  // True once when Esc, Q or C was pressed since the last call: long work (training, recording)
+  // stops. The other actions wait for the loop.
+  bool take_cancel();
   static const char* help();  // the key bindings, for the terminal
 
   // What the callbacks do (public so tests and the loop can drive them without a window).

@@ -105,6 +105,12 @@ class Loop {
  public:
   Loop(lua_State* L, const LiveOptions& o) : L_(L), o_(o), ctx_(gl::current()), waker_(ctx_.windowed()) {}
   ~Loop() {
+    if (live_ref_ != LUA_NOREF) {  // the loop's tick must not outlive it
+      lua_rawgeti(L_, LUA_REGISTRYINDEX, live_ref_);
+      lua_pushnil(L_);
+      lua_setfield(L_, -2, "_tick");
+      lua_pop(L_, 1);
+    }
     gl::set_shader_file_observer(nullptr);
     gl::set_program_fallback(nullptr);
     if (target_ref_ != LUA_NOREF) luaL_unref(L_, LUA_REGISTRYINDEX, target_ref_);
@@ -123,6 +129,9 @@ class Loop {
   void take_requests();
   void redraw();
   void present();
+  bool tick(const std::string& text, double fraction);
+  static int tick_thunk(lua_State* L);
+  void end_busy();
   void actions();
   void set_status();
   void report(const std::string& message);
@@ -147,6 +156,7 @@ class Loop {
   std::string snapshot_, shown_path_;
   long shown_count_ = 0;
   bool present_due_ = false;
+  Clock::time_point last_tick_{};
   double exit_after_ = 0, frame_ms_ = 0;
   bool dirty_ = true, quit_ = false, prompt_after_frame_ = false;
   std::string shown_title_;
@@ -303,6 +313,7 @@ void Loop::run_script() {
     dirty_ = true;
   }
   take_requests();
+  end_busy();
   set_status();
 }
 
@@ -386,6 +397,7 @@ void Loop::console() {
       continue;
     }
     lua_settop(L_, 0);
+    end_busy();
     if (ok) dirty_ = true;  // a line that ran may have changed anything the view depends on
     take_requests();
     if (!dirty_) console_->prompt();  // after a redraw otherwise, so the prompt follows its messages
@@ -462,6 +474,48 @@ void Loop::redraw() {
   set_status();
 }
 
+// sn.live._tick(text, fraction) -> cancelled: called by long work (shadenet.live.busy.lua).
+int Loop::tick_thunk(lua_State* L) {
+  auto* self = static_cast<Loop*>(lua_touserdata(L, lua_upvalueindex(1)));
+  const char* text = luaL_checkstring(L, 1);
+  double fraction = luaL_optnumber(L, 2, 0);
+  lua_pushboolean(L, self->tick(text, fraction));
+  return 1;
+}
+
+// Between epochs or recorded frames: at most every 50 ms (at least 10 pictures a second while
+// the work reports at least that often), show the last picture with the progress bar and read
+// the window's events; true when the user cancelled (or closed the window).
+bool Loop::tick(const std::string& text, double fraction) {
+  hud_.set_progress(text, fraction);
+  auto now = Clock::now();
+  double since = std::chrono::duration<double>(now - last_tick_).count();
+  if (!ctx_.windowed()) {
+    if (since >= 1) fprintf(stderr, "[live] %s\n", text.c_str()), last_tick_ = now;  // headless: a line a second
+    if (!shown_path_.empty() && since >= 1) present();
+    return false;
+  }
+  if (since < 0.05) return false;
+  last_tick_ = now;
+  ctx_.poll(0);  // input callbacks run; the view they change is drawn after the work
+  bool cancel = input_.take_cancel();
+  if (ctx_.should_close()) cancel = quit_ = true;
+  try {
+    present();
+  } catch (const std::exception& e) {
+    fprintf(stderr, "[live] cannot show the progress: %s\n", e.what());
+  }
+  if (cancel) fprintf(stderr, "[live] cancelled: %s\n", text.c_str());
+  return cancel;
+}
+
+// After a run, a console line or an action: the progress bar goes.
+void Loop::end_busy() {
+  if (!hud_.has_progress()) return;
+  hud_.set_progress("", 0);
+  present_due_ = true;
+}
+
 // Shows the last picture with the overlays over it; SHADENET_LIVE_SHOWN saves what is shown.
 void Loop::present() {
   present_due_ = false;
@@ -502,6 +556,7 @@ void Loop::actions() {
     run_lua("local sn = require 'shadenet'; local dir, frames = sn.record { orbit = { count = 36 } }; "
             "print(('[live] recorded %d frames of an orbit in %s'):format(#frames, dir))");
   if (a.print_view) run_lua("local sn = require 'shadenet'; print(sn.live.view_code())");
+  end_busy();
   if (a.present && !dirty_) present_due_ = true;
   fflush(stdout);
 }
@@ -521,6 +576,9 @@ int Loop::run() {
     return 1;
   }
   lua_getfield(L_, -1, "live");
+  lua_pushlightuserdata(L_, this);
+  lua_pushcclosure(L_, tick_thunk, 1);
+  lua_setfield(L_, -2, "_tick");
   live_ref_ = luaL_ref(L_, LUA_REGISTRYINDEX);
   lua_settop(L_, 0);
 

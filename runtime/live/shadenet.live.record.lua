@@ -4,6 +4,7 @@ local sn = require "shadenet.core"
 local S = require "shadenet.live.state"
 local check = require "shadenet.live.check"
 local view_of = require "shadenet.live.view"
+local busy = require "shadenet.live.busy"
 local live = sn.live
 local strict, is_mode, MODES = check.strict, check.is_mode, check.MODES
 local render, resolve_view, current_spec = view_of.render, view_of.resolve_view, view_of.current_spec
@@ -44,7 +45,9 @@ function sn.record(o)
   view.width, view.height = o.width or view.width, o.height or view.height
   local dir = o.dir
   local paths = {}
+  local count_of = o.orbit and (o.orbit.count or 36) or (o.sweep and o.sweep.count or 9)
   local function frame(k)
+    busy.tick(("recording frame %d/%d  (Esc cancels)"):format(k, count_of), (k - 1) / count_of)
     if k == 1 then  -- the folder is made once the options were checked: no empty folder on a typo
       dir = dir and sn.fs.mkdir(dir) or sn.fs.claim("out/live", "record")
     end
