@@ -30,7 +30,7 @@ std::array<double, 4> error_heat(const std::array<double, 4>& n, const std::arra
 }
 
 std::array<int, 2> composed_size(Layout layout, int w, int h) {
-  return layout == Layout::side ? std::array<int, 2>{3 * w, h} : std::array<int, 2>{w, h};
+  return layout == Layout::side ? std::array<int, 2>{2 * w, 2 * h} : std::array<int, 2>{w, h};
 }
 
 Image compose(Layout layout, const Image& network, const Image& truth, double scale, Colormap map) {
@@ -40,11 +40,14 @@ Image compose(Layout layout, const Image& network, const Image& truth, double sc
   Image out(ow, oh, 4);
   for (int y = 0; y < oh; ++y)
     for (int x = 0; x < ow; ++x) {
-      int panel = layout == Layout::side ? x / network.width : 2;
-      int qx = layout == Layout::side ? x - panel * network.width : x;
+      bool side = layout == Layout::side;
+      int col = side ? x / network.width : 0, row = side ? y / network.height : 0;
+      int panel = side ? row * 2 + col : 2;
+      int qx = x - col * network.width, qy = y - row * network.height;
       std::array<double, 4> n, t;
-      for (int c = 0; c < 4; ++c) n[c] = network.at(qx, y, c), t[c] = truth.at(qx, y, c);
-      std::array<double, 4> v = panel == 0 ? t : panel == 1 ? n : error_heat(n, t, scale, map);
+      for (int c = 0; c < 4; ++c) n[c] = network.at(qx, qy, c), t[c] = truth.at(qx, qy, c);
+      std::array<double, 4> v = panel == 0 ? t : panel == 1 ? n : panel == 2 ? error_heat(n, t, scale, map)
+                                                                         : std::array<double, 4>{0, 0, 0, 0};
       for (int c = 0; c < 4; ++c) out.at(x, y, c) = float(v[c]);
     }
   return out;

@@ -1,5 +1,5 @@
 // The views live mode shows besides the network and the ground truth, as image work: the
-// absolute-error heatmap and the side-by-side panel (truth | network | error). This is the
+// absolute-error heatmap and the side-by-side panels (truth, network, error). This is the
 // double-precision twin; the GPU pass that the window uses (gl/compose.h) is held to it.
 #pragma once
 #include <array>
@@ -18,7 +18,9 @@ std::array<double, 4> error_heat(const std::array<double, 4>& network, const std
 
 enum class Layout { error, side };
 
-// Output size for `layout` from panels of w x h: error = w x h, side = 3w x h.
+// Output size for `layout` from panels of w x h: error = w x h; side = 2w x 2h, panels top row
+// first: truth | network, then error | (transparent), so four panels of the window's aspect
+// fill it.
 std::array<int, 2> composed_size(Layout layout, int w, int h);
 
 // Throws naming the sizes when the two panels differ, or when scale is not a finite number > 0.

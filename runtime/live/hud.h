@@ -25,6 +25,12 @@ class Hud {
   void set_progress(const std::string& text, double fraction) { progress_text_ = text, progress_ = fraction; }
   bool has_progress() const { return !progress_text_.empty(); }
 
+  // The view under the overlays: its mode ("side" gets its panels labelled), the heatmap's
+  // scale, and the last frame's time in ms (shown as a counter when `counter`; <= 0: none yet).
+  void set_view(const std::string& mode, double error_scale, double frame_ms, bool counter) {
+    mode_ = mode, error_scale_ = error_scale, frame_ms_ = frame_ms, counter_ = counter;
+  }
+
   // The overlays for a w x h picture, in drawing order.
   std::vector<Placed> layout(int w, int h) const;
 
@@ -36,6 +42,9 @@ class Hud {
   std::vector<std::string> error_lines_;
   std::string progress_text_;
   double progress_ = 0;
+  std::string mode_;
+  double error_scale_ = 0.25, frame_ms_ = 0;
+  bool counter_ = false;
   std::unique_ptr<gl::RenderTarget> shown_;
 };
 

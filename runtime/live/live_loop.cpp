@@ -157,7 +157,7 @@ class Loop {
   long shown_count_ = 0;
   bool present_due_ = false;
   Clock::time_point last_tick_{};
-  double exit_after_ = 0, frame_ms_ = 0;
+  double exit_after_ = 0, frame_ms_ = 0, view_error_scale_ = 0.25;
   bool dirty_ = true, quit_ = false, prompt_after_frame_ = false;
   std::string shown_title_;
   long frame_ = 0;
@@ -441,7 +441,7 @@ void Loop::redraw() {
   fallback_errors_.clear();
   auto t0 = Clock::now();
   std::string err;
-  if (!call("_frame", 1, 2, &err)) {
+  if (!call("_frame", 1, 3, &err)) {
     frame_error_ = err;
     update_watch_set();  // a module the frame required (and that broke) must stay watched
     return set_status();
@@ -452,6 +452,7 @@ void Loop::redraw() {
   if (!fallback_errors_.empty()) shader_error_ = fallback_errors_.front();
   auto& target = lua::check<gl::RenderTarget>(L_, 1, "Target");
   title_ = lua_tostring(L_, 2) ? lua_tostring(L_, 2) : "";
+  view_error_scale_ = lua_isnumber(L_, 3) ? lua_tonumber(L_, 3) : 0.25;
   gl::finish();
   frame_ms_ = seconds_since(t0) * 1e3;
   ++frame_;
@@ -528,6 +529,8 @@ void Loop::present() {
   }
   auto [w, h] = ctx_.windowed() ? ctx_.framebuffer_size() : std::pair<int, int>{640, 480};
   if (w < 1 || h < 1) return;  // minimised
+  const ViewState& v = input_.view();
+  hud_.set_view(frame ? mode_name(v.mode) : "", view_error_scale_, frame_ms_, ctx_.windowed());
   const gl::RenderTarget& shown = hud_.compose(frame, w, h);
   ctx_.present(shown.fbo(), shown.width(), shown.height());
   if (shown_path_.empty()) return;

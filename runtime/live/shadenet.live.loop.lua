@@ -85,7 +85,7 @@ function live._frame(v)
     parts[#parts + 1] = ("|error| scale %.3g"):format(view.error_scale)
   end
   parts[#parts + 1] = format_mse(spec)
-  return target, table.concat(parts, " · ")
+  return target, table.concat(parts, " · "), view.error_scale
 end
 
 -- Requests from Lua code to the loop (sn.live.quit(), sn.live.redraw()), taken once.

@@ -131,10 +131,9 @@ function M.resolve_view(spec, o)
   }
 end
 
--- Side by side: three panels of the view's aspect across the view's width.
+-- Side by side: 2 x 2 panels of the view's aspect (truth | network, error | -) filling the view.
 local function panel_size(w, h)
-  local pw = math.max(1, math.floor(w / 3))
-  return pw, math.max(1, math.floor(pw * h / w + 0.5))
+  return math.max(1, math.floor(w / 2)), math.max(1, math.floor(h / 2))
 end
 
 -- `cache` (the loop's) keeps GPU targets between frames; headless renders get fresh ones.
@@ -159,7 +158,7 @@ end
 
 -- sn.live.render{ mode = "network" | "truth" | "error" | "side", camera = Camera,
 --                 light = {dir = {x,y,z}}, width = 640, height = 480 } -> Target
--- The image the window shows for that view (side: 3 panels of width/3 each).
+-- The image the window shows for that view (side: 2 x 2 panels of width/2 x height/2).
 function live.render(o)
   o = o or {}
   strict(o, { "mode", "camera", "light", "width", "height" }, "sn.live.render", 2)

@@ -111,7 +111,7 @@ TEST(LiveCompose, GpuMatchesTwin) {
 
 TEST(LiveCompose, SizeAndScaleErrors) {
   gl::current();
-  gl::RenderTarget a(8, 8), b(9, 8), out(8, 8), side(24, 8);
+  gl::RenderTarget a(8, 8), b(9, 8), out(8, 8), side(16, 16);
   try {
     gl::compose(io::Layout::error, a, b, 0.25, io::Colormap::inferno, out);
     FAIL() << "mismatched sizes were accepted";
