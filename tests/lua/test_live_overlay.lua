@@ -46,7 +46,16 @@ end
 H.write(script, (template:gsub("%-%- EDITS\n", "net.layers[1].weight[1][1] = = 0.9\n")))
 s:wait_log("%[live%] error: [^\n]*scenario%.lua:" .. edit_line .. ": unexpected symbol near '='\n  " .. edit_line ..
            " | net%.layers%[1%]%.weight%[1%]%[1%] = = 0%.9\n")
-local n1, broken = s:wait_shown(n0)
+-- The newest picture shown once the error is in (a redraw already under way may come first).
+local function wait_until(ok, what)
+  for _ = 1, 300 do
+    local n, img = s:shown()
+    if img and ok(img) then return n, img end
+    H.sleep(0.05)
+  end
+  s:fail("no picture shown " .. what)
+end
+local n1, broken = wait_until(function(img) local p = img:get(3, h - 2) return p[1] > 0.15 end, "with the overlay")
 local bottom = broken:get(3, h - 2)
 assert(bottom[1] > 0.15 and bottom[1] > 3 * bottom[3], ("the overlay's red box is at the bottom: %g %g %g"):format(
   bottom[1], bottom[2], bottom[3]))
@@ -65,8 +74,7 @@ assert(white > 50, "the overlay has text, got " .. white .. " white pixels")
 -- The next good save clears it: what is shown is the picture again.
 H.write(script, template)
 s:wait_log("%[live%] fixed")
-local _, fixed = s:wait_shown(n1)
-assert(H.same(fixed, clean), "the overlay is gone after the good save")
+local _, fixed = wait_until(function(img) return H.same(img, clean) end, "without the overlay after the good save")
 s:stop()
 print(("overlay: scenario.lua:%d shown over the bottom of a %dx%d picture (%d white text pixels), cleared by the fix"):format(
   edit_line, w, h, white))
