@@ -1,21 +1,23 @@
 # Writes OUT: a C++ file holding each Lua file of FILES as a byte array, looked up by module name
-# (runtime/lua/shadenet.lua -> "shadenet", runtime/lua/shadenet.plot.lua -> "shadenet.plot").
-set(body "#include <cstddef>\n#include <cstring>\nnamespace sn::lua {\nstruct Embedded { const char* name; const unsigned char* data; std::size_t size; };\n")
+# (runtime/lua/shadenet.lua -> "shadenet", runtime/lua/shadenet.plot.lua -> "shadenet.plot"),
+# with its path under ROOT for error messages (runtime/live/shadenet.live.lua).
+set(body "#include <cstddef>\n#include <cstring>\nnamespace sn::lua {\nstruct Embedded { const char* name; const char* path; const unsigned char* data; std::size_t size; };\n")
 set(table "")
 set(i 0)
 foreach(f ${FILES})
   get_filename_component(name ${f} NAME_WE)
   get_filename_component(full ${f} NAME)
   string(REGEX REPLACE "\\.lua$" "" name ${full})
+  file(RELATIVE_PATH path ${ROOT} ${f})
   file(READ ${f} hex HEX)
   string(LENGTH "${hex}" n)
   math(EXPR size "${n} / 2")
   string(REGEX REPLACE "([0-9a-f][0-9a-f])" "0x\\1," bytes "${hex}")
   string(APPEND body "static const unsigned char file${i}[] = {${bytes}0};\n")
-  string(APPEND table "  {\"${name}\", file${i}, ${size}},\n")
+  string(APPEND table "  {\"${name}\", \"${path}\", file${i}, ${size}},\n")
   math(EXPR i "${i} + 1")
 endforeach()
-string(APPEND body "static const Embedded files[] = {\n${table}  {nullptr, nullptr, 0}};\n")
+string(APPEND body "static const Embedded files[] = {\n${table}  {nullptr, nullptr, nullptr, 0}};\n")
 string(APPEND body "const Embedded* find_embedded(const char* name) {\n  for (const Embedded* e = files; e->name; ++e)\n    if (std::strcmp(e->name, name) == 0) return e;\n  return nullptr;\n}\n}  // namespace sn::lua\n")
 file(WRITE ${OUT}.tmp "${body}")
 file(RENAME ${OUT}.tmp ${OUT})

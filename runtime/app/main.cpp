@@ -1,5 +1,5 @@
 // shadenet [options] script.lua [args...]: runs a Lua experiment script, headless by default;
-// --watch keeps it live (runtime/app/live_loop.h).
+// --watch keeps it live (runtime/live/live_loop.h).
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -7,7 +7,7 @@
 
 #include <lua.hpp>
 
-#include "app/live_loop.h"
+#include "live/live_loop.h"
 #include "app/options.h"
 #include "gl/context.h"
 #include "lua/module.h"
@@ -108,15 +108,15 @@ int main(int argc, char** argv) {
     return 1;
   }
   int status = 0;
-  sn::app::LiveOptions live{opt.script, opt.script_args, true, false};
+  sn::live::LiveOptions live{opt.script, opt.script_args, true, false};
   if (opt.watch) {
-    status = sn::app::run_live(L, live);
+    status = sn::live::run_live(L, live);
   } else {
     status = run_script(L, opt);
     // A windowed script that declared a view with sn.live.show keeps its window open on it.
     if (status == 0 && opt.window && shows_a_view(L)) {
       live.watch = false, live.already_ran = true;
-      status = sn::app::run_live(L, live);
+      status = sn::live::run_live(L, live);
     }
   }
   lua_close(L);  // runs every __gc while the GL context still lives

@@ -2,54 +2,23 @@
 
 #include <epoxy/gl.h>
 
-#include <algorithm>
-#include <cmath>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "gl/program.h"
 
 namespace sn::gl {
 
-namespace {
-
-std::string size_str(int w, int h) { return std::to_string(w) + "x" + std::to_string(h); }
-
-void check_inputs(int nw, int nh, int tw, int th, double scale) {
-  if (nw != tw || nh != th)
-    throw std::invalid_argument("the network image is " + size_str(nw, nh) + " but the truth image is " +
-                                size_str(tw, th) + "; they must be the same size");
-  if (!(scale > 0) || !std::isfinite(scale))
-    throw std::invalid_argument("error scale must be a finite number > 0, got " + std::to_string(scale));
-}
-
-double clamp01(double x) { return std::clamp(x, 0.0, 1.0); }
-
-}  // namespace
-
-std::array<double, 4> error_heat(const std::array<double, 4>& n, const std::array<double, 4>& t, double scale,
-                                 io::Colormap map) {
-  if (!(n[3] > 0.5 || t[3] > 0.5)) return {0, 0, 0, 0};
-  for (int c = 0; c < 3; ++c)
-    if (!std::isfinite(n[c])) return {1, 0, 1, 1};
-  double e = (std::abs(n[0] - t[0]) + std::abs(n[1] - t[1]) + std::abs(n[2] - t[2])) / 3.0;
-  io::Color c = io::colormap(map, clamp01(e / scale));
-  return {c[0], c[1], c[2], 1};
-}
-
-std::array<int, 2> composed_size(Layout layout, int w, int h) {
-  return layout == Layout::side ? std::array<int, 2>{3 * w, h} : std::array<int, 2>{w, h};
-}
-
-void compose(Layout layout, const gl::RenderTarget& network, const gl::RenderTarget& truth, double scale,
+void compose(io::Layout layout, const gl::RenderTarget& network, const gl::RenderTarget& truth, double scale,
              io::Colormap map, gl::RenderTarget& out) {
-  check_inputs(network.width(), network.height(), truth.width(), truth.height(), scale);
-  auto [ow, oh] = composed_size(layout, network.width(), network.height());
+  io::check_compose_inputs(network.width(), network.height(), truth.width(), truth.height(), scale);
+  auto [ow, oh] = io::composed_size(layout, network.width(), network.height());
   if (out.width() != ow || out.height() != oh)
-    throw std::invalid_argument("the composed image needs a " + size_str(ow, oh) + " target, got " +
-                                size_str(out.width(), out.height()));
-  auto program = gl::get_program({"live/compose.comp", "", "", {{"LAYOUT_SIDE", layout == Layout::side ? "1" : "0"}}});
-  if (layout == Layout::side)  // the error layout does not read it (and the compiler drops it)
+    throw std::invalid_argument("the composed image needs a " + std::to_string(ow) + "x" + std::to_string(oh) +
+                                " target, got " + std::to_string(out.width()) + "x" + std::to_string(out.height()));
+  auto program = gl::get_program({"live/compose.comp", "", "", {{"LAYOUT_SIDE", layout == io::Layout::side ? "1" : "0"}}});
+  if (layout == io::Layout::side)  // the error layout does not read it (and the compiler drops it)
     program->set_uniform("u_panel", {double(network.width()), double(network.height())});
   program->set_uniform("u_scale", {scale});
   std::vector<double> points;  // the colormap's control points, as io::colormap interpolates them
@@ -65,25 +34,6 @@ void compose(Layout layout, const gl::RenderTarget& network, const gl::RenderTar
   glBindTextureUnit(0, 0);
   glBindTextureUnit(1, 0);
   glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-}
-
-io::Image compose_reference(Layout layout, const io::Image& network, const io::Image& truth, double scale,
-                            io::Colormap map) {
-  if (network.channels != 4 || truth.channels != 4)
-    throw std::invalid_argument("compose_reference needs RGBA images");
-  check_inputs(network.width, network.height, truth.width, truth.height, scale);
-  auto [ow, oh] = composed_size(layout, network.width, network.height);
-  io::Image out(ow, oh, 4);
-  for (int y = 0; y < oh; ++y)
-    for (int x = 0; x < ow; ++x) {
-      int panel = layout == Layout::side ? x / network.width : 2;
-      int qx = layout == Layout::side ? x - panel * network.width : x;
-      std::array<double, 4> n, t;
-      for (int c = 0; c < 4; ++c) n[c] = network.at(qx, y, c), t[c] = truth.at(qx, y, c);
-      std::array<double, 4> v = panel == 0 ? t : panel == 1 ? n : error_heat(n, t, scale, map);
-      for (int c = 0; c < 4; ++c) out.at(x, y, c) = float(v[c]);
-    }
-  return out;
 }
 
 }  // namespace sn::gl

@@ -2,6 +2,7 @@
 
 #include <epoxy/gl.h>
 
+#include <regex>
 #include <stdexcept>
 
 namespace sn::gl {
@@ -28,6 +29,16 @@ unsigned compile(GLenum stage, const ShaderSource& src) {
   return sh;
 }
 
+// The names a source declares with `uniform TYPE a, b[4];` (uniform blocks have no ';' first).
+void declared_uniforms(const std::string& text, std::set<std::string>& out) {
+  static const std::regex decl(R"(\buniform\s+(?:(?:lowp|mediump|highp)\s+)?\w+\s+([^;{]+);)");
+  static const std::regex name(R"(([A-Za-z_]\w*)\s*(?:\[[^\]]*\])?\s*(?:,|$))");
+  for (std::sregex_iterator it(text.begin(), text.end(), decl), end; it != end; ++it) {
+    std::string names = (*it)[1];
+    for (std::sregex_iterator n(names.begin(), names.end(), name); n != end; ++n) out.insert((*n)[1]);
+  }
+}
+
 std::string stage_key(const char* tag, const ShaderSource& s) { return std::string(tag) + "\n" + s.key(); }
 
 std::map<std::string, std::shared_ptr<Program>>& cache() {
@@ -45,15 +56,20 @@ Program::Program(const ProgramDesc& desc) {
   compute_ = !desc.compute.empty();
   if (compute_ == (!desc.vertex.empty() || !desc.fragment.empty()))
     throw std::invalid_argument("a program takes either 'compute' or 'vertex' + 'fragment'");
+  auto stage = [&](GLenum kind, const std::string& path) {
+    ShaderSource src = preprocess(path, desc.defines, desc.includes);
+    declared_uniforms(src.text, declared_);
+    shaders.push_back(compile(kind, src));
+  };
   try {
     if (compute_) {
-      shaders.push_back(compile(GL_COMPUTE_SHADER, preprocess(desc.compute, desc.defines, desc.includes)));
+      stage(GL_COMPUTE_SHADER, desc.compute);
       name_ = desc.compute;
     } else {
       if (desc.vertex.empty() || desc.fragment.empty())
         throw std::invalid_argument("a graphics program needs both 'vertex' and 'fragment'");
-      shaders.push_back(compile(GL_VERTEX_SHADER, preprocess(desc.vertex, desc.defines, desc.includes)));
-      shaders.push_back(compile(GL_FRAGMENT_SHADER, preprocess(desc.fragment, desc.defines, desc.includes)));
+      stage(GL_VERTEX_SHADER, desc.vertex);
+      stage(GL_FRAGMENT_SHADER, desc.fragment);
       name_ = desc.vertex + " + " + desc.fragment;
     }
   } catch (...) {
@@ -124,8 +140,11 @@ std::vector<std::string> Program::uniform_names() const {
   return v;
 }
 
-void Program::set_uniform(const std::string& name, const std::vector<double>& v) {
+bool Program::optimised_away(const std::string& name) const { return !uniform(name) && declared_.count(name); }
+
+bool Program::set_uniform(const std::string& name, const std::vector<double>& v) {
   const UniformInfo* u = uniform(name);
+  if (!u && declared_.count(name)) return false;
   if (!u) {
     std::string valid;
     for (const auto& n : uniform_names()) valid += (valid.empty() ? "" : ", ") + n;
@@ -160,6 +179,7 @@ void Program::set_uniform(const std::string& name, const std::vector<double>& v)
     case GL_UNSIGNED_INT_VEC4: need(4), glProgramUniform4uiv(p, loc, n, uv.data()); break;
     default: throw std::invalid_argument("uniform '" + name + "' has a type shadenet cannot set from numbers");
   }
+  return true;
 }
 
 namespace {

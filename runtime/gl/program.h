@@ -4,6 +4,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -48,8 +49,11 @@ class Program {
   // to such a program would feed one block's buffer to both).
   std::string shared_storage_binding() const;
   // Sets a uniform from numbers (converted to its declared type); throws for an unknown name
-  // (listing the valid ones) or a wrong number of values.
-  void set_uniform(const std::string& name, const std::vector<double>& values);
+  // (listing the valid ones) or a wrong number of values. A uniform the source declares but the
+  // compiler removed (its use commented out) is no error: returns false and sets nothing.
+  bool set_uniform(const std::string& name, const std::vector<double>& values);
+  // Declared in the source but not active in the linked program.
+  bool optimised_away(const std::string& name) const;
 
  private:
   unsigned id_ = 0;
@@ -57,6 +61,7 @@ class Program {
   std::string name_;
   int local_size_[3] = {1, 1, 1};
   std::map<std::string, UniformInfo> uniforms_;
+  std::set<std::string> declared_;  // every `uniform` the stages' sources declare, active or not
   std::vector<StorageBlock> storage_blocks_;
 };
 

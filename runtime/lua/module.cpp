@@ -9,10 +9,11 @@ namespace sn::lua {
 
 struct Embedded {
   const char* name;
+  const char* path;  // under the source tree, for error messages
   const unsigned char* data;
   std::size_t size;
 };
-const Embedded* find_embedded(const char* name);  // generated from runtime/lua/*.lua
+const Embedded* find_embedded(const char* name);  // generated from runtime/lua/*.lua, runtime/live/*.lua
 
 namespace {
 
@@ -51,7 +52,7 @@ int load_embedded(lua_State* L) {
     lua_pushfstring(L, "\n\tno embedded module '%s'", name);
     return 1;
   }
-  std::string chunk = std::string("@runtime/lua/") + name + ".lua";
+  std::string chunk = std::string("@") + e->path;
   if (luaL_loadbuffer(L, reinterpret_cast<const char*>(e->data), e->size, chunk.c_str()) != 0) return lua_error(L);
   return 1;
 }

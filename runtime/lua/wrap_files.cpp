@@ -6,6 +6,7 @@
 #include <system_error>
 
 #include "io/atomic_write.h"
+#include "io/numbered_path.h"
 #include "lua/binding.h"
 #include "lua/module.h"
 
@@ -62,10 +63,22 @@ int w_exists(lua_State* L) {
   return 1;
 }
 
+// sn.fs.claim(dir, stem [, ext]) -> path: creates dir/stem-NNNN<ext> (a file; with no ext a
+// folder) with the first free number, exclusively, so two processes never get the same one.
+int w_claim(lua_State* L) {
+  std::string dir = check_string(L, 1, "sn.fs.claim folder");
+  std::string stem = check_string(L, 2, "sn.fs.claim stem");
+  std::string path = lua_isnoneornil(L, 3) ? io::claim_numbered_dir(dir, stem)
+                                            : io::claim_numbered_file(dir, stem, check_string(L, 3, "sn.fs.claim ext"));
+  lua_pushstring(L, path.c_str());
+  return 1;
+}
+
 }  // namespace
 
 void open_files(lua_State* L) {
   static const luaL_Reg fns[] = {SN_FN("mkdir", w_mkdir), SN_FN("list", w_list), SN_FN("exists", w_exists), SN_FN("write", w_write),
+                                 SN_FN("claim", w_claim),
                                  {nullptr, nullptr}};
   lua_newtable(L);
   luaL_register(L, nullptr, fns);

@@ -1,6 +1,6 @@
 // sn.live_compose{...}: the live view's error heatmap and side-by-side panel on the GPU
-// (runtime/gl/compose.h), and sn.live_upload(image) for views rendered to Images. The Lua
-// side (shadenet.live.lua) calls them for sn.live.render.
+// (runtime/gl/compose.h, its twin io/compose.h), and sn.live_upload(image) for views rendered to Images. The Lua
+// side (runtime/live/shadenet.live.view.lua) calls them for sn.live.render.
 #include <epoxy/gl.h>
 
 #include <algorithm>
@@ -29,10 +29,10 @@ int w_compose(lua_State* L) {
   };
   gl::RenderTarget& network = target("network");
   gl::RenderTarget& truth = target("truth");
-  auto layout = gl::Layout(o.choice("layout", {"error", "side"}, 0));
+  auto layout = io::Layout(o.choice("layout", {"error", "side"}, 0));
   double scale = o.number("scale", 0.25);
   auto map = io::Colormap(o.choice("colormap", {"inferno", "viridis", "gray"}, 0));
-  auto [w, h] = gl::composed_size(layout, network.width(), network.height());
+  auto [w, h] = io::composed_size(layout, network.width(), network.height());
   int into = o.push("into");
   if (!lua_isnil(L, into)) {
     auto& out = check<gl::RenderTarget>(L, into, "Target");

@@ -1,6 +1,10 @@
 // sn.program{...} and program:dispatch{...}: compute and graphics programs from shaders/.
 #include <epoxy/gl.h>
 
+#include <cstdio>
+#include <set>
+#include <string>
+
 #include "gl/buffer.h"
 #include "gl/program.h"
 #include "gl/render_target.h"
@@ -90,6 +94,16 @@ int w_cache_size(lua_State* L) {
 
 }  // namespace
 
+namespace {
+// Once per program and name: commenting out a uniform's use is an edit, not an error.
+void warn_unused_uniform(const gl::Program& p, const std::string& name) {
+  static std::set<std::pair<std::string, std::string>> said;
+  if (said.insert({p.name(), name}).second)
+    fprintf(stderr, "note: program %s declares uniform '%s' but does not use it (the compiler removed it); its value "
+                    "is ignored\n", p.name().c_str(), name.c_str());
+}
+}  // namespace
+
 void apply_bindings(lua_State* L, const Options& o, gl::Program& p) {
   // buffers: array part binds in order from binding 0; named entries bind to the SSBO block of that name.
   int bi = o.push("buffers");
@@ -127,7 +141,7 @@ void apply_bindings(lua_State* L, const Options& o, gl::Program& p) {
       std::string name = lua_tostring(L, -2);
       auto v = lua_type(L, -1) == LUA_TBOOLEAN ? std::vector<double>{double(lua_toboolean(L, -1))}
                                                : check_numbers(L, -1, ("uniform '" + name + "'").c_str());
-      p.set_uniform(name, v);
+      if (!p.set_uniform(name, v)) warn_unused_uniform(p, name);
       lua_pop(L, 1);
     }
   }

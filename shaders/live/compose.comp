@@ -1,4 +1,4 @@
-// Live view composition: LAYOUT_SIDE = truth | network | error heatmap side by side,
+// Live view composition: LAYOUT_SIDE = truth | network over error heatmap | (empty), 2 x 2,
 // otherwise the error heatmap alone. One invocation per output pixel.
 #include "heatmap.glsl"
 
@@ -14,8 +14,14 @@ void main() {
   ivec2 size = imageSize(u_out);
   if (p.x >= size.x || p.y >= size.y) return;
 #if LAYOUT_SIDE
-  int panel = p.x / u_panel.x;
-  ivec2 q = ivec2(p.x - panel * u_panel.x, p.y);
+  // 2 x 2 panels, top row first: truth | network, error | nothing (GL rows start at the bottom).
+  int col = p.x / u_panel.x, row = p.y >= u_panel.y ? 0 : 1;
+  int panel = row * 2 + col;
+  ivec2 q = ivec2(p.x - col * u_panel.x, p.y - (row == 0 ? u_panel.y : 0));
+  if (panel == 3) {
+    imageStore(u_out, p, vec4(0.0));
+    return;
+  }
 #else
   int panel = 2;
   ivec2 q = p;

@@ -46,13 +46,16 @@ local Session = {}
 Session.__index = Session
 
 -- H.start{ dir = "out/live_tests/x", script = path, window = true, size = "160x120",
---          limit = 30 (seconds: the child's SHADENET_LIVE_EXIT_AFTER), args = {...} } -> session
+--          limit = 30 (seconds: the child's SHADENET_LIVE_EXIT_AFTER), args = {...},
+--          shown = true (also save what is shown, overlays included: SHADENET_LIVE_SHOWN) } -> session
 function H.start(o)
-  os.execute(("rm -rf %q %q %q && mkdir -p %q"):format(o.dir .. "/frames", o.dir .. "/pid", o.dir .. "/log.txt",
-                                                       o.dir .. "/frames"))
+  os.execute(("rm -rf %q %q %q %q && mkdir -p %q %q"):format(o.dir .. "/frames", o.dir .. "/shown", o.dir .. "/pid",
+                                                             o.dir .. "/log.txt", o.dir .. "/frames", o.dir .. "/shown"))
   local s = setmetatable({ dir = o.dir, log_path = o.dir .. "/log.txt", started = sn.clock() }, Session)
-  local cmd = ("echo $$ > %q; exec env SHADENET_LIVE_SNAPSHOT=%q SHADENET_LIVE_EXIT_AFTER=%d %q %s --size %s --watch %q %s > %q 2>&1")
-    :format(o.dir .. "/pid", o.dir .. "/frames/frame-%d.exr", o.limit or 30, H.shadenet,
+  local cmd = ("echo $$ > %q; exec env SHADENET_LIVE_SNAPSHOT=%q SHADENET_LIVE_SHOWN=%q SHADENET_LIVE_EXIT_AFTER=%d "
+               .. "%q %s --size %s --watch %q %s > %q 2>&1")
+    :format(o.dir .. "/pid", o.dir .. "/frames/frame-%d.exr", o.shown and o.dir .. "/shown/shown-%d.exr" or "",
+            o.limit or 30, H.shadenet,
             o.window == false and "" or "--window", o.size or "160x120", o.script,
             table.concat(o.args or {}, " "), s.log_path)
   s.pipe = assert(io.popen("sh -c '" .. cmd:gsub("'", "'\\''") .. "'", "w"))
@@ -119,6 +122,30 @@ function Session:wait_log(pattern, timeout)
 end
 
 function Session:image(n) return sn.image.load(self:frame_path(n)) end
+
+-- What was shown (overlays included), for sessions started with shown = true: the newest
+-- picture saved so far and its number (0, nil when none).
+function Session:shown()
+  local n = self.shown_seen or 0
+  while H.exists(("%s/shown/shown-%d.exr"):format(self.dir, n + 1)) do n = n + 1 end
+  self.shown_seen = n
+  if n == 0 then return 0, nil end
+  return n, sn.image.load(("%s/shown/shown-%d.exr"):format(self.dir, n))
+end
+
+-- Waits until a picture newer than number `after` is shown; returns its number and image.
+function Session:wait_shown(after, timeout)
+  local t0 = sn.clock()
+  while true do
+    local n = self:shown()
+    if n > after then
+      H.sleep(0.05)  -- the file is written whole (renamed into place), but give the loop a moment
+      return self:shown()
+    end
+    if sn.clock() - t0 > (timeout or 20) then self:fail(("no picture shown after %d within %gs"):format(after, timeout or 20)) end
+    H.sleep(0.02)
+  end
+end
 
 -- CPU seconds (user + system) the session's process has used so far.
 function Session:cpu_seconds()

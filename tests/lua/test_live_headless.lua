@@ -95,7 +95,7 @@ end
 assert(checked > 30, "enough covered pixels checked: " .. checked)
 local side = live.render { mode = "side", width = 90, height = 40 }
 local sw, sh = side:size()
-assert(sw == 90 and sh == 13, ("side by side: three 30x13 panels (the view's aspect), got %dx%d"):format(sw, sh))
+assert(sw == 90 and sh == 40, ("side by side: 2 x 2 panels of 45x20 filling the view, got %dx%d"):format(sw, sh))
 fails(function() live.render { mode = "side", widht = 3 } end, "unknown option 'widht'")
 
 -- 4. Recordings: an orbit and a weight sweep, headless; the swept value is put back.

@@ -13,11 +13,11 @@
 #include <fstream>
 #include <thread>
 
-#include "app/file_watcher.h"
-#include "app/input.h"
-#include "app/repl.h"
+#include "live/file_watcher.h"
+#include "live/input.h"
+#include "live/repl.h"
 
-using namespace sn::app;
+using namespace sn::live;
 namespace fs = std::filesystem;
 
 TEST(LiveInput, OrbitRoundTrip) {
@@ -33,7 +33,7 @@ TEST(LiveInput, OrbitRoundTrip) {
 TEST(LiveInput, DragZoomKeys) {
   Input in;
   Orbit cam = Orbit::from({0, 0, 0}, {0, 0, 3}), light = Orbit::from({0, 0, 0}, {0, 0, 1});
-  in.set_initial(cam, 45, light, Mode::network, true);
+  in.set_initial(cam, 45, light, Mode::network, {true, true, true});
   EXPECT_TRUE(in.take_dirty());
   EXPECT_FALSE(in.take_dirty());
   in.drag(100, 0, false);  // 0.4 degrees per pixel; dragging right moves the eye left
@@ -61,8 +61,15 @@ TEST(LiveInput, DragZoomKeys) {
   EXPECT_TRUE(a.screenshot && a.record && !a.quit);
   EXPECT_FALSE(in.take_actions().screenshot);
   // A reload that does not change the script's camera keeps the user's; Home goes back to it.
-  in.set_initial(cam, 45, light, Mode::network, false);
+  in.set_initial(cam, 45, light, Mode::network, {});
   EXPECT_TRUE(in.view().camera_moved);
+  // A script that moves its light resets the light, not the mode or the camera the user picked.
+  in.key(GLFW_KEY_3, 0);
+  in.set_initial(cam, 45, Orbit::from({0, 0, 0}, {1, 0, 0}), Mode::network, {false, true, false});
+  EXPECT_EQ(in.view().mode, Mode::error);
+  EXPECT_TRUE(in.view().camera_moved);
+  EXPECT_FALSE(in.view().light_moved);
+  EXPECT_NEAR(in.view().light.azimuth, 90, 1e-12);
   in.key(GLFW_KEY_HOME, 0);
   EXPECT_FALSE(in.view().camera_moved);
   EXPECT_NEAR(in.view().camera.distance, 3, 1e-12);

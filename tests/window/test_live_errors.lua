@@ -58,7 +58,7 @@ assert(status_error() == "", "the error was cleared by the good save")
 
 -- 4. A broken shader: reported with its file:line, the last good program keeps drawing.
 H.write(frag, (shader:gsub("float lambert", "float lambert = ;\n  float lambert2")))
-local msg = s:wait_log("%[live%] error: (GLSL compile error[^\n]*)")
+local msg = s:wait_log("%[live%] error: ([^\n]*tint%.frag:%d+: error[^\n]*)")
 local frag_line = s:wait_log("(tint%.frag:%d+): error")
 assert(frag_line == "tint.frag:8", "shader error at " .. frag_line .. ", expected tint.frag:8 (the broken statement)")
 assert(status_error():find("tint.frag", 1, true), "the status names the shader")
@@ -81,7 +81,7 @@ for c = 1, 3 do
   assert(math.abs(b[c] - 0.5 * a[c]) < 1e-6, ("channel %d: %g is not half of %g"):format(c, b[c], a[c]))
 end
 local w = fixed:size()
-assert(w == 159, "side by side is three panels of 53 pixels, got " .. w)
+assert(w == 160, "side by side is 2 x 2 panels of 80 pixels, got " .. w)
 s:stop()
 print("errors: syntax and runtime errors at scenario.lua:" .. edit_line .. "/" .. (edit_line + 1) ..
       ", shader error at " .. frag_line .. ", each kept the last good picture and recovered")

@@ -1,4 +1,4 @@
-#include "app/live_loop.h"
+#include "live/live_loop.h"
 
 #include <GLFW/glfw3.h>
 #include <unistd.h>
@@ -18,9 +18,11 @@
 #include <set>
 #include <sstream>
 
-#include "app/file_watcher.h"
-#include "app/input.h"
-#include "app/repl.h"
+#include "live/error_report.h"
+#include "live/file_watcher.h"
+#include "live/hud.h"
+#include "live/input.h"
+#include "live/repl.h"
 #include "gl/buffer.h"  // gl::finish
 #include "gl/context.h"
 #include "gl/program.h"
@@ -29,24 +31,13 @@
 #include "io/image.h"
 #include "lua/binding.h"
 
-namespace sn::app {
+namespace sn::live {
 
 namespace {
 
 using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-
-// The line of an error message to show in a title: the first that names a file:line (a GLSL
-// error's second line), else the first.
-std::string headline(const std::string& s) {
-  std::istringstream in(s);
-  std::string line;
-  static const std::regex where(R"([^\s:]+:\d+:)");
-  while (std::getline(in, line))
-    if (std::regex_search(line, where)) return line;
-  return s.substr(0, s.find('\n'));
-}
 
 std::string read_all(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -114,6 +105,12 @@ class Loop {
  public:
   Loop(lua_State* L, const LiveOptions& o) : L_(L), o_(o), ctx_(gl::current()), waker_(ctx_.windowed()) {}
   ~Loop() {
+    if (live_ref_ != LUA_NOREF) {  // the loop's tick must not outlive it
+      lua_rawgeti(L_, LUA_REGISTRYINDEX, live_ref_);
+      lua_pushnil(L_);
+      lua_setfield(L_, -2, "_tick");
+      lua_pop(L_, 1);
+    }
     gl::set_shader_file_observer(nullptr);
     gl::set_program_fallback(nullptr);
     if (target_ref_ != LUA_NOREF) luaL_unref(L_, LUA_REGISTRYINDEX, target_ref_);
@@ -131,7 +128,10 @@ class Loop {
   void console();
   void take_requests();
   void redraw();
-  void present_last();
+  void present();
+  bool tick(const std::string& text, double fraction);
+  static int tick_thunk(lua_State* L);
+  void end_busy();
   void actions();
   void set_status();
   void report(const std::string& message);
@@ -141,6 +141,7 @@ class Loop {
   gl::Context& ctx_;
   Waker waker_;
   Input input_;
+  Hud hud_;
   std::unique_ptr<FileWatcher> watcher_;
   std::unique_ptr<StdinReader> stdin_;
   std::unique_ptr<Console> console_;
@@ -152,14 +153,21 @@ class Loop {
   std::vector<std::string> watched_;
 
   std::string script_error_, frame_error_, shader_error_, last_reported_, title_;
-  std::string snapshot_;
-  double exit_after_ = 0, frame_ms_ = 0;
+  std::string snapshot_, shown_path_;
+  long shown_count_ = 0;
+  bool present_due_ = false;
+  Clock::time_point last_tick_{};
+  double exit_after_ = 0, frame_ms_ = 0, view_error_scale_ = 0.25;
   bool dirty_ = true, quit_ = false, prompt_after_frame_ = false;
   std::string shown_title_;
   long frame_ = 0;
   std::array<double, 9> initial_{};  // eye, target, light dir of the script's view
   std::string initial_mode_;
+  double initial_fov_ = 0;
   std::pair<int, int> drawn_size_{0, 0};
+  bool reload_pending_ = false;
+  Clock::time_point reload_at_;
+  static constexpr std::chrono::milliseconds kSettle{40};
 };
 
 bool Loop::push_live(const char* fn) {
@@ -191,11 +199,20 @@ bool Loop::call(const char* fn, int nargs, int nresults, std::string* error) {
   return true;
 }
 
+// The terminal gets the overlay's text (headline, source line, context), then the traceback.
 void Loop::report(const std::string& message) {
   if (message == last_reported_) return;
-  if (!message.empty()) fprintf(stderr, "[live] error: %s\n", message.c_str());
-  else fprintf(stderr, "[live] fixed: the error is gone\n");
+  if (!message.empty()) {
+    ErrorReport r = report_error(message);
+    std::string text;
+    for (const auto& l : report_lines(r, size_t(-1))) text += (text.empty() ? "" : "\n") + l;
+    fprintf(stderr, "[live] error: %s\n%s", text.c_str(), r.traceback.empty() ? "" : (r.traceback + "\n").c_str());
+  } else {
+    fprintf(stderr, "[live] fixed: the error is gone\n");
+  }
   last_reported_ = message;
+  hud_.set_error(message);
+  present_due_ = true;  // the overlay shows or clears over the picture as it is
   fflush(stderr);
 }
 
@@ -205,7 +222,7 @@ void Loop::set_status() {
   report(err);
   char ms[32] = "";
   if (frame_ms_ > 0) snprintf(ms, sizeof ms, " · %.1f ms", frame_ms_);
-  std::string title = (err.empty() ? "" : "ERROR " + headline(err) + " | ") + (title_.empty() ? "shadenet" : title_) + ms;
+  std::string title = (err.empty() ? "" : "ERROR " + report_error(err).headline + " | ") + (title_.empty() ? "shadenet" : title_) + ms;
   if (title != shown_title_) ctx_.set_title(title), shown_title_ = title;
   lua_pushstring(L_, title.c_str());
   lua_pushstring(L_, err.c_str());
@@ -252,10 +269,17 @@ bool Loop::files_changed() {
 void Loop::run_script() {
   auto t0 = Clock::now();
   for (const auto& f : watched_) contents_[f] = read_all(f);
-  // A syntax error changes nothing: the last good state stays, networks included.
-  if (luaL_loadfile(L_, o_.script.c_str()) != 0) {
-    script_error_ = lua_tostring(L_, -1);
+  // A syntax error changes nothing: the last good state stays, networks included. The files
+  // are still watched (the first run may be the broken one), so the fix is seen.
+  std::string source = read_all(o_.script);
+  bool empty = source.find_first_not_of(" \t\r\n") == std::string::npos;
+  if (empty || luaL_loadfile(L_, o_.script.c_str()) != 0) {
+    // An empty file is a save in progress (truncated, not yet written) or a mistake, never a good run.
+    script_error_ = !empty ? lua_tostring(L_, -1)
+                   : source == "\x01missing" ? o_.script + ": cannot read the script (missing?); waiting for it"
+                                             : o_.script + ": the script is empty; waiting for the next save";
     lua_settop(L_, 0);
+    update_watch_set();
     set_status();
     return;
   }
@@ -289,6 +313,7 @@ void Loop::run_script() {
     dirty_ = true;
   }
   take_requests();
+  end_busy();
   set_status();
 }
 
@@ -309,14 +334,19 @@ void Loop::sync_view(bool force_reset) {
   double fov = lua_tonumber(L_, 3);
   std::string mode = lua_tostring(L_, 5) ? lua_tostring(L_, 5) : "network";
   lua_settop(L_, 0);
-  bool reset = force_reset || v != initial_ || mode != initial_mode_;
-  initial_ = v, initial_mode_ = mode;
+  // Each part resets only when the script changed that part: a new light keeps the mode the
+  // user picked, a new mode keeps the camera the user moved.
+  auto differs = [&](int from, int to) { return !std::equal(v.begin() + from, v.begin() + to, initial_.begin() + from); };
+  bool reset_camera = force_reset || differs(0, 6) || fov != initial_fov_;
+  bool reset_light = force_reset || differs(6, 9);
+  bool reset_mode = force_reset || mode != initial_mode_;
+  initial_ = v, initial_mode_ = mode, initial_fov_ = fov;
   Mode m = Mode::network;
   parse_mode(mode, m);
   Orbit cam = Orbit::from({v[3], v[4], v[5]}, {v[0], v[1], v[2]});
   Orbit light = Orbit::from({0, 0, 0}, {v[6], v[7], v[8]});
   light.distance = 1;
-  input_.set_initial(cam, fov, light, m, reset);
+  input_.set_initial(cam, fov, light, m, {reset_camera, reset_light, reset_mode});
 }
 
 void Loop::take_requests() {
@@ -367,6 +397,7 @@ void Loop::console() {
       continue;
     }
     lua_settop(L_, 0);
+    end_busy();
     if (ok) dirty_ = true;  // a line that ran may have changed anything the view depends on
     take_requests();
     if (!dirty_) console_->prompt();  // after a redraw otherwise, so the prompt follows its messages
@@ -410,8 +441,9 @@ void Loop::redraw() {
   fallback_errors_.clear();
   auto t0 = Clock::now();
   std::string err;
-  if (!call("_frame", 1, 2, &err)) {
+  if (!call("_frame", 1, 3, &err)) {
     frame_error_ = err;
+    update_watch_set();  // a module the frame required (and that broke) must stay watched
     return set_status();
   }
   frame_error_.clear();
@@ -420,13 +452,14 @@ void Loop::redraw() {
   if (!fallback_errors_.empty()) shader_error_ = fallback_errors_.front();
   auto& target = lua::check<gl::RenderTarget>(L_, 1, "Target");
   title_ = lua_tostring(L_, 2) ? lua_tostring(L_, 2) : "";
+  view_error_scale_ = lua_isnumber(L_, 3) ? lua_tonumber(L_, 3) : 0.25;
   gl::finish();
   frame_ms_ = seconds_since(t0) * 1e3;
   ++frame_;
   if (target_ref_ != LUA_NOREF) luaL_unref(L_, LUA_REGISTRYINDEX, target_ref_);
   lua_pushvalue(L_, 1);
   target_ref_ = luaL_ref(L_, LUA_REGISTRYINDEX);  // shown again when the window is uncovered
-  ctx_.present(target.fbo(), target.width(), target.height());
+  present_due_ = true;
   if (!snapshot_.empty()) {
     char path[4096];
     snprintf(path, sizeof path, snapshot_.c_str(), int(frame_));
@@ -442,12 +475,72 @@ void Loop::redraw() {
   set_status();
 }
 
-void Loop::present_last() {
-  if (target_ref_ == LUA_NOREF) return;
-  lua_rawgeti(L_, LUA_REGISTRYINDEX, target_ref_);
-  auto& t = lua::check<gl::RenderTarget>(L_, -1, "Target");
-  ctx_.present(t.fbo(), t.width(), t.height());
-  lua_pop(L_, 1);
+// sn.live._tick(text, fraction) -> cancelled: called by long work (shadenet.live.busy.lua).
+int Loop::tick_thunk(lua_State* L) {
+  auto* self = static_cast<Loop*>(lua_touserdata(L, lua_upvalueindex(1)));
+  const char* text = luaL_checkstring(L, 1);
+  double fraction = luaL_optnumber(L, 2, 0);
+  lua_pushboolean(L, self->tick(text, fraction));
+  return 1;
+}
+
+// Between epochs or recorded frames: at most every 50 ms (at least 10 pictures a second while
+// the work reports at least that often), show the last picture with the progress bar and read
+// the window's events; true when the user cancelled (or closed the window).
+bool Loop::tick(const std::string& text, double fraction) {
+  hud_.set_progress(text, fraction);
+  auto now = Clock::now();
+  double since = std::chrono::duration<double>(now - last_tick_).count();
+  if (!ctx_.windowed()) {
+    if (since >= 1) fprintf(stderr, "[live] %s\n", text.c_str()), last_tick_ = now;  // headless: a line a second
+    if (!shown_path_.empty() && since >= 1) present();
+    return false;
+  }
+  if (since < 0.05) return false;
+  last_tick_ = now;
+  ctx_.poll(0);  // input callbacks run; the view they change is drawn after the work
+  bool cancel = input_.take_cancel();
+  if (ctx_.should_close()) cancel = quit_ = true;
+  try {
+    present();
+  } catch (const std::exception& e) {
+    fprintf(stderr, "[live] cannot show the progress: %s\n", e.what());
+  }
+  if (cancel) fprintf(stderr, "[live] cancelled: %s\n", text.c_str());
+  return cancel;
+}
+
+// After a run, a console line or an action: the progress bar goes.
+void Loop::end_busy() {
+  if (!hud_.has_progress()) return;
+  hud_.set_progress("", 0);
+  present_due_ = true;
+}
+
+// Shows the last picture with the overlays over it; SHADENET_LIVE_SHOWN saves what is shown.
+void Loop::present() {
+  present_due_ = false;
+  if (!ctx_.windowed() && shown_path_.empty()) return;
+  const gl::RenderTarget* frame = nullptr;
+  if (target_ref_ != LUA_NOREF) {
+    lua_rawgeti(L_, LUA_REGISTRYINDEX, target_ref_);
+    frame = &lua::check<gl::RenderTarget>(L_, -1, "Target");
+    lua_pop(L_, 1);  // the registry keeps it alive
+  }
+  auto [w, h] = ctx_.windowed() ? ctx_.framebuffer_size() : std::pair<int, int>{640, 480};
+  if (w < 1 || h < 1) return;  // minimised
+  const ViewState& v = input_.view();
+  hud_.set_view(frame ? mode_name(v.mode) : "", view_error_scale_, frame_ms_, ctx_.windowed());
+  const gl::RenderTarget& shown = hud_.compose(frame, w, h);
+  ctx_.present(shown.fbo(), shown.width(), shown.height());
+  if (shown_path_.empty()) return;
+  char path[4096];
+  snprintf(path, sizeof path, shown_path_.c_str(), int(++shown_count_));
+  try {
+    io::save_image(shown.read(), path);
+  } catch (const std::exception& e) {
+    fprintf(stderr, "[live] SHADENET_LIVE_SHOWN: %s\n", e.what());
+  }
 }
 
 void Loop::actions() {
@@ -466,13 +559,15 @@ void Loop::actions() {
     run_lua("local sn = require 'shadenet'; local dir, frames = sn.record { orbit = { count = 36 } }; "
             "print(('[live] recorded %d frames of an orbit in %s'):format(#frames, dir))");
   if (a.print_view) run_lua("local sn = require 'shadenet'; print(sn.live.view_code())");
-  if (a.present && !dirty_) present_last();
+  end_busy();
+  if (a.present && !dirty_) present_due_ = true;
   fflush(stdout);
 }
 
 int Loop::run() {
   if (const char* s = getenv("SHADENET_LIVE_SNAPSHOT"); s && *s) snapshot_ = s;
   if (const char* s = getenv("SHADENET_LIVE_EXIT_AFTER"); s && *s) exit_after_ = atof(s);
+  if (const char* s = getenv("SHADENET_LIVE_SHOWN"); s && *s) shown_path_ = s;
   auto start = Clock::now();
 
   // The module table: `require "shadenet"` before the script, so its sn.live functions exist.
@@ -484,6 +579,9 @@ int Loop::run() {
     return 1;
   }
   lua_getfield(L_, -1, "live");
+  lua_pushlightuserdata(L_, this);
+  lua_pushcclosure(L_, tick_thunk, 1);
+  lua_setfield(L_, -2, "_tick");
   live_ref_ = luaL_ref(L_, LUA_REGISTRYINDEX);
   lua_settop(L_, 0);
 
@@ -521,8 +619,11 @@ int Loop::run() {
   if (console_) console_->prompt();
 
   while (!quit_) {
-    if (files_changed()) run_script();
-    console();
+    // A save is run once its files were quiet for kSettle: an editor that truncates, then writes,
+    // or two saves in a row, give one run of the finished file.
+    if (files_changed()) reload_at_ = Clock::now() + kSettle, reload_pending_ = true;
+    if (reload_pending_ && Clock::now() >= reload_at_) reload_pending_ = false, run_script();
+    if (!reload_pending_) console();  // a line typed after a save runs after its reload
     actions();
     if (input_.take_dirty()) dirty_ = true;
     if (ctx_.windowed()) {
@@ -540,6 +641,13 @@ int Loop::run() {
         set_status();
       }
     }
+    if (present_due_ && !quit_) {
+      try {
+        present();
+      } catch (const std::exception& e) {
+        fprintf(stderr, "[live] cannot show the overlay: %s\n", e.what());
+      }
+    }
     if (prompt_after_frame_ && console_) console_->prompt(), prompt_after_frame_ = false;
     dirty_ = false;
     if (quit_) break;
@@ -548,6 +656,8 @@ int Loop::run() {
       timeout = exit_after_ - seconds_since(start);
       if (timeout <= 0) break;
     }
+    if (reload_pending_)
+      timeout = std::min(timeout, std::max(0.0, std::chrono::duration<double>(reload_at_ - Clock::now()).count()));
     if (ctx_.windowed()) ctx_.poll(timeout);  // sleeps until an event, a file save or a console line
     else waker_.wait(timeout);
   }
@@ -562,4 +672,4 @@ int run_live(lua_State* L, const LiveOptions& options) {
   return loop.run();
 }
 
-}  // namespace sn::app
+}  // namespace sn::live

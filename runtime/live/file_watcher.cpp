@@ -1,4 +1,4 @@
-#include "app/file_watcher.h"
+#include "live/file_watcher.h"
 
 #include <fcntl.h>
 #include <poll.h>
@@ -12,7 +12,7 @@
 
 namespace fs = std::filesystem;
 
-namespace sn::app {
+namespace sn::live {
 
 namespace {
 std::string normal_absolute(const std::string& p) {
@@ -120,4 +120,4 @@ void FileWatcher::run() {
   }
 }
 
-}  // namespace sn::app
+}  // namespace sn::live

@@ -9,7 +9,7 @@
 #include <thread>
 #include <vector>
 
-namespace sn::app {
+namespace sn::live {
 
 class FileWatcher {
  public:
@@ -37,4 +37,4 @@ class FileWatcher {
   std::thread thread_;
 };
 
-}  // namespace sn::app
+}  // namespace sn::live

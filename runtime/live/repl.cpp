@@ -1,4 +1,4 @@
-#include "app/repl.h"
+#include "live/repl.h"
 
 #include <fcntl.h>
 #include <poll.h>
@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <cstring>
 
-namespace sn::app {
+namespace sn::live {
 
 StdinReader::StdinReader(std::function<void()> wake) : wake_(std::move(wake)) {
   if (pipe2(control_, O_CLOEXEC) != 0) control_[0] = control_[1] = -1;
@@ -143,4 +143,4 @@ bool Console::execute(const std::string& line, bool* ok) {
   return true;
 }
 
-}  // namespace sn::app
+}  // namespace sn::live

@@ -10,7 +10,7 @@
 
 #include <lua.hpp>
 
-namespace sn::app {
+namespace sn::live {
 
 class StdinReader {
  public:
@@ -51,4 +51,4 @@ class Console {
   std::string buffer_;
 };
 
-}  // namespace sn::app
+}  // namespace sn::live

@@ -7,7 +7,7 @@
 
 struct GLFWwindow;
 
-namespace sn::app {
+namespace sn::live {
 
 enum class Mode { network, truth, error, side };
 const char* mode_name(Mode m);
@@ -33,7 +33,7 @@ struct ViewState {
 };
 
 struct Actions {
-  bool screenshot = false, record = false, print_view = false, quit = false, help = false;
+  bool screenshot = false, record = false, print_view = false, quit = false, help = false, cancel = false;
   bool present = false;  // the window was uncovered: show the last frame again (no new render)
 };
 
@@ -41,14 +41,20 @@ class Input {
  public:
   // Installs the callbacks on `window` (its user pointer is this object).
   void attach(GLFWwindow* window);
-  // Sets the camera and light the script asked for; what the user moved since is dropped
-  // only when `reset` (the script's camera or light changed, or the Home key).
-  void set_initial(const Orbit& camera, double fov, const Orbit& light, Mode mode, bool reset);
+  // Sets the camera, light and mode the script asked for; what the user changed since is
+  // dropped only for the parts in `reset` (the script changed that part).
+  struct Reset {
+    bool camera = false, light = false, mode = false;
+  };
+  void set_initial(const Orbit& camera, double fov, const Orbit& light, Mode mode, Reset reset);
 
   ViewState& view() { return view_; }
   // True once since the last call when the view changed (a redraw is due).
   bool take_dirty();
   Actions take_actions();
+  // True once when Esc, Q or C was pressed since the last call: long work (training, recording)
+  // stops. The other actions wait for the loop.
+  bool take_cancel();
   static const char* help();  // the key bindings, for the terminal
 
   // What the callbacks do (public so tests and the loop can drive them without a window).
@@ -72,4 +78,4 @@ class Input {
   double last_x_ = 0, last_y_ = 0;
 };
 
-}  // namespace sn::app
+}  // namespace sn::live

@@ -1,11 +1,11 @@
-#include "app/input.h"
+#include "live/input.h"
 
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
 #include <cmath>
 
-namespace sn::app {
+namespace sn::live {
 
 namespace {
 constexpr double kPi = 3.14159265358979323846;
@@ -50,12 +50,12 @@ Orbit Orbit::from(const std::array<double, 3>& c, const std::array<double, 3>& p
   return o;
 }
 
-void Input::set_initial(const Orbit& camera, double fov, const Orbit& light, Mode mode, bool reset) {
+void Input::set_initial(const Orbit& camera, double fov, const Orbit& light, Mode mode, Reset reset) {
   initial_camera_ = camera, initial_light_ = light, initial_mode_ = mode;
   view_.fov = fov;
-  if (reset || !view_.camera_moved) view_.camera = camera, view_.camera_moved = false;
-  if (reset || !view_.light_moved) view_.light = light, view_.light_moved = false;
-  if (reset) view_.mode = mode;
+  if (reset.camera || !view_.camera_moved) view_.camera = camera, view_.camera_moved = false;
+  if (reset.light || !view_.light_moved) view_.light = light, view_.light_moved = false;
+  if (reset.mode) view_.mode = mode;
   dirty_ = true;
 }
 
@@ -71,11 +71,17 @@ Actions Input::take_actions() {
   return a;
 }
 
+bool Input::take_cancel() {
+  bool c = actions_.cancel || actions_.quit;
+  actions_.cancel = actions_.quit = false;
+  return c;
+}
+
 const char* Input::help() {
   return "keys: 1 network  2 truth  3 |error| heatmap  4 side by side (truth | network | error)  Tab next view\n"
          "      left drag: orbit   wheel: zoom   right drag or arrows: move the light   Home: reset view\n"
          "      [ ] heatmap scale   S or F12: screenshot   R: record an orbit   P: print the view as Lua\n"
-         "      H: this help   Esc or Q: quit\n";
+         "      H: this help   Esc or Q: quit (while training or recording: cancel it; C too)\n";
 }
 
 void Input::drag(double dx, double dy, bool light) {
@@ -124,6 +130,7 @@ void Input::key(int k, int mods) {
     case GLFW_KEY_F1: actions_.help = true; break;
     case GLFW_KEY_ESCAPE:
     case GLFW_KEY_Q: actions_.quit = true; break;
+    case GLFW_KEY_C: actions_.cancel = true; break;
     default: break;
   }
 }
@@ -165,4 +172,4 @@ void Input::on_key(GLFWwindow* w, int key, int, int action, int mods) {
     static_cast<Input*>(glfwGetWindowUserPointer(w))->key(key, mods);
 }
 
-}  // namespace sn::app
+}  // namespace sn::live

@@ -4,8 +4,10 @@
 // redraws only when one of those changed, sleeping in between.
 //
 // Test hooks (environment):
-//   SHADENET_LIVE_SNAPSHOT=path   save each redrawn frame (the offscreen image the window shows)
-//                                 to path; a "%d" in it is replaced by the frame number
+//   SHADENET_LIVE_SNAPSHOT=path   save each redrawn frame (the view, without overlays) to path;
+//                                 a "%d" in it is replaced by the frame number
+//   SHADENET_LIVE_SHOWN=path      save what the window shows (the view with its overlays: error,
+//                                 progress, counter, labels) each time it is shown, headless too
 //   SHADENET_LIVE_EXIT_AFTER=s    leave the loop after s seconds
 #pragma once
 #include <string>
@@ -13,7 +15,7 @@
 
 #include <lua.hpp>
 
-namespace sn::app {
+namespace sn::live {
 
 struct LiveOptions {
   std::string script;                // the script to (re)run; arguments are in the global `arg`
@@ -26,4 +28,4 @@ struct LiveOptions {
 // SHADENET_LIVE_EXIT_AFTER time. Returns the exit status (0; 1 when the loop cannot start).
 int run_live(lua_State* L, const LiveOptions& options);
 
-}  // namespace sn::app
+}  // namespace sn::live

@@ -1,0 +1,95 @@
+#include "live/hud.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "gl/overlay.h"
+#include "io/overlay.h"
+#include "io/text.h"
+#include "live/error_report.h"
+
+namespace sn::live {
+
+float overlay_font_size(int w) { return std::clamp(w / 55.f, 10.f, 16.f); }
+
+void Hud::set_error(const std::string& message) {
+  error_lines_ = message.empty() ? std::vector<std::string>{} : report_lines(report_error(message));
+}
+
+namespace {
+
+// The heatmap's colour bar for the side view's fourth panel: inferno from 0 to `scale`.
+io::Image colour_bar(int w, int h, double scale, float size) {
+  io::OverlayStyle style;
+  style.size = size;
+  io::Image img = io::text_box({{"|error|: 0 (black) to " + io::number_text(scale) + " (yellow) or more"}}, w, style);
+  int bar_h = std::max(4, h / 6), y0 = img.height;
+  io::Image out(w, img.height + bar_h, 4);
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < w; ++x)
+      for (int c = 0; c < 4; ++c) out.at(x, y, c) = img.at(x, y, c);
+  for (int y = 0; y < bar_h; ++y)
+    for (int x = 0; x < w; ++x) {
+      io::Color col = io::colormap(io::Colormap::inferno, w > 1 ? double(x) / (w - 1) : 0);
+      for (int c = 0; c < 3; ++c) out.at(x, y0 + y, c) = col[c];
+      out.at(x, y0 + y, 3) = 1;
+    }
+  return out;
+}
+
+}  // namespace
+
+std::vector<Placed> Hud::layout(int w, int h) const {
+  std::vector<Placed> out;
+  io::OverlayStyle small;
+  small.size = overlay_font_size(w);
+  small.opacity = 0.6f;
+  if (mode_ == "side") {  // 2 x 2 panels: truth | network, error | legend
+    int pw = w / 2, ph = h / 2;
+    out.push_back({io::text_box({{"truth"}}, 0, small), 0, 0});
+    out.push_back({io::text_box({{"network"}}, 0, small), pw, 0});
+    out.push_back({io::text_box({{"|error|, scale " + io::number_text(error_scale_)}}, 0, small), 0, ph});
+    out.push_back({colour_bar(std::max(8, pw - 16), ph, error_scale_, small.size), pw + 8, ph + 8});
+  }
+  if (!error_lines_.empty()) {
+    io::OverlayStyle style;
+    style.size = overlay_font_size(w);
+    style.background = {0.25f, 0.02f, 0.02f};
+    style.opacity = 0.85f;
+    std::vector<io::OverlayLine> lines;
+    for (size_t i = 0; i < error_lines_.size(); ++i)
+      lines.push_back({(i == 0 ? "ERROR " : "") + error_lines_[i],
+                       i == 0 ? io::Color{1.f, 0.45f, 0.4f} : i == 1 ? io::Color{1, 1, 1} : io::Color{0.8f, 0.8f, 0.8f}});
+    Placed p{io::text_box(lines, w, style), 0, 0};
+    p.y = std::max(0, h - p.image.height);
+    out.push_back(std::move(p));
+  }
+  if (!progress_text_.empty()) {
+    io::OverlayStyle style;
+    style.size = overlay_font_size(w);
+    out.push_back({io::progress_bar(progress_, progress_text_, w, {0.15f, 0.45f, 0.85f}, style), 0, 0});
+  }
+  int top = progress_text_.empty() ? 0 : out.back().image.height;
+  if (counter_ && frame_ms_ > 0) {
+    char text[64];
+    snprintf(text, sizeof text, "%.1f ms  %.1f fps", frame_ms_, 1000 / frame_ms_);
+    io::Image box = io::text_box({{text}}, 0, small);
+    int x = std::max(0, w - box.width);
+    out.push_back({std::move(box), x, top});  // under the progress bar, if any
+  }
+
+  return out;
+}
+
+const gl::RenderTarget& Hud::compose(const gl::RenderTarget* frame, int w, int h) {
+  if (frame) w = frame->width(), h = frame->height();
+  std::vector<Placed> overlays = layout(w, h);
+  if (frame && overlays.empty()) return *frame;
+  if (!shown_ || shown_->width() != w || shown_->height() != h) shown_ = std::make_unique<gl::RenderTarget>(w, h);
+  if (frame) gl::copy_color(*frame, *shown_);
+  else shown_->clear({0.1f, 0.1f, 0.1f, 1});
+  for (const Placed& p : overlays) gl::blend_over(*shown_, p.image, p.x, p.y);
+  return *shown_;
+}
+
+}  // namespace sn::live

@@ -1,0 +1,54 @@
+// What live mode draws over its view (the heads-up display): the error overlay, the training
+// progress bar, the frame-time counter and the panels' labels. It keeps the last good picture
+// untouched: the overlays go on a copy, which the window shows (and SHADENET_LIVE_SHOWN saves).
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "gl/render_target.h"
+#include "io/image.h"
+
+namespace sn::live {
+
+struct Placed {
+  io::Image image;  // RGBA
+  int x = 0, y = 0;  // top-left, in the picture's pixels
+};
+
+class Hud {
+ public:
+  // The error to show ("" = none): its report's lines over the bottom of the picture.
+  void set_error(const std::string& message);
+  bool has_error() const { return !error_lines_.empty(); }
+  // Long work under way: a bar across the top, `fraction` (0..1) filled, `text` on it. "" = none.
+  void set_progress(const std::string& text, double fraction) { progress_text_ = text, progress_ = fraction; }
+  bool has_progress() const { return !progress_text_.empty(); }
+
+  // The view under the overlays: its mode ("side" gets its panels labelled), the heatmap's
+  // scale, and the last frame's time in ms (shown as a counter when `counter`; <= 0: none yet).
+  void set_view(const std::string& mode, double error_scale, double frame_ms, bool counter) {
+    mode_ = mode, error_scale_ = error_scale, frame_ms_ = frame_ms, counter_ = counter;
+  }
+
+  // The overlays for a w x h picture, in drawing order.
+  std::vector<Placed> layout(int w, int h) const;
+
+  // The picture to show: `frame` (may be null: nothing drawn yet, a w x h dark picture) with the
+  // overlays blended over a copy. Returns the target to present (frame itself when no overlay).
+  const gl::RenderTarget& compose(const gl::RenderTarget* frame, int w, int h);
+
+ private:
+  std::vector<std::string> error_lines_;
+  std::string progress_text_;
+  double progress_ = 0;
+  std::string mode_;
+  double error_scale_ = 0.25, frame_ms_ = 0;
+  bool counter_ = false;
+  std::unique_ptr<gl::RenderTarget> shown_;
+};
+
+// The font size for overlays on a picture `w` pixels wide.
+float overlay_font_size(int w);
+
+}  // namespace sn::live

@@ -1,0 +1,92 @@
+-- Screenshots and recordings of the current view: sn.live.screenshot, sn.record (an orbit of the
+-- camera or a sweep of one value), with or without a window.
+local sn = require "shadenet.core"
+local S = require "shadenet.live.state"
+local check = require "shadenet.live.check"
+local view_of = require "shadenet.live.view"
+local busy = require "shadenet.live.busy"
+local live = sn.live
+local strict, is_mode, MODES = check.strict, check.is_mode, check.MODES
+local render, resolve_view, current_spec = view_of.render, view_of.resolve_view, view_of.current_spec
+
+local absolute = sn.live_absolute
+
+-- sn.live.screenshot([path]) -> absolute path: saves the current view (PNG unless the path
+-- says otherwise); by default out/live/screenshot-NNNN.png.
+function live.screenshot(path)
+  local view = S.view or resolve_view(current_spec("sn.live.screenshot"), {})
+  local spec = current_spec("sn.live.screenshot")
+  local image = render(spec, view):read()
+  -- claimed, not looked for: another instance saving at the same moment gets the next number
+  path = path or sn.fs.claim("out/live", "screenshot", ".png")
+  image:save(path)
+  return absolute(path)
+end
+
+-- sn.record{ orbit = {count = 36, elevation = deg (current), distance = (current)}
+--          | sweep = {set = function(v), from = -2, to = 2, count = 9},
+--            mode = (current), width, height, dir = "out/live/record-NNNN" }
+-- -> dir (absolute), {frame paths}. Writes frame-0001.png, ... of an orbit of the camera
+-- around its target, or of a sweep of one value (a weight: set = function(v) w[2][3] = v end);
+-- the value is put back afterwards.
+function sn.record(o)
+  strict(o, { "orbit", "sweep", "mode", "width", "height", "dir" }, "sn.record", 2)
+  if (o.orbit == nil) == (o.sweep == nil) then error("sn.record: give either 'orbit' or 'sweep'", 2) end
+  local spec = current_spec("sn.record")
+  local base = S.view or resolve_view(spec, {})
+  local view = {}
+  for k, v in pairs(base) do view[k] = v end
+  if o.mode ~= nil then
+    if not is_mode(o.mode) then
+      error(("sn.record: unknown mode '%s' (valid: %s)"):format(tostring(o.mode), table.concat(MODES, ", ")), 2)
+    end
+    view.mode = o.mode
+  end
+  view.width, view.height = o.width or view.width, o.height or view.height
+  local dir = o.dir
+  local paths = {}
+  local count_of = o.orbit and (o.orbit.count or 36) or (o.sweep and o.sweep.count or 9)
+  local function frame(k)
+    busy.tick(("recording frame %d/%d  (Esc cancels)"):format(k, count_of), (k - 1) / count_of)
+    if k == 1 then  -- the folder is made once the options were checked: no empty folder on a typo
+      dir = dir and sn.fs.mkdir(dir) or sn.fs.claim("out/live", "record")
+    end
+    local p = ("%s/frame-%04d.png"):format(dir, k)
+    render(spec, view):read():save(p)
+    paths[#paths + 1] = absolute(p)
+  end
+  if o.orbit then
+    strict(o.orbit, { "count", "elevation", "distance" }, "sn.record: orbit", 2)
+    local count = o.orbit.count or 36
+    local cam = view.camera
+    local e, t = cam:eye(), cam:target()
+    local d = { e[1] - t[1], e[2] - t[2], e[3] - t[3] }
+    local dist = o.orbit.distance or math.sqrt(d[1] ^ 2 + d[2] ^ 2 + d[3] ^ 2)
+    local elev = o.orbit.elevation and math.rad(o.orbit.elevation)
+                 or math.asin(math.max(-1, math.min(1, d[2] / math.sqrt(d[1] ^ 2 + d[2] ^ 2 + d[3] ^ 2))))
+    local az0 = math.atan2(d[1], d[3])
+    for k = 1, count do
+      local az = az0 + 2 * math.pi * (k - 1) / count
+      view.camera = sn.camera { eye = { t[1] + dist * math.cos(elev) * math.sin(az), t[2] + dist * math.sin(elev),
+                                        t[3] + dist * math.cos(elev) * math.cos(az) },
+                                target = t, fov = cam:fov(), aspect = cam:aspect() }
+      frame(k)
+    end
+  else
+    strict(o.sweep, { "set", "get", "from", "to", "count" }, "sn.record: sweep", 2)
+    local s = o.sweep
+    if type(s.set) ~= "function" then error("sn.record: sweep.set must be a function(value) that applies the value", 2) end
+    local from, to, count = s.from or -2, s.to or 2, s.count or 9
+    local before = s.get and s.get()
+    local ok, err = pcall(function()
+      for k = 1, count do
+        s.set(count == 1 and from or from + (to - from) * (k - 1) / (count - 1))
+        frame(k)
+      end
+    end)
+    if before ~= nil then s.set(before) end
+    if not ok then error("sn.record: " .. tostring(err), 2) end
+  end
+  return dir and absolute(dir), paths  -- nil when count was 0: nothing was written
+end
+live.record = sn.record

@@ -1,0 +1,243 @@
+-- What the window shows: sn.live.show declares the view, sn.live.render draws it headless (the
+-- window draws the same function's output), sn.live.set_view / view_code / status for the
+-- console and the tests.
+local sn = require "shadenet.core"
+local S = require "shadenet.live.state"
+local check = require "shadenet.live.check"
+local live = sn.live
+local strict, check_vec3, check_light, check_size = check.strict, check.vec3, check.light, check.size
+local is_camera, type_is, is_mode, MODES = check.is_camera, check.type_is, check.is_mode, check.MODES
+
+-- For the record and loop modules: the spec in force, a view with its defaults, its image.
+local M = {}
+
+local SHOW_KEYS = { "network", "truth", "scene", "camera", "light", "mode", "title", "val_mse", "error_scale",
+                    "colormap", "size" }
+
+-- What `network` / `truth` may be: a function of the view, or with a `scene`, a network (Mlp)
+-- or a lighting model (sn.lighting.*) that scene:render shades from the view's camera and light.
+local function drawer(spec, key)
+  local x = spec[key]
+  if x == nil or type(x) == "function" then return x end
+  local kind = key == "network" and "Mlp" or "Lighting"
+  if not type_is(x, kind) then
+    error(("sn.live.show: '%s' must be a function(view) returning a Target or Image, or %s, got %s"):format(
+      key, key == "network" and "a network (sn.mlp)" or "a lighting model (sn.lighting.*)", tostring(x)), 3)
+  end
+  if not spec.scene then
+    error(("sn.live.show: '%s' is %s; give the scene it is rendered in: scene = sn.scene{...}"):format(
+      key, tostring(x)), 3)
+  end
+  local scene = spec.scene
+  return function(view)
+    return scene:render(x, { camera = view.camera, light = view.light, size = { view.width, view.height } })
+  end
+end
+
+-- sn.live.show{ network = net | function(view), truth = model | function(view), scene = scene,
+--               camera = Camera, light = {dir = {x,y,z}}, mode = "network", title = "...",
+--               val_mse = number | function() -> number, error_scale = 0.25,
+--               colormap = "inferno", size = {w, h} }
+function live.show(spec)
+  strict(spec, SHOW_KEYS, "sn.live.show", 2)
+  if spec.network == nil and spec.truth == nil then
+    error("sn.live.show: give at least one of 'network' or 'truth'", 2)
+  end
+  if spec.scene ~= nil and not type_is(spec.scene, "Scene") then
+    error("sn.live.show: 'scene' must be a Scene (sn.scene{...}), got " .. tostring(spec.scene), 2)
+  end
+  if spec.camera ~= nil and not is_camera(spec.camera) then
+    error("sn.live.show: 'camera' must be a Camera (sn.camera{...}), got " .. type(spec.camera), 2)
+  end
+  if spec.light ~= nil then check_light(spec.light, "sn.live.show: light", 2) end
+  if spec.mode ~= nil and not is_mode(spec.mode) then
+    error(("sn.live.show: unknown mode '%s' (valid: %s)"):format(tostring(spec.mode), table.concat(MODES, ", ")), 2)
+  end
+  if spec.error_scale ~= nil and not (type(spec.error_scale) == "number" and spec.error_scale > 0
+                                       and spec.error_scale < math.huge) then
+    error("sn.live.show: 'error_scale' must be a number > 0 (the error shown as the top colour)", 2)
+  end
+  if spec.colormap ~= nil and spec.colormap ~= "inferno" and spec.colormap ~= "viridis" and spec.colormap ~= "gray" then
+    error(("sn.live.show: unknown colormap '%s' (valid: inferno, viridis, gray)"):format(tostring(spec.colormap)), 2)
+  end
+  if spec.size ~= nil then check_size(spec.size, "sn.live.show: size", 2) end
+  if spec.val_mse ~= nil and type(spec.val_mse) ~= "number" and type(spec.val_mse) ~= "function" then
+    error("sn.live.show: 'val_mse' must be a number or a function returning one", 2)
+  end
+  local copy = { draw = {} }
+  for k, v in pairs(spec) do copy[k] = v end
+  copy.draw.network, copy.draw.truth = drawer(spec, "network"), drawer(spec, "truth")
+  copy.mode = copy.mode or (copy.network and "network" or "truth")
+  local scene = spec.scene
+  if scene then  -- the scene's first view, light and size unless the show says otherwise
+    copy.camera = copy.camera or scene:views()[1]
+    if not copy.light then
+      local l = scene:light()
+      copy.light = { dir = { l.dir[1], l.dir[2], l.dir[3] } }
+    end
+    if not copy.size then
+      local w, h = scene:size()
+      copy.default_size = { w, h }
+    end
+  end
+  local net = spec.network
+  if type_is(net, "Mlp") then
+    copy.title = copy.title or tostring(net)
+    copy.val_mse = copy.val_mse or function()
+      local b = net:best()
+      return b and b.val_mse
+    end
+  end
+  if S.running then S.pending = copy else S.spec = copy end
+end
+
+function M.current_spec(what)
+  local spec = S.spec
+  if S.running and S.pending then spec = S.pending end
+  if not spec then error(what .. ": nothing to show yet; call sn.live.show{ network = ..., truth = ... } first", 3) end
+  return spec
+end
+
+-- A drawer's result as a Target: Images (scene:render) are uploaded, into `cache` when given.
+local function as_target(t, what, cache, key)
+  if type_is(t, "Target") then return t end
+  if type_is(t, "Image") then
+    local into = cache and cache[key]
+    local out = sn.live_upload(t, into)
+    if cache then cache[key] = out end
+    return out
+  end
+  error(("%s must return a Target or an Image, got %s"):format(what, type(t) == "userdata" and tostring(t) or type(t)), 0)
+end
+
+local function draw(spec, which, view, cache)
+  local f = spec.draw[which]
+  if not f then
+    local has = spec.draw.network and "network" or "truth"
+    error(("mode '%s' needs '%s' in sn.live.show{...} (this view has only '%s')"):format(view.mode, which, has), 0)
+  end
+  return as_target(f(view), "sn.live.show's '" .. which .. "'", cache, which .. " " .. view.width .. "x" .. view.height)
+end
+
+-- The view a mode renders, with every default filled in.
+function M.resolve_view(spec, o)
+  local size = spec.size or spec.default_size
+  local w, h = o.width or (size and size[1]) or 640, o.height or (size and size[2]) or 480
+  return {
+    mode = o.mode or spec.mode,
+    camera = o.camera or spec.camera or sn.camera {},
+    light = o.light or spec.light or { dir = { 0, 0, 1 } },
+    width = w, height = h,
+  }
+end
+
+-- Side by side: 2 x 2 panels of the view's aspect (truth | network, error | -) filling the view.
+local function panel_size(w, h)
+  return math.max(1, math.floor(w / 2)), math.max(1, math.floor(h / 2))
+end
+
+-- `cache` (the loop's) keeps GPU targets between frames; headless renders get fresh ones.
+function M.render(spec, view, cache)
+  local mode = view.mode
+  if mode == "network" then return draw(spec, "network", view, cache) end
+  if mode == "truth" then return draw(spec, "truth", view, cache) end
+  local v = view
+  if mode == "side" then
+    v = {}
+    for k, x in pairs(view) do v[k] = x end
+    v.width, v.height = panel_size(view.width, view.height)
+  end
+  local n, t = draw(spec, "network", v, cache), draw(spec, "truth", v, cache)
+  local key = mode .. " " .. view.width .. "x" .. view.height
+  local out = sn.live_compose { network = n, truth = t, layout = mode == "side" and "side" or "error",
+                                scale = view.error_scale or spec.error_scale or 0.25, colormap = spec.colormap,
+                                into = cache and cache[key] }
+  if cache then cache[key] = out end
+  return out
+end
+
+-- sn.live.render{ mode = "network" | "truth" | "error" | "side", camera = Camera,
+--                 light = {dir = {x,y,z}}, width = 640, height = 480 } -> Target
+-- The image the window shows for that view (side: 2 x 2 panels of width/2 x height/2).
+function live.render(o)
+  o = o or {}
+  strict(o, { "mode", "camera", "light", "width", "height" }, "sn.live.render", 2)
+  if o.mode ~= nil and not is_mode(o.mode) then
+    error(("sn.live.render: unknown mode '%s' (valid: %s)"):format(tostring(o.mode), table.concat(MODES, ", ")), 2)
+  end
+  if o.camera ~= nil and not is_camera(o.camera) then error("sn.live.render: 'camera' must be a Camera", 2) end
+  if o.light ~= nil then check_light(o.light, "sn.live.render: light", 2) end
+  for _, k in ipairs({ "width", "height" }) do
+    if o[k] ~= nil and not (type(o[k]) == "number" and o[k] >= 1 and o[k] % 1 == 0) then
+      error(("sn.live.render: '%s' must be a whole number >= 1"):format(k), 2)
+    end
+  end
+  local spec = M.current_spec("sn.live.render")
+  local ok, r = pcall(M.render, spec, M.resolve_view(spec, o))
+  if not ok then error("sn.live.render: " .. tostring(r), 2) end
+  return r
+end
+
+-- sn.live.view() -> the view the window shows now ({mode, camera, light, width, height}), to
+-- reproduce it headless with sn.live.render(view); nil before the first frame.
+function live.view()
+  if not S.view then return nil end
+  local v = {}
+  for k, x in pairs(S.view) do v[k] = x end
+  return v
+end
+
+-- sn.live.frames() -> how many frames the loop has rendered
+function live.frames() return S.frames end
+
+-- sn.live.active() -> true while `shadenet --watch` runs the script (false in a plain run), so a
+-- script can do headless-only work (saving figures) when nobody watches.
+function live.active() return S.active == true end
+
+-- sn.live.quit(): ends the live loop after the current line or reload.
+function live.quit() S.requests.quit = true end
+
+-- sn.live.redraw(): renders the view again (e.g. after changing something the loop cannot see).
+function live.redraw() S.requests.redraw = true end
+
+-- sn.live.status() -> { title = the window's title, error = the error shown ("" when none),
+--                       frames = frames rendered }
+function live.status()
+  local st = S.status or {}
+  return { title = st.title or "", error = st.error or "", frames = S.frames }
+end
+
+local function vec_code(v)
+  return ("{%.17g, %.17g, %.17g}"):format(v[1], v[2], v[3])
+end
+
+-- sn.live.set_view{ mode = "error", camera = Camera, light = {dir = {x,y,z}} }: what the
+-- window's keys and mouse do, from code (the console): the loop takes it before its next frame.
+function live.set_view(o)
+  strict(o, { "mode", "camera", "light" }, "sn.live.set_view", 2)
+  if o.mode ~= nil and not is_mode(o.mode) then
+    error(("sn.live.set_view: unknown mode '%s' (valid: %s)"):format(tostring(o.mode), table.concat(MODES, ", ")), 2)
+  end
+  if o.camera ~= nil and not is_camera(o.camera) then error("sn.live.set_view: 'camera' must be a Camera", 2) end
+  if o.light ~= nil then check_light(o.light, "sn.live.set_view: light", 2) end
+  local r = S.requests.view or {}
+  r.mode = o.mode or r.mode
+  if o.camera then r.eye, r.target, r.fov = o.camera:eye(), o.camera:target(), o.camera:fov() end
+  if o.light then r.light = o.light.dir end
+  S.requests.view = r
+end
+
+-- sn.live.view_code([path]) -> a line of Lua that renders the current view headless and saves
+-- it to `path` (default "view.png"); the P key prints it. Numbers are exact (%.17g).
+function live.view_code(path)
+  local v = S.view
+  if not v then return "-- nothing rendered yet" end
+  local c = v.camera
+  local cam = ("sn.camera { eye = %s, target = %s, fov = %.17g%s }"):format(vec_code(c:eye()), vec_code(c:target()),
+    c:fov(), c:aspect() and (", aspect = %.17g"):format(c:aspect()) or "")
+  return ("sn.live.render { mode = %q, camera = %s, light = { dir = %s }, width = %d, height = %d }"
+          .. ":read():save(%q)"):format(v.mode, cam, vec_code(v.light.dir), v.width, v.height, path or "view.png")
+end
+
+
+return M

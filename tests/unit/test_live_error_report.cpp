@@ -1,0 +1,48 @@
+// What live mode shows of an error: the file:line to fix, its source line, the context.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "live/error_report.h"
+
+using namespace sn::live;
+namespace fs = std::filesystem;
+
+TEST(LiveErrorReport, LuaErrorGetsItsSourceLine) {
+  fs::path dir = fs::temp_directory_path() / ("shadenet_report_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  std::string file = (dir / "s.lua").string();
+  std::ofstream(file) << "local a = 1\n  local x = = 1\n";
+  ErrorReport r = report_error(file + ":2: unexpected symbol near '='\nstack traceback:\n\t[C]: in ?");
+  EXPECT_EQ(r.headline, file + ":2: unexpected symbol near '='");
+  EXPECT_EQ(r.where, file + ":2");
+  EXPECT_EQ(r.source, "  2 | local x = = 1");
+  EXPECT_TRUE(r.context.empty());
+  EXPECT_EQ(r.traceback, "stack traceback:\n\t[C]: in ?");
+  fs::remove_all(dir);
+}
+
+TEST(LiveErrorReport, ShaderLineBeforeTheScriptsAndTheLogsSourceLine) {
+  ErrorReport r = report_error(
+      "s.lua:4: GLSL compile error in bad.frag:\nbad.frag:3: error: syntax error, unexpected ';'\n"
+      "      o_color = vec4(1.0) +;\nstack traceback:\n\t[C]: in function 'program'");
+  EXPECT_EQ(r.headline, "bad.frag:3: error: syntax error, unexpected ';'");
+  EXPECT_EQ(r.source, "  3 | o_color = vec4(1.0) +;");
+  ASSERT_EQ(r.context.size(), 1u);
+  EXPECT_EQ(r.context[0], "s.lua:4: GLSL compile error in bad.frag:");
+  auto lines = report_lines(r);
+  ASSERT_EQ(lines.size(), 3u);
+  EXPECT_EQ(lines[0], r.headline);
+}
+
+TEST(LiveErrorReport, ModuleErrorNamesTheModulesLine) {
+  ErrorReport r = report_error("s.lua:14: error loading module 'm' from file 'm.lua':\n\tm.lua:1: unexpected symbol near '='");
+  EXPECT_EQ(r.where, "m.lua:1");
+  EXPECT_EQ(r.headline, "m.lua:1: unexpected symbol near '='");
+  EXPECT_EQ(r.source, "");  // m.lua does not exist here
+  // No file:line at all: the first line.
+  EXPECT_EQ(report_error("the script is empty\nmore").headline, "the script is empty");
+}

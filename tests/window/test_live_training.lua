@@ -1,0 +1,93 @@
+-- Training inside a live session never freezes the window: while sn.train runs (the first run,
+-- and a retrain after a reload) the window shows the last good picture with a progress bar at
+-- 10 pictures a second or more, and Esc cancels the training (the last good state stays).
+local sn = require "shadenet"
+package.path = "tests/live/?.lua;" .. package.path
+local H = require "harness"
+
+local dir = "out/live_tests/training"
+os.execute(("rm -rf %q && mkdir -p %q"):format(dir, dir))
+H.write(dir .. "/tint.frag", H.read("tests/live/tint.frag"))
+local script = dir .. "/train.lua"
+local function version(v, epochs)
+  return ([[
+local sn = require "shadenet"
+local net = sn.keep("net", function()
+  local xs, ys = {}, {}
+  for i = 1, 20000 do
+    local x = {}
+    for k = 1, 6 do x[k] = math.sin(i * (k + 0.5) * 0.731) end
+    xs[i], ys[i] = x, { 0.5 + 0.3 * x[1], 0.5 + 0.3 * x[2] * x[3], 0.4 }
+  end
+  local data = sn.dataset { x = xs, y = ys, split = 0.8, seed = 1 }
+  local n = sn.mlp { inputs = 6, hidden = { 32, 32, 32 }, outputs = 3, seed = %d }
+  io.stderr:write("TRAIN START %d\n")
+  local t0 = sn.clock()
+  sn.train { nets = n, data = data, epochs = %d, batch = 8, backend = "cpu" }
+  io.stderr:write(("TRAINED %d in %%.3f s\n"):format(sn.clock() - t0))
+  return n
+end, { v = %d })
+local sphere = sn.mesh.sphere { segments = 24, rings = 12 }
+local program = sn.program { vertex = "mesh.vert", fragment = %q }
+local w = net.layers[1].weight
+sn.live.show {
+  network = function(view)
+    local t = sn.target { width = view.width, height = view.height }
+    sn.draw { target = t, program = program, mesh = sphere, camera = view.camera, clear = { 0, 0, 0, 1 },
+              uniforms = { u_tint = { 0.6 + w[1][1], 0.6, 0.6 }, u_light = view.light.dir } }
+    return t
+  end,
+  camera = sn.camera { eye = { 0.6, 0.8, 2.6 } },
+}
+]]):format(v + 1, v, epochs, v, v, dir .. "/tint.frag")
+end
+
+local shown_dir = dir .. "/session/shown"
+local function shown_count()
+  local n = 0
+  while H.exists(("%s/shown-%d.exr"):format(shown_dir, n + 1)) do n = n + 1 end
+  return n
+end
+
+H.write(script, version(1, 300))
+local s = H.start { dir = dir .. "/session", script = script, size = "200x150", shown = true, limit = 60 }
+s:wait_log("TRAIN START 1")
+local before = shown_count()
+local secs = tonumber(s:wait_log("TRAINED 1 in (%S+) s", 40))
+local during = shown_count() - before
+assert(secs > 1, "the training is long enough to measure (" .. secs .. " s)")
+assert(during / secs >= 10, ("%d pictures in %.2f s of training: under 10 a second"):format(during, secs))
+-- A picture from the middle of the training: the progress bar across the top, text on it.
+local mid = sn.image.load(("%s/shown-%d.exr"):format(shown_dir, before + math.floor(during / 2)))
+local p = mid:get(2, 2)
+assert(p[3] > 0.6 and p[3] > 2 * p[1], ("the bar's filled part at the top left: %g %g %g"):format(p[1], p[2], p[3]))
+s:wait_frame(1)
+local good = s:image(1)
+print(("1. first training: %d pictures in %.2f s (%.1f a second), progress bar drawn"):format(during, secs, during / secs))
+
+-- 2. A reload that retrains: the last good picture stays under the bar.
+local n0 = shown_count()
+H.write(script, version(2, 300))
+s:wait_log("TRAIN START 2")
+local n1, pic = s:wait_shown(n0 + 2)
+local w, h = pic:size()
+local a, b = pic:get(math.floor(w / 2), math.floor(h / 2)), good:get(math.floor(w / 2), math.floor(h / 2))
+for c = 1, 3 do assert(a[c] == b[c], "the last good picture is shown while retraining") end
+s:wait_log("TRAINED 2 in")
+print("2. retraining after a reload showed the last good picture under the bar")
+
+-- 3. Esc cancels a training: the session goes on with the last good network.
+H.write(script, version(3, 3000))
+s:wait_log("TRAIN START 3")
+s:wait_shown(shown_count() + 1)
+local x = H.x11()
+x:move(100, 75)
+x:key("Escape")
+x:close()
+s:wait_log("%[live%] cancelled: training")
+s:wait_log("%[live%] error: [^\n]*cancelled by the user")
+assert(not s:log():find("TRAINED 3", 1, true), "the training stopped")
+s:send("print('ALIVE ' .. sn.live.frames())")
+s:wait_log("ALIVE %d+")
+s:stop()
+print("3. Esc cancelled the training; the session kept its last good network")
