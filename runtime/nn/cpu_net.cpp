@@ -21,7 +21,7 @@ namespace {
 
 using namespace simd;
 
-constexpr int kLanes = 8;
+constexpr int kLanes = CpuNet::kLanes;
 std::size_t round8(std::size_t n) { return (n + 7) & ~std::size_t(7); }
 std::size_t round16(std::size_t n) { return (n + 15) & ~std::size_t(15); }
 
@@ -380,6 +380,17 @@ SN_INLINE void forward_impl(const View& V, const float* x, std::size_t count, fl
 }
 
 template <int H>
+SN_INLINE void lanes_impl(const View& V, const float* x, std::size_t blocks, float* y) {
+  const Layout& S = V.S;
+  const std::size_t in = std::size_t(S.in[0]) * kLanes, out = std::size_t(S.out[S.L - 1]) * kLanes;
+  for (std::size_t b = 0; b < blocks; ++b) {
+    std::memcpy(V.act(0), x + b * in, in * sizeof(float));
+    forward_block<H>(V);
+    std::memcpy(y + b * out, V.act(S.L), out * sizeof(float));
+  }
+}
+
+template <int H>
 SN_INLINE void counts_impl(const View& V, const float* x, std::size_t count,
                            std::vector<std::vector<uint32_t>>& counts) {
   const Layout& S = V.S;
@@ -428,6 +439,7 @@ using StepFn = bool (*)(const View&, const float*, const float*, const uint32_t*
 using LossFn = double (*)(const View&, const float*, const float*, std::size_t, const LossArgs&);
 using ForwardFn = void (*)(const View&, const float*, std::size_t, float*);
 using CountsFn = void (*)(const View&, const float*, std::size_t, std::vector<std::vector<uint32_t>>&);
+using LanesFn = void (*)(const View&, const float*, std::size_t, float*);
 
 template <int H>
 __attribute__((target("avx2,fma"))) bool step_avx2(const View& V, const float* x, const float* y,
@@ -443,6 +455,14 @@ __attribute__((target("avx2,fma"))) double loss_avx2(const View& V, const float*
 template <int H>
 __attribute__((target("avx2,fma"))) void forward_avx2(const View& V, const float* x, std::size_t n, float* out) {
   forward_impl<H>(V, x, n, out);
+}
+template <int H>
+__attribute__((target("avx2,fma"))) void lanes_avx2(const View& V, const float* x, std::size_t n, float* y) {
+  lanes_impl<H>(V, x, n, y);
+}
+template <int H>
+void lanes_sse2(const View& V, const float* x, std::size_t n, float* y) {
+  lanes_impl<H>(V, x, n, y);
 }
 template <int H>
 __attribute__((target("avx2,fma"))) void counts_avx2(const View& V, const float* x, std::size_t n,
@@ -485,12 +505,13 @@ struct Kernels {
   LossFn loss;
   ForwardFn forward;
   CountsFn counts;
+  LanesFn lanes;
 };
 
 template <int H>
 Kernels kernels_for(bool avx2) {
-  if (avx2) return {step_avx2<H>, loss_avx2<H>, forward_avx2<H>, counts_avx2<H>};
-  return {step_sse2<H>, loss_impl<H>, forward_impl<H>, counts_sse2<H>};
+  if (avx2) return {step_avx2<H>, loss_avx2<H>, forward_avx2<H>, counts_avx2<H>, lanes_avx2<H>};
+  return {step_sse2<H>, loss_impl<H>, forward_impl<H>, counts_sse2<H>, lanes_sse2<H>};
 }
 
 bool cpu_has_avx2() {
@@ -604,6 +625,10 @@ double CpuNet::mean_loss(const float* x, const float* y, std::size_t count) {
 
 void CpuNet::forward(const float* x, std::size_t count, float* out) {
   kernels(layout_->hidden).forward(View{*layout_, arena_, cur_}, x, count, out);
+}
+
+void CpuNet::forward_lanes(const float* x, std::size_t blocks, float* y) {
+  kernels(layout_->hidden).lanes(View{*layout_, arena_, cur_}, x, blocks, y);
 }
 
 std::vector<std::vector<uint32_t>> CpuNet::unit_counts(const float* x, std::size_t count) {
