@@ -12,10 +12,10 @@ end
 
 -- scene:render(model_or_net [, { view = 1, pose = 1, camera = Camera, light = {dir, color}, size = {w, h},
 --                                values = { condition = x }, backend = "auto", target = Target }])
---   -> Image (RGBA float, alpha = coverage) [, info]
+--   -> Image (RGBA float, alpha = coverage), or the Target given
 --   a "Lighting" model: the ground truth over the view's G-buffer (sn.render_truth);
---   an "Mlp": the network over the attributes it reads (net:render, which also returns `info`:
---   which backend drew it and why).
+--   an "Mlp": the network over the attributes it reads (net:render; sn.render_info() says which
+--   backend drew it and why).
 -- `camera` replaces the scene's view (live mode's orbit), `light` the scene's light for the
 -- ground truth (a network shows what it learned), `size` the scene's image size, `values` a
 -- conditioned network's condition inputs (net:conditions()), `backend` a network's renderer
@@ -69,9 +69,9 @@ function Scene.render(scene, what, options)
     end
     where.attributes = attributes
     local g = scene:gbuffer(where)
-    local img, info = what:render(g, { values = options.values, backend = options.backend, target = options.target })
+    local img = what:render(g, { values = options.values, backend = options.backend, target = options.target })
     g:release()
-    return img, info
+    return img
   end
   error("scene:render: a lighting model (sn.lighting.*) or a network (sn.mlp) expected, got " .. kind, 2)
 end

@@ -117,9 +117,21 @@ int w_forward(lua_State* L) {
   throw Error("net:forward: a Buffer, a Dataset or a table of samples expected, got " + type_name_at(L, 2));
 }
 
+// What the last net:render did, for sn.render_info().
+struct LastRender {
+  std::string backend, reason;
+  std::size_t nonfinite = 0;
+  bool counted = false, timed = false;
+  nn::CpuRenderTimes times;
+};
+LastRender& last_render() {
+  static LastRender r;
+  return r;
+}
+
 // net:render(gbuffer [, { backend = "auto", frames = 1, weights = "auto", values = { condition = x },
 //                         target = Target }])
-//   -> Image (RGBA float), info; with `target`: that Target, info
+//   -> Image (RGBA float); with `target`: that Target
 // The network as the lighting model of every covered pixel, reading the G-buffer attributes
 // named by net:inputs() and, for a conditioned network, each condition's value from `values`
 // (else net:conditions()[k].value); alpha = coverage. `backend`: "gl" (fragment shader), "cpu"
@@ -128,8 +140,8 @@ int w_forward(lua_State* L) {
 // parameters from a storage buffer even where a uniform buffer would hold them (gl only).
 // `target` (the G-buffer's size) receives the render in attachment 1 instead of a new Image: no
 // read-back (what a window shows).
-// info = { backend = "gl" | "cpu", reason = why, nonfinite = covered pixels that came out NaN or
-// infinite, read_ms, network_ms = the cpu backend's last frame by stage }.
+// sn.render_info() says which backend drew it and why (one return value, so that
+// f(net:render(g)) composes).
 int w_render(lua_State* L) {
   auto net = check_shared<Mlp>(L, 1, kType);
   const scene::GBuffer& g = check<scene::GBuffer>(L, 2, "GBuffer");
@@ -172,22 +184,34 @@ int w_render(lua_State* L) {
     r = nn::render_network(net, g, ro);
     push(L, std::make_shared<io::Image>(std::move(r.image)), "Image");
   }
+  last_render() = LastRender{nn::render_backend_name(r.backend), r.reason, r.nonfinite,
+                             !(target_at && r.backend == nn::RenderBackend::gl), r.backend == nn::RenderBackend::cpu,
+                             r.cpu_times};
+  return 1;
+}
+
+// sn.render_info() -> { backend = "gl" | "cpu", reason = why that one, nonfinite = covered pixels
+// that came out NaN or infinite (absent when gl drew into a target: nothing was read back),
+// read_ms, network_ms = the cpu backend's time by stage } of the last net:render (nil before one).
+int w_render_info(lua_State* L) {
+  const LastRender& r = last_render();
+  if (r.backend.empty()) return lua_pushnil(L), 1;
   lua_createtable(L, 0, 5);
-  lua_pushstring(L, nn::render_backend_name(r.backend));
+  lua_pushstring(L, r.backend.c_str());
   lua_setfield(L, -2, "backend");
   lua_pushstring(L, r.reason.c_str());
   lua_setfield(L, -2, "reason");
-  if (!(target_at && r.backend == nn::RenderBackend::gl)) {  // gl into a target reads nothing back
+  if (r.counted) {
     lua_pushinteger(L, lua_Integer(r.nonfinite));
     lua_setfield(L, -2, "nonfinite");
   }
-  if (r.backend == nn::RenderBackend::cpu) {
-    lua_pushnumber(L, r.cpu_times.read * 1e3);
+  if (r.timed) {
+    lua_pushnumber(L, r.times.read * 1e3);
     lua_setfield(L, -2, "read_ms");
-    lua_pushnumber(L, r.cpu_times.network * 1e3);
+    lua_pushnumber(L, r.times.network * 1e3);
     lua_setfield(L, -2, "network_ms");
   }
-  return 2;
+  return 1;
 }
 
 // sn.mlp_weight_uploads() -> parameter uploads by net:render so far (an unchanged network is not
@@ -211,6 +235,8 @@ void open_mlp_gl(lua_State* L) {
   lua_pop(L, 2);
   lua_pushcfunction(L, wrap<w_weight_uploads>);
   lua_setfield(L, -2, "mlp_weight_uploads");
+  lua_pushcfunction(L, wrap<w_render_info>);
+  lua_setfield(L, -2, "render_info");
 }
 
 }  // namespace sn::lua
