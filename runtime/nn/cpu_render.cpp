@@ -74,10 +74,6 @@ std::size_t cpu_render(const Mlp& net, const scene::GBuffer& g, const RenderInpu
   const bool fresh = out.width != ow || out.height != oh || out.channels != 4;
   if (fresh) out = io::Image(ow, oh, 4);  // zeros
   float* const base = out.pixels.data();
-  auto out_row = [&](int y) {  // y: box row (0 = the box's bottom row)
-    return whole ? base + (std::size_t(h - 1 - (box.y0 + y)) * std::size_t(w) + std::size_t(box.x0)) * 4
-                 : base + std::size_t(y) * std::size_t(bw) * 4;
-  };
   if (whole && !fresh) {  // the previous frame may have drawn outside this box
     for (int y = 0; y < h; ++y) {
       float* row = base + std::size_t(h - 1 - y) * std::size_t(w) * 4;
@@ -103,57 +99,65 @@ std::size_t cpu_render(const Mlp& net, const scene::GBuffer& g, const RenderInpu
   std::vector<const float*> src(na);
   for (std::size_t a = 0; a < na; ++a) src[a] = attr[a].data();
   const float* coverage = src[0] + 3;
+  // Output pixel (floats / 4) of box texel (x, y): the frame's row h - 1 - y (images run top
+  // first) or the box's own.
+  const std::size_t row_step = whole ? std::size_t(w) : std::size_t(bw);
+  const std::size_t dst0 = whole ? std::size_t(h - 1 - box.y0) * std::size_t(w) + std::size_t(box.x0) : 0;
+  auto dst_of = [&](int x, int y) {
+    return whole ? dst0 - std::size_t(y) * row_step + std::size_t(x) : std::size_t(y) * row_step + std::size_t(x);
+  };
   parallel_for(threads, threads, [&](int) {
     CpuNet cpu(net.spec, net.params.data());
     std::vector<float> x(std::size_t(kChunkBlocks) * kLanes * std::size_t(in));
     std::vector<float> y(std::size_t(kChunkBlocks) * kLanes * 3);
     std::vector<uint32_t> pix(std::size_t(kChunkBlocks) * kLanes);  // box texel per lane
+    std::vector<std::size_t> dst(pix.size());                        // output pixel per lane
     std::size_t bad_here = 0;
     // The pending pixels' inputs into lanes, the forward pass, their colours out.
     auto flush = [&](std::size_t n) {
       const std::size_t blocks = (n + kLanes - 1) / kLanes;
+      for (std::size_t k = n; k < blocks * kLanes; ++k) pix[k] = pix[n - 1];  // dead lanes repeat a live one
       for (std::size_t b = 0; b < blocks; ++b) {
         float* xb = x.data() + b * std::size_t(in) * kLanes;
-        const std::size_t lanes = std::min<std::size_t>(kLanes, n - b * kLanes);
+        const uint32_t* pb = pix.data() + b * kLanes;
         for (int i = 0; i < in; ++i) {
           const InputSlot& s = inputs.slots[std::size_t(i)];
           float* xi = xb + std::size_t(i) * kLanes;
           if (s.attribute < 0) {
             for (int l = 0; l < kLanes; ++l) xi[l] = s.value;
-            continue;
+          } else {
+            const float* a = src[std::size_t(s.attribute)] + s.component;
+            for (int l = 0; l < kLanes; ++l) xi[l] = a[std::size_t(pb[l]) * 4];
           }
-          const float* a = src[std::size_t(s.attribute)] + s.component;
-          const uint32_t* pb = pix.data() + b * kLanes;
-          std::size_t l = 0;
-          for (; l < lanes; ++l) xi[l] = a[std::size_t(pb[l]) * 4];
-          for (; l < std::size_t(kLanes); ++l) xi[l] = 0.0f;
         }
       }
       cpu.forward_lanes(x.data(), blocks, y.data());
       for (std::size_t k = 0; k < n; ++k) {
         const float* yb = y.data() + (k / kLanes) * 3 * kLanes + k % kLanes;
-        float c[3] = {yb[0], yb[kLanes], yb[2 * kLanes]};
+        float c0 = yb[0], c1 = yb[kLanes], c2 = yb[2 * kLanes];
         if (color != shading::ColorSpace::rgb) {
-          const glm::dvec3 rgb = shading::decode_color(color, glm::dvec3(c[0], c[1], c[2]));
-          c[0] = float(rgb.x), c[1] = float(rgb.y), c[2] = float(rgb.z);
+          const glm::dvec3 rgb = shading::decode_color(color, glm::dvec3(c0, c1, c2));
+          c0 = float(rgb.x), c1 = float(rgb.y), c2 = float(rgb.z);
         }
-        if (!(std::isfinite(c[0]) && std::isfinite(c[1]) && std::isfinite(c[2]))) ++bad_here;
-        const uint32_t p = pix[k];
-        float* o = out_row(int(p / uint32_t(bw))) + std::size_t(p % uint32_t(bw)) * 4;
-        o[0] = c[0], o[1] = c[1], o[2] = c[2], o[3] = coverage[std::size_t(p) * 4];
+        // One test per pixel; the three only when the sum is not finite (an overflow or a bad one).
+        bad_here += !std::isfinite(c0 + c1 + c2) && !(std::isfinite(c0) && std::isfinite(c1) && std::isfinite(c2));
+        float* o = base + dst[k] * 4;
+        o[0] = c0, o[1] = c1, o[2] = c2, o[3] = coverage[std::size_t(pix[k]) * 4];
       }
     };
     for (int b; (b = next.fetch_add(1)) < bands;) {
       const int y0 = b * kBandRows, y1 = std::min(bh, y0 + kBandRows);
       std::size_t n = 0;
       for (int yy = y0; yy < y1; ++yy) {
-        if (!fresh) zero(out_row(yy), std::size_t(bw) * 4);
+        if (!fresh) zero(base + dst_of(0, yy) * 4, std::size_t(bw) * 4);
         const std::size_t row = std::size_t(yy) * std::size_t(bw);
+        const float* cov = coverage + row * 4;
         for (int xx = 0; xx < bw; ++xx) {
           // What the fragment shader tests: NaN coverage is uncovered too.
-          if (!(coverage[(row + std::size_t(xx)) * 4] > 0.0f)) continue;
-          pix[n++] = uint32_t(row + std::size_t(xx));
-          if (n == pix.size()) flush(n), n = 0;
+          if (!(cov[std::size_t(xx) * 4] > 0.0f)) continue;
+          pix[n] = uint32_t(row + std::size_t(xx));
+          dst[n] = dst_of(xx, yy);
+          if (++n == pix.size()) flush(n), n = 0;
         }
       }
       if (n) flush(n);
