@@ -80,15 +80,18 @@ Rendered render_network(const std::shared_ptr<const Mlp>& net, const scene::GBuf
     draw_mlp(net, g, out, frames, o.weights, o.values);
     return r;
   }
-  // The box's pixels in GL's row order straight into the texture, the rest cleared.
+  // The box's pixels in GL's row order straight into the texture; of the rest only what an
+  // earlier frame drew is cleared.
   static io::Image host;  // kept: a frame allocates nothing
   const scene::PixelBox box = g.box();
   for (int f = 0; f < frames; ++f) {
     r.nonfinite = cpu_render(*net, g, inputs, host, CpuLayout::gl_box, &r.cpu_times);
-    out.clear({0, 0, 0, 0});
+    const std::array<int, 4> b = {box.x0, box.y0, box.x1, box.y1};
+    out.clear_drawn(b);  // what the last frame drew outside this box
     if (box.width() > 0 && box.height() > 0)
       glTextureSubImage2D(out.color_texture(0), 0, box.x0, box.y0, box.width(), box.height(), GL_RGBA, GL_FLOAT,
                           host.pixels.data());
+    out.set_drawn(b);
   }
   return r;
 }

@@ -115,8 +115,8 @@ GBuffer render_gbuffer(const std::vector<MeshDraw>& draws, const Camera& camera,
   g.attributes = attributes;
   g.width = width;
   g.height = height;
+  g.target->clear_drawn();  // a reused target: only where its last G-buffer's meshes were
   g.target->bind();
-  g.target->clear({0, 0, 0, 0});
   const double aspect = camera.aspect_for(width, height);
   const glm::dmat4 view_proj = camera.projection(aspect) * camera.view();
   g.bounded = true;
@@ -135,6 +135,7 @@ GBuffer render_gbuffer(const std::vector<MeshDraw>& draws, const Camera& camera,
                 std::max(g.covers.y1, b.y1)};
   }
   if (g.covers.x1 <= g.covers.x0 || g.covers.y1 <= g.covers.y0) g.covers = {0, 0, 0, 0};
+  if (g.bounded) g.target->set_drawn({g.covers.x0, g.covers.y0, g.covers.x1, g.covers.y1});
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   ++g_renders;
   return g;

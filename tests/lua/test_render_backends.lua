@@ -135,6 +135,20 @@ local g1 = blob:gbuffer { view = 1, attributes = attrs }
 local before = net:render(g1, { backend = "cpu" })
 for v = 1, 3 do blob:gbuffer { view = v, attributes = attrs }:release() end
 assert(sn.image.mse(net:render(g1, { backend = "cpu" }), before) == 0, "a held G-buffer is never reused")
+-- A reused target only clears where its last G-buffer's meshes were: a small view drawn after a
+-- close-up (whose pixels filled the frame) holds exactly what a fresh target holds.
+local far = sn.camera { eye = { 0, 0.5, 9 }, target = { 0.6, 0, 0 } }
+local close = sn.camera { eye = { 0, 0.3, 1.6 }, target = { 0, 0, 0 } }
+local odd = sn.scene { mesh = "meshes/test_blob.glb", size = { 100, 75 } }  -- a size no other target has
+local fresh = odd:gbuffer { camera = far, attributes = attrs }  -- held: the next ones get other targets
+local big = odd:gbuffer { camera = close, attributes = attrs }
+assert(big:covered() > 0.5 * 100 * 75, "the close-up fills the frame: " .. big:covered())
+big:release()
+local reused = odd:gbuffer { camera = far, attributes = attrs }  -- in the close-up's target
+for _, a in ipairs(attrs) do
+  assert(sn.image.mse(reused:read(a), fresh:read(a)) == 0, "stale pixels of the close-up in '" .. a .. "'")
+end
+assert(reused:covered() == fresh:covered())
 
 -- NaN and Inf: an exponential output that overflows is Inf in both pictures at the same pixels,
 -- and counted.
