@@ -1,19 +1,29 @@
--- Rendering throughput of networks in the fragment shader: ms per frame and ns per covered
--- fragment for 4x4, 8x8, 12x12 and 16x16 networks (hidden layers x width; tanh, inputs normal +
--- view, RGB out) at 640x480, 1280x720 and 1920x1080, printed beside the thesis' tables 4.6 and
--- 4.7 (a GTX 1060).
+-- Rendering throughput of networks over a G-buffer, by both backends side by side: the fragment
+-- shader ("gl") and the cpu kernels over the covered pixels ("cpu", what "auto" picks on a
+-- software renderer). ms per frame and ns per covered fragment for 4x4, 8x8, 12x12 and 16x16
+-- networks (hidden layers x width; tanh, inputs normal + view, RGB out) at 640x480, 960x720,
+-- 1280x720 and 1920x1080, printed beside the thesis' tables 4.6 and 4.7 (a GTX 1060).
 --
---   shadenet bench/render_throughput.lua [frames] [weights]
---     frames:  frames timed per cell (default 20)
---     weights: auto (uniform buffer where it fits, the default) | storage
+--   shadenet bench/render_throughput.lua [repeats] [backends] [weights] [archs]
+--     repeats:  timings per cell, the median is printed (default 3)
+--     backends: gl,cpu (default both)
+--     weights:  auto (uniform buffer where it fits, the default) | storage (gl only)
+--     archs:    hidden layers x width, comma separated (default 4x4,8x8,12x12,16x16)
 --
--- The G-buffer is a unit sphere seen from 2.7 units (about 59% of the frame covered). A cell's
--- time is (t(frames + 1) - t(1)) / frames: draws only, the read-back of the image cancels out.
--- "load" is the 1-minute load average before the cell: other work on a shared machine slows it.
+-- The G-buffer is a unit sphere seen from 2.7 units (41-55% of the frame covered). A timing is
+-- (t(frames + 1) - t(1)) / frames with `frames` chosen so it lasts about half a second: what a
+-- frame costs after the G-buffer pass, without the final image's way back to Lua. For gl that is
+-- the draw; for cpu the read-back of the attributes inside the sphere's box, the network and the
+-- image. "load" is the 1-minute load average before the cell: other work on a shared machine
+-- slows it.
 local sn = require "shadenet"
 
-local frames = tonumber(arg[1] or "20")
-local weights = arg[2] or "auto"
+local repeats = tonumber(arg[1] or "3")
+local backends = {}
+for b in (arg[2] or "gl,cpu"):gmatch("%a+") do backends[#backends + 1] = b end
+local weights = arg[3] or "auto"
+local archs = {}
+for l, w in (arg[4] or "4x4,8x8,12x12,16x16"):gmatch("(%d+)x(%d+)") do archs[#archs + 1] = { tonumber(l), tonumber(w) } end
 
 -- The 1-minute load average before a job, from the experiment scripts' library.
 package.path = (arg[0]:match("^(.*)/[^/]*$") or ".") .. "/../scripts/?.lua;" .. package.path
@@ -44,18 +54,43 @@ local function sphere(rings, segments)
   return sn.procedural_mesh { name = "sphere", positions = pos, normals = pos, indices = idx }
 end
 
-local thesis_ms = { ["4x4"] = { 0.879, 1.697, 2.177 }, ["8x8"] = { 4.263, 8.241, 10.067 },
-                    ["12x12"] = { 12.754, 24.002, 29.653 }, ["16x16"] = { 29.117, 52.655, 66.710 } }
+local thesis_ms = { ["4x4"] = { 0.879, nil, 1.697, 2.177 }, ["8x8"] = { 4.263, nil, 8.241, 10.067 },
+                    ["12x12"] = { 12.754, nil, 24.002, 29.653 }, ["16x16"] = { 29.117, nil, 52.655, 66.710 } }
 local thesis_ns = { ["4x4"] = 15.8, ["8x8"] = 79.3, ["12x12"] = 237.3, ["16x16"] = 538.9 }
-local sizes = { { 640, 480 }, { 1280, 720 }, { 1920, 1080 } }
-local archs = { { 4, 4 }, { 8, 8 }, { 12, 12 }, { 16, 16 } }
+local sizes = { { 640, 480 }, { 960, 720 }, { 1280, 720 }, { 1920, 1080 } }
+
+local function median(t)
+  table.sort(t)
+  local n = #t
+  return n % 2 == 1 and t[(n + 1) / 2] or (t[n / 2] + t[n / 2 + 1]) / 2
+end
+
+-- Seconds per frame of one backend on one G-buffer.
+local function per_frame(net, g, backend)
+  local o = { backend = backend, weights = backend == "gl" and weights or nil }
+  net:render(g, o)  -- compile and upload
+  local t0 = sn.clock()
+  net:render(g, o)
+  local one = sn.clock() - t0
+  local frames = math.max(2, math.min(50, math.ceil(0.5 / math.max(one, 1e-4))))
+  o.frames = 1
+  t0 = sn.clock()
+  net:render(g, o)
+  local t1 = sn.clock()
+  o.frames = frames + 1
+  net:render(g, o)
+  local t2 = sn.clock()
+  return math.max(0, (t2 - t1) - (t1 - t0)) / frames
+end
 
 local mesh = sphere(48, 96)
 local info = sn.gl_info()
-print(("device: %s (OpenGL %s); %d frames per cell; weights: %s"):format(info.renderer, info.version, frames, weights))
+print(("device: %s (OpenGL %s); cpu threads: %s; %d repeats per cell (median); weights: %s"):format(info.renderer,
+  info.version, os.getenv("SHADENET_THREADS") or "all", repeats, weights))
 
-local ms, ns = {}, {}
-for _, sz in ipairs(sizes) do
+local ms, ns = {}, {}  -- [backend][arch][size index]
+for _, b in ipairs(backends) do ms[b], ns[b] = {}, {} end
+for si, sz in ipairs(sizes) do
   local scene = sn.scene { mesh = mesh, size = sz, views = { count = 1, elevation = 0, distance = 2.7 } }
   local g = scene:gbuffer { view = 1, attributes = { "normal", "view" } }
   local covered = g:covered()
@@ -65,34 +100,48 @@ for _, sz in ipairs(sizes) do
     local name = a[1] .. "x" .. a[2]
     local net = sn.mlp { inputs = 6, hidden = hidden, outputs = 3, activation = "tanh", seed = 1,
                          input_names = { "normal", "view" } }
-    net:render(g, { weights = weights })  -- compile and upload
-    local load = loadavg()
-    local t0 = sn.clock()
-    net:render(g, { weights = weights })
-    local t1 = sn.clock()
-    net:render(g, { frames = frames + 1, weights = weights })
-    local t2 = sn.clock()
-    local per_frame = ((t2 - t1) - (t1 - t0)) / frames
-    ms[name] = ms[name] or {}
-    ms[name][#ms[name] + 1] = per_frame * 1e3
-    ns[name] = ns[name] or {}
-    ns[name][#ns[name] + 1] = per_frame / covered * 1e9
-    print(("%-6s %4dx%-4d covered %7d (%2.0f%%)  %9.3f ms/frame  %8.1f ns/fragment  load %s"):format(name, sz[1], sz[2],
-      covered, 100 * covered / (sz[1] * sz[2]), per_frame * 1e3, per_frame / covered * 1e9, load))
+    local row = ("%-6s %4dx%-4d covered %7d (%2.0f%%)"):format(name, sz[1], sz[2], covered,
+                                                           100 * covered / (sz[1] * sz[2]))
+    for _, b in ipairs(backends) do
+      local load = loadavg()
+      local t = {}
+      for r = 1, repeats do t[r] = per_frame(net, g, b) end
+      local s = median(t)
+      ms[b][name] = ms[b][name] or {}
+      ns[b][name] = ns[b][name] or {}
+      ms[b][name][si], ns[b][name][si] = s * 1e3, s / covered * 1e9
+      row = row .. ("  %s %9.3f ms %7.1f ns/frag (load %s)"):format(b, s * 1e3, s / covered * 1e9, load)
+    end
+    print(row)
   end
 end
 
-print("\nTable 4.6 — ms per frame: ours | thesis (GTX 1060)")
-print(("%-7s %21s %21s %21s"):format("net", "640x480", "1280x720", "1920x1080"))
+local function cell(v, fmt) return v and fmt:format(v) or "-" end
+print("\nTable 4.6 -- ms per frame: ours (" .. table.concat(backends, " | ") .. ") | thesis (GTX 1060)")
+local head = ("%-7s"):format("net")
+for _, sz in ipairs(sizes) do head = head .. ("  %28s"):format(sz[1] .. "x" .. sz[2]) end
+print(head)
 for _, a in ipairs(archs) do
   local name = a[1] .. "x" .. a[2]
   local row = ("%-7s"):format(name)
-  for i = 1, 3 do row = row .. ("  %9.2f | %8.3f"):format(ms[name][i], thesis_ms[name][i]) end
+  for si = 1, #sizes do
+    local parts = {}
+    for _, b in ipairs(backends) do parts[#parts + 1] = cell(ms[b][name][si], "%.2f") end
+    parts[#parts + 1] = cell(thesis_ms[name] and thesis_ms[name][si], "%.3f")
+    row = row .. ("  %28s"):format(table.concat(parts, " | "))
+  end
   print(row)
 end
-print("\nTable 4.7 — ns per covered fragment (ours: mean of the three sizes) | thesis")
+print("\nTable 4.7 -- ns per covered fragment, mean over the sizes: ours (" .. table.concat(backends, " | ")
+      .. ") | thesis")
 for _, a in ipairs(archs) do
   local name = a[1] .. "x" .. a[2]
-  local mean = (ns[name][1] + ns[name][2] + ns[name][3]) / 3
-  print(("%-7s %9.1f | %6.1f"):format(name, mean, thesis_ns[name]))
+  local parts = {}
+  for _, b in ipairs(backends) do
+    local sum = 0
+    for si = 1, #sizes do sum = sum + ns[b][name][si] end
+    parts[#parts + 1] = ("%.1f"):format(sum / #sizes)
+  end
+  parts[#parts + 1] = cell(thesis_ns[name], "%.1f")
+  print(("%-7s %s"):format(name, table.concat(parts, " | ")))
 end

@@ -30,6 +30,7 @@ void compose(io::Layout layout, const gl::RenderTarget& network, const gl::Rende
   glBindTextureUnit(0, network.color_texture(0));
   glBindTextureUnit(1, truth.color_texture(0));
   glBindImageTexture(0, out.color_texture(0), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  out.mark_drawn();
   gl::dispatch(*program, unsigned(ow + 7) / 8, unsigned(oh + 7) / 8);
   glBindTextureUnit(0, 0);
   glBindTextureUnit(1, 0);

@@ -1,5 +1,7 @@
 #include "gl/context.h"
 
+#include "gl/render_target.h"
+
 #include "gl/program.h"
 
 #include <epoxy/gl.h>
@@ -37,6 +39,7 @@ bool has_current() { return g_context != nullptr; }
 void set_current(std::unique_ptr<Context> ctx) { g_context = std::move(ctx); }
 void destroy_current() {
   clear_program_cache();  // GL objects die before the context that owns them
+  clear_target_pool();
   g_context.reset();
 }
 

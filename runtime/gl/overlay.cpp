@@ -26,6 +26,7 @@ void blend_over(RenderTarget& target, const io::Image& overlay, int x, int y) {
   program->set_uniform("u_origin", {double(x), double(target.height() - y - overlay.height)});
   glBindTextureUnit(0, tex);
   glBindImageTexture(0, target.color_texture(0), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+  target.mark_drawn();
   dispatch(*program, unsigned(overlay.width + 7) / 8, unsigned(overlay.height + 7) / 8);
   glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   glBindTextureUnit(0, 0);
@@ -39,6 +40,7 @@ void copy_color(const RenderTarget& from, RenderTarget& to) {
                                 " into " + std::to_string(to.width()) + "x" + std::to_string(to.height()));
   glCopyImageSubData(from.color_texture(0), GL_TEXTURE_2D, 0, 0, 0, 0, to.color_texture(0), GL_TEXTURE_2D, 0, 0, 0, 0,
                      from.width(), from.height(), 1);
+  to.mark_drawn();
 }
 
 }  // namespace sn::gl

@@ -2,14 +2,17 @@
 
 #include <epoxy/gl.h>
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "gl/context.h"
 
 namespace sn::gl {
 
-RenderTarget::RenderTarget(int width, int height, int n) : width_(width), height_(height), n_(n) {
+RenderTarget::RenderTarget(int width, int height, int n)
+    : width_(width), height_(height), n_(n), drawn_{0, 0, width, height} {
   GLint max_size = 0;
   glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_size);
   if (width < 1 || height < 1 || width > max_size || height > max_size)
@@ -58,6 +61,7 @@ void RenderTarget::release() {
 }
 
 void RenderTarget::bind() {
+  mark_drawn();
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
   glViewport(0, 0, width_, height_);
   glEnable(GL_DEPTH_TEST);
@@ -68,6 +72,35 @@ void RenderTarget::clear(std::array<float, 4> rgba) {
   for (int i = 0; i < n_; ++i) glClearNamedFramebufferfv(fbo_, GL_COLOR, i, rgba.data());
   float one = 1.f;
   glClearNamedFramebufferfv(fbo_, GL_DEPTH, 0, &one);
+  const bool blank = rgba == std::array<float, 4>{0, 0, 0, 0};
+  drawn_ = blank ? std::array<int, 4>{0, 0, 0, 0} : std::array<int, 4>{0, 0, width_, height_};
+}
+
+void RenderTarget::mark_drawn() { drawn_ = {0, 0, width_, height_}; }
+
+void RenderTarget::set_drawn(std::array<int, 4> box) { drawn_ = box; }
+
+void RenderTarget::clear_drawn(std::array<int, 4> keep) {
+  const auto [x0, y0, x1, y1] = drawn_;
+  drawn_ = {0, 0, 0, 0};
+  if (x1 <= x0 || y1 <= y0) return;
+  auto [kx0, ky0, kx1, ky1] = keep;
+  if (kx1 <= kx0 || ky1 <= ky0) kx0 = kx1 = ky0 = ky1 = 0;
+  // The drawn rectangle less `keep`: the strips below and above it, and left and right of it.
+  const int mid0 = std::max(y0, std::min(y1, ky0)), mid1 = std::min(y1, std::max(mid0, ky1));
+  const std::array<std::array<int, 4>, 4> parts = {{{x0, y0, x1, mid0},
+                                                    {x0, mid1, x1, y1},
+                                                    {x0, mid0, std::min(x1, std::max(x0, kx0)), mid1},
+                                                    {std::max(x0, std::min(x1, kx1)), mid0, x1, mid1}}};
+  const float zero[4] = {0, 0, 0, 0}, one = 1.f;
+  glEnable(GL_SCISSOR_TEST);
+  for (const auto& [a0, b0, a1, b1] : parts) {
+    if (a1 <= a0 || b1 <= b0) continue;
+    glScissor(a0, b0, a1 - a0, b1 - b0);
+    for (int i = 0; i < n_; ++i) glClearNamedFramebufferfv(fbo_, GL_COLOR, i, zero);
+    glClearNamedFramebufferfv(fbo_, GL_DEPTH, 0, &one);
+  }
+  glDisable(GL_SCISSOR_TEST);
 }
 
 io::Image RenderTarget::read(int i) const {
@@ -84,5 +117,34 @@ io::Image RenderTarget::read(int i) const {
                      img.pixels.begin() + (height_ - 1 - y) * row);
   return img;
 }
+
+namespace {
+std::vector<std::shared_ptr<RenderTarget>>& pool() {
+  static std::vector<std::shared_ptr<RenderTarget>> p;
+  return p;
+}
+constexpr int kIdleMax = 2;
+}  // namespace
+
+std::shared_ptr<RenderTarget> pooled_target(int width, int height, int n) {
+  auto& p = pool();
+  for (auto& t : p)
+    if (t.use_count() == 1 && t->width() == width && t->height() == height && t->attachments() == n) return t;
+  auto t = std::make_shared<RenderTarget>(width, height, n);
+  int idle = 0;
+  for (auto& q : p) idle += q.use_count() == 1;
+  for (auto it = p.begin(); idle > kIdleMax - 1 && it != p.end();) {  // room for this one when it comes back
+    if (it->use_count() == 1) {
+      it = p.erase(it);
+      --idle;
+    } else {
+      ++it;
+    }
+  }
+  p.push_back(t);
+  return t;
+}
+
+void clear_target_pool() { pool().clear(); }
 
 }  // namespace sn::gl

@@ -12,7 +12,7 @@ local is_camera, type_is, is_mode, MODES = check.is_camera, check.type_is, check
 local M = {}
 
 local SHOW_KEYS = { "network", "truth", "scene", "camera", "light", "mode", "title", "val_mse", "error_scale",
-                    "colormap", "size" }
+                    "colormap", "size", "backend" }
 
 -- What `network` / `truth` may be: a function of the view, or with a `scene`, a network (Mlp)
 -- or a lighting model (sn.lighting.*) that scene:render shades from the view's camera and light.
@@ -29,15 +29,34 @@ local function drawer(spec, key)
       key, tostring(x)), 3)
   end
   local scene = spec.scene
-  return function(view)
-    return scene:render(x, { camera = view.camera, light = view.light, size = { view.width, view.height } })
+  if kind == "Lighting" then
+    return function(view)
+      return scene:render(x, { camera = view.camera, light = view.light, size = { view.width, view.height } })
+    end
+  end
+  -- A network is drawn straight into the loop's target (`into`, when it has the view's size):
+  -- no image on the host; the live loop says once per sn.live.show which backend drew it.
+  local said = false
+  return function(view, into)
+    if not (into and select(1, into:size()) == view.width and select(2, into:size()) == view.height) then
+      into = sn.target { width = view.width, height = view.height }
+    end
+    local out = scene:render(x, { camera = view.camera, size = { view.width, view.height }, target = into,
+                                  backend = spec.backend })
+    if not said and S.active then  -- the watching user's console, not a plain run's output
+      said = true
+      local info = sn.render_info()
+      print(("[live] network view: %s backend (%s)"):format(info.backend, info.reason))
+    end
+    return out
   end
 end
 
 -- sn.live.show{ network = net | function(view), truth = model | function(view), scene = scene,
 --               camera = Camera, light = {dir = {x,y,z}}, mode = "network", title = "...",
 --               val_mse = number | function() -> number, error_scale = 0.25,
---               colormap = "inferno", size = {w, h} }
+--               colormap = "inferno", size = {w, h}, backend = "auto" | "gl" | "cpu" }
+-- (`backend`: what draws a network given as a net, net:render's)
 function live.show(spec)
   strict(spec, SHOW_KEYS, "sn.live.show", 2)
   if spec.network == nil and spec.truth == nil then
@@ -61,6 +80,9 @@ function live.show(spec)
     error(("sn.live.show: unknown colormap '%s' (valid: inferno, viridis, gray)"):format(tostring(spec.colormap)), 2)
   end
   if spec.size ~= nil then check_size(spec.size, "sn.live.show: size", 2) end
+  if spec.backend ~= nil and spec.backend ~= "auto" and spec.backend ~= "gl" and spec.backend ~= "cpu" then
+    error(("sn.live.show: unknown backend '%s' (valid: auto, gl, cpu)"):format(tostring(spec.backend)), 2)
+  end
   if spec.val_mse ~= nil and type(spec.val_mse) ~= "number" and type(spec.val_mse) ~= "function" then
     error("sn.live.show: 'val_mse' must be a number or a function returning one", 2)
   end
@@ -116,7 +138,10 @@ local function draw(spec, which, view, cache)
     local has = spec.draw.network and "network" or "truth"
     error(("mode '%s' needs '%s' in sn.live.show{...} (this view has only '%s')"):format(view.mode, which, has), 0)
   end
-  return as_target(f(view), "sn.live.show's '" .. which .. "'", cache, which .. " " .. view.width .. "x" .. view.height)
+  local key = which .. " " .. view.width .. "x" .. view.height
+  local out = as_target(f(view, cache and cache[key]), "sn.live.show's '" .. which .. "'", cache, key)
+  if cache then cache[key] = out end
+  return out
 end
 
 -- The view a mode renders, with every default filled in.

@@ -11,14 +11,18 @@ local function type_name(x)
 end
 
 -- scene:render(model_or_net [, { view = 1, pose = 1, camera = Camera, light = {dir, color}, size = {w, h},
---                                values = { condition = x } }])
---   -> Image (RGBA float, alpha = coverage)
+--                                values = { condition = x }, backend = "auto", target = Target }])
+--   -> Image (RGBA float, alpha = coverage), or the Target given
 --   a "Lighting" model: the ground truth over the view's G-buffer (sn.render_truth);
---   an "Mlp": the network's own fragment pass over the attributes it reads (net:render).
+--   an "Mlp": the network over the attributes it reads (net:render; sn.render_info() says which
+--   backend drew it and why).
 -- `camera` replaces the scene's view (live mode's orbit), `light` the scene's light for the
 -- ground truth (a network shows what it learned), `size` the scene's image size, `values` a
--- conditioned network's condition inputs (net:conditions()).
-local RENDER_KEYS = { view = true, pose = true, camera = true, light = true, size = true, values = true }
+-- conditioned network's condition inputs (net:conditions()), `backend` a network's renderer
+-- ("gl", "cpu" or "auto", net:render's), `target` a Target the network is drawn into instead of
+-- a new Image (net:render's; what a window shows).
+local RENDER_KEYS = { view = true, pose = true, camera = true, light = true, size = true, values = true,
+                      backend = true, target = true }
 function Scene.render(scene, what, options)
   options = options or {}
   if type(options) ~= "table" then
@@ -26,7 +30,7 @@ function Scene.render(scene, what, options)
   end
   for k in pairs(options) do
     if not RENDER_KEYS[k] then
-      error("scene:render: unknown option '" .. tostring(k) .. "' (valid: camera, light, pose, size, values, view)", 2)
+      error("scene:render: unknown option '" .. tostring(k) .. "' (valid: backend, camera, light, pose, size, target, values, view)", 2)
     end
   end
   if options.view ~= nil and options.camera ~= nil then error("scene:render: give 'view' or 'camera', not both", 2) end
@@ -37,13 +41,19 @@ function Scene.render(scene, what, options)
     if options.values then
       error("scene:render: 'values' sets a conditioned network's inputs; for a lighting model use model:with{...}", 2)
     end
+    if options.backend or options.target then
+      error("scene:render: 'backend' and 'target' are a network's (net:render); a lighting model is drawn by its "
+            .. "shader into a new Image", 2)
+    end
     where.attributes = what:attributes()
     local g = scene:gbuffer(where)
     local light = scene:light()
     if options.light then
       light = { dir = options.light.dir or light.dir, color = options.light.color or light.color }
     end
-    return sn.render_truth(g, what, light)
+    local img = sn.render_truth(g, what, light)
+    g:release()  -- its target goes back to the pool now, not at the next garbage collection
+    return img
   elseif kind == "Mlp" then
     local inputs = what:inputs()
     if #inputs == 0 then
@@ -59,7 +69,9 @@ function Scene.render(scene, what, options)
     end
     where.attributes = attributes
     local g = scene:gbuffer(where)
-    return what:render(g, options.values and { values = options.values } or nil)
+    local img = what:render(g, { values = options.values, backend = options.backend, target = options.target })
+    g:release()
+    return img
   end
   error("scene:render: a lighting model (sn.lighting.*) or a network (sn.mlp) expected, got " .. kind, 2)
 end

@@ -78,6 +78,7 @@ int w_upload(lua_State* L) {
   bool reused = out != nullptr;
   if (!out) out = std::make_shared<gl::RenderTarget>(img.width, img.height);
   glTextureSubImage2D(out->color_texture(0), 0, 0, 0, img.width, img.height, GL_RGBA, GL_FLOAT, rgba.data());
+  out->mark_drawn();
   if (reused) lua_pushvalue(L, 2);
   else push(L, std::move(out), "Target");
   return 1;

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "gl/buffer.h"
+#include "gl/render_target.h"
 #include "io/image.h"
 #include "io/text.h"
 #include "lua/binding.h"
@@ -12,6 +13,7 @@
 #include "data/dataset.h"
 #include "nn/gl_forward.h"
 #include "nn/mlp_render.h"
+#include "nn/render.h"
 #include "nn/trainer.h"
 #include "scene/gbuffer.h"
 
@@ -115,20 +117,38 @@ int w_forward(lua_State* L) {
   throw Error("net:forward: a Buffer, a Dataset or a table of samples expected, got " + type_name_at(L, 2));
 }
 
-// net:render(gbuffer [, { frames = 1, weights = "auto", values = { condition = x } }]) -> Image
-// (RGBA float): the network as the lighting model of every covered pixel, reading the G-buffer
-// attributes named by net:inputs() and, for a conditioned network, each condition's value from
-// `values` (else net:conditions()[k].value); alpha = coverage. `frames` draws it that many times first (for timing; the image
-// is the last); `weights = "storage"` reads the parameters from a storage buffer even where a
-// uniform buffer would hold them (for comparison).
+// What the last net:render did, for sn.render_info().
+struct LastRender {
+  std::string backend, reason;
+  std::size_t nonfinite = 0;
+  bool counted = false, timed = false;
+  nn::CpuRenderTimes times;
+};
+LastRender& last_render() {
+  static LastRender r;
+  return r;
+}
+
+// net:render(gbuffer [, { backend = "auto", frames = 1, weights = "auto", values = { condition = x },
+//                         target = Target }])
+//   -> Image (RGBA float); with `target`: that Target
+// The network as the lighting model of every covered pixel, reading the G-buffer attributes
+// named by net:inputs() and, for a conditioned network, each condition's value from `values`
+// (else net:conditions()[k].value); alpha = coverage. `backend`: "gl" (fragment shader), "cpu"
+// (the cpu kernels over the covered pixels) or "auto" (nn/render.h). `frames` renders it that
+// many times first (for timing; the image is the last); `weights = "storage"` reads the
+// parameters from a storage buffer even where a uniform buffer would hold them (gl only).
+// `target` (the G-buffer's size) receives the render in attachment 1 instead of a new Image: no
+// read-back (what a window shows).
+// sn.render_info() says which backend drew it and why (one return value, so that
+// f(net:render(g)) composes).
 int w_render(lua_State* L) {
   auto net = check_shared<Mlp>(L, 1, kType);
   const scene::GBuffer& g = check<scene::GBuffer>(L, 2, "GBuffer");
-  int frames = 1;
-  nn::WeightBuffer weights = nn::WeightBuffer::automatic;
-  std::map<std::string, double> values;
+  nn::RenderOptions ro;
+  int target_at = 0;  // stack index of the `target` option
   if (!lua_isnoneornil(L, 3)) {
-    Options o(L, 3, "net:render", {"frames", "weights", "values"});
+    Options o(L, 3, "net:render", {"backend", "frames", "weights", "values", "target"});
     if (o.has("values")) {
       int vi = o.push("values");
       if (!lua_istable(L, vi)) throw Error(o.where("values") + ": { condition = number, ... } expected");
@@ -140,19 +160,57 @@ int w_render(lua_State* L) {
         if (c && !(v >= c->min && v <= c->max))
           throw Error(o.where("values") + ": '" + name + "' = " + io::number_text(v) + " lies outside the range the "
                       "network was trained on, [" + io::number_text(c->min) + ", " + io::number_text(c->max) + "]");
-        values[name] = v;
+        ro.values[name] = v;
         lua_pop(L, 1);
       }
       lua_pop(L, 1);
     }
     long long f = o.integer("frames", 1);
     if (f < 1 || f > 100000) throw Error("net:render option 'frames' must be 1..100000, got " + std::to_string(f));
-    frames = int(f);
-    if (o.choice("weights", {"auto", "storage"}, 0) == 1) weights = nn::WeightBuffer::storage;
+    ro.frames = int(f);
+    if (o.choice("weights", {"auto", "storage"}, 0) == 1) ro.weights = nn::WeightBuffer::storage;
+    ro.backend = nn::RenderBackend(o.choice("backend", {"auto", "gl", "cpu"}, 0));
+    if (o.has("target")) {
+      const int ti = o.push("target");
+      if (!test_type(L, ti, "Target")) throw Error(o.where("target") + ": Target expected, got " + type_name_at(L, ti));
+      target_at = ti;
+    }
   }
-  gl::RenderTarget out(g.width, g.height, 1);
-  nn::draw_mlp(net, g, out, frames, weights, values);
-  push(L, std::make_shared<io::Image>(out.read(0)), "Image");
+  nn::Rendered r;
+  if (target_at) {
+    r = nn::render_network(net, g, check<gl::RenderTarget>(L, target_at, "Target"), ro);
+    lua_pushvalue(L, target_at);
+  } else {
+    r = nn::render_network(net, g, ro);
+    push(L, std::make_shared<io::Image>(std::move(r.image)), "Image");
+  }
+  last_render() = LastRender{nn::render_backend_name(r.backend), r.reason, r.nonfinite,
+                             !(target_at && r.backend == nn::RenderBackend::gl), r.backend == nn::RenderBackend::cpu,
+                             r.cpu_times};
+  return 1;
+}
+
+// sn.render_info() -> { backend = "gl" | "cpu", reason = why that one, nonfinite = covered pixels
+// that came out NaN or infinite (absent when gl drew into a target: nothing was read back),
+// read_ms, network_ms = the cpu backend's time by stage } of the last net:render (nil before one).
+int w_render_info(lua_State* L) {
+  const LastRender& r = last_render();
+  if (r.backend.empty()) return lua_pushnil(L), 1;
+  lua_createtable(L, 0, 5);
+  lua_pushstring(L, r.backend.c_str());
+  lua_setfield(L, -2, "backend");
+  lua_pushstring(L, r.reason.c_str());
+  lua_setfield(L, -2, "reason");
+  if (r.counted) {
+    lua_pushinteger(L, lua_Integer(r.nonfinite));
+    lua_setfield(L, -2, "nonfinite");
+  }
+  if (r.timed) {
+    lua_pushnumber(L, r.times.read * 1e3);
+    lua_setfield(L, -2, "read_ms");
+    lua_pushnumber(L, r.times.network * 1e3);
+    lua_setfield(L, -2, "network_ms");
+  }
   return 1;
 }
 
@@ -177,6 +235,8 @@ void open_mlp_gl(lua_State* L) {
   lua_pop(L, 2);
   lua_pushcfunction(L, wrap<w_weight_uploads>);
   lua_setfield(L, -2, "mlp_weight_uploads");
+  lua_pushcfunction(L, wrap<w_render_info>);
+  lua_setfield(L, -2, "render_info");
 }
 
 }  // namespace sn::lua

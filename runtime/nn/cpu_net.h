@@ -59,6 +59,11 @@ class CpuNet {
   double mean_loss(const float* x, const float* y, std::size_t count);
   // Outputs for `count` contiguous rows (count x outputs floats).
   void forward(const float* x, std::size_t count, float* out);
+  // The forward pass on samples already in the kernel's lane layout (the cpu renderer's,
+  // nn/cpu_render.h, which gathers pixels straight into it): `blocks` blocks of 8 samples, input
+  // i of sample s of block b at x[(b * inputs + i) * 8 + s]; outputs likewise into y.
+  static constexpr int kLanes = 8;
+  void forward_lanes(const float* x, std::size_t blocks, float* y);
   // Per hidden layer and unit, over `count` rows: how many samples had the unit active (relu,
   // leaky_relu: output > 0) or saturated (tanh: |a| > 0.99; sigmoid: a < 0.01 or a > 0.99; the
   // other activations: flat, |f'(z)| < 0.01).

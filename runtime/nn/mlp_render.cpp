@@ -11,6 +11,7 @@
 #include "gl/buffer.h"
 #include "gl/program.h"
 #include "nn/mlp_shader.h"
+#include "nn/render_inputs.h"
 
 namespace sn::nn {
 
@@ -30,14 +31,6 @@ std::map<const Mlp*, Uploaded>& uploads() {
 std::size_t g_uploads = 0;
 
 const char* kSwizzle = "xyzw";
-
-// The input names that come from the G-buffer (the rest are conditions: uniforms).
-std::vector<std::string> attributes_of(const Mlp& net) {
-  std::vector<std::string> a;
-  for (const auto& n : net.input_names)
-    if (!net.condition(n)) a.push_back(n);
-  return a;
-}
 
 // GLSL that fills the array u0[] of input vec4s: attribute a's components from attachment a, a
 // condition's value from u_condition[k], in input order, zeros after the last input.
@@ -63,34 +56,6 @@ std::string gather_inputs(const Mlp& net) {
     all += (q ? ", u0_" : "u0_") + std::to_string(q);
   }
   return code + "vec4 u0[" + std::to_string(comps.size() / 4) + "] = vec4[](" + all + "); ";
-}
-
-void check_net(const Mlp& net, const scene::GBuffer& g) {
-  const std::string what = net.spec.describe();
-  if (net.spec.outputs != 3)
-    throw std::invalid_argument(what + ": rendering needs a network with 3 outputs (a colour), this one has " +
-                                std::to_string(net.spec.outputs));
-  if (net.input_names.empty())
-    throw std::invalid_argument(what + ": the network does not name the G-buffer attributes it reads; train it on a "
-                                "scene dataset or give it input names first");
-  int width = 0;
-  for (const auto& a : net.input_names) {
-    if (net.condition(a)) {
-      ++width;
-      continue;
-    }
-    width += scene::attribute_width(a);
-    bool held = false;
-    for (const auto& h : g.attributes) held = held || h == a;
-    if (!held) (void)g.attachment(a);  // throws listing what the G-buffer holds
-  }
-  if (width != net.spec.inputs)
-    throw std::invalid_argument(what + ": its input attributes give " + std::to_string(width) + " numbers, it takes " +
-                                std::to_string(net.spec.inputs));
-  if (attributes_of(net).empty())
-    throw std::invalid_argument(what + ": reads no G-buffer attribute (only conditions), so it covers no pixel");
-  if (int(net.input_names.size()) > gl::RenderTarget::kMaxAttachments)
-    throw std::invalid_argument(what + ": reads more attributes than a G-buffer holds");
 }
 
 bool fits_uniform_buffer(const MlpSpec& spec) {
@@ -120,7 +85,7 @@ gl::Buffer& params_of(const std::shared_ptr<const Mlp>& net) {
 void draw_mlp(const std::shared_ptr<const Mlp>& net, const scene::GBuffer& g, gl::RenderTarget& out, int frames,
               WeightBuffer weights, const std::map<std::string, double>& values) {
   if (!net) throw std::invalid_argument("draw_mlp: no network");
-  check_net(*net, g);
+  const RenderInputs inputs = render_inputs(*net, g, values);
   if (out.width() != g.width || out.height() != g.height)
     throw std::invalid_argument("draw_mlp: target size differs from the G-buffer's");
   const bool ubo = weights == WeightBuffer::automatic && fits_uniform_buffer(net->spec);
@@ -129,7 +94,7 @@ void draw_mlp(const std::shared_ptr<const Mlp>& net, const scene::GBuffer& g, gl
   desc.fragment = "mlp_shade.frag";
   desc.defines = mlp_defines(net->spec);
   desc.includes = mlp_includes(net->spec);
-  const std::vector<std::string> attributes = attributes_of(*net);
+  const std::vector<std::string>& attributes = inputs.attributes;
   desc.defines["MLP_ATTRS"] = std::to_string(attributes.size());
   desc.defines["MLP_GATHER_INPUTS"] = gather_inputs(*net);
   if (!net->conditions.empty()) desc.defines["MLP_CONDITIONS"] = std::to_string(net->conditions.size());
@@ -142,16 +107,8 @@ void draw_mlp(const std::shared_ptr<const Mlp>& net, const scene::GBuffer& g, gl
     units.push_back(double(a));
   }
   prog->set_uniform("u_attr", units);
-  if (!net->conditions.empty()) {
-    std::vector<double> cond;
-    for (const auto& c : net->conditions) {
-      auto it = values.find(c.name);
-      cond.push_back(it == values.end() ? c.value : it->second);
-    }
-    for (const auto& [name, v] : values)
-      if (!net->condition(name)) throw std::invalid_argument(net->spec.describe() + ": no condition input '" + name + "'");
-    if (prog->uniform("u_condition")) prog->set_uniform("u_condition", cond);
-  }
+  if (!net->conditions.empty() && prog->uniform("u_condition"))
+    prog->set_uniform("u_condition", std::vector<double>(inputs.conditions.begin(), inputs.conditions.end()));
   gl::Buffer& params = params_of(net);
   glBindBufferBase(ubo ? GL_UNIFORM_BUFFER : GL_SHADER_STORAGE_BUFFER, 0, params.id());
   out.bind();
@@ -167,15 +124,6 @@ void draw_mlp(const std::shared_ptr<const Mlp>& net, const scene::GBuffer& g, gl
   glBindVertexArray(0);
   glEnable(GL_DEPTH_TEST);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
-}
-
-io::Image render_mlp(const std::shared_ptr<const Mlp>& net, const scene::GBuffer& g,
-                     const std::map<std::string, double>& values) {
-  if (!net) throw std::invalid_argument("render_mlp: no network");
-  check_net(*net, g);
-  gl::RenderTarget out(g.width, g.height, 1);
-  draw_mlp(net, g, out, 1, WeightBuffer::automatic, values);
-  return out.read(0);
 }
 
 std::size_t mlp_weight_uploads() { return g_uploads; }

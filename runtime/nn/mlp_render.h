@@ -10,7 +10,6 @@
 #include <string>
 
 #include "gl/render_target.h"
-#include "io/image.h"
 #include "nn/mlp.h"
 #include "scene/gbuffer.h"
 
@@ -22,15 +21,11 @@ enum class WeightBuffer { automatic, storage };
 
 // Draws `net` over `g` into attachment 0 of `out` (same size as g): RGB from the network, alpha
 // = coverage, uncovered pixels left as cleared (0, 0, 0, 0). `frames` > 1 draws it that many
-// times (for timing). Throws before any GPU work when the network does not read a colour (3
-// outputs), does not name its inputs, or reads attributes the G-buffer lacks.
+// times (for timing). Throws before any GPU work what nn/render_inputs.h checks.
 // A conditioned network's condition inputs take their values from `values` (by name), else
-// from the network (Condition::value); a name that is not a condition is an error.
+// from the network (Condition::value). nn/render.h picks between this and the cpu kernels.
 void draw_mlp(const std::shared_ptr<const Mlp>& net, const scene::GBuffer& g, gl::RenderTarget& out, int frames = 1,
               WeightBuffer weights = WeightBuffer::automatic, const std::map<std::string, double>& values = {});
-// The same into a new image.
-io::Image render_mlp(const std::shared_ptr<const Mlp>& net, const scene::GBuffer& g,
-                     const std::map<std::string, double>& values = {});
 
 // Parameter uploads so far (tests: an unchanged network is not re-uploaded).
 std::size_t mlp_weight_uploads();

@@ -33,10 +33,23 @@ const std::vector<std::string>& gbuffer_attribute_names();
 // Components a network reads from the attribute (3, or 2 for "uv"); throws listing the valid names.
 int attribute_width(const std::string& name);
 
+// A rectangle of pixels [x0, x1) x [y0, y1) in GL's coordinates (row 0 at the bottom).
+struct PixelBox {
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  int width() const { return x1 - x0; }
+  int height() const { return y1 - y0; }
+};
+
 struct GBuffer {
   std::shared_ptr<gl::RenderTarget> target;  // attachment i holds attributes[i]
   std::vector<std::string> attributes;
   int width = 0, height = 0;
+  // When `bounded`, no pixel outside `covers` is covered: the screen box around the meshes'
+  // projected bounding boxes (render_gbuffer leaves it unbounded when one reaches behind the eye),
+  // so readers of the attachments skip the rest (nn/cpu_render.h). box(): that or the frame.
+  PixelBox covers;
+  bool bounded = false;
+  PixelBox box() const { return bounded ? covers : PixelBox{0, 0, width, height}; }
 
   // Attachment index of `name`; throws listing the attributes this G-buffer holds.
   int attachment(const std::string& name) const;

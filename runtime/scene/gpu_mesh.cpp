@@ -48,6 +48,7 @@ GpuMesh::GpuMesh(const Mesh& m) {
   const std::vector<glm::vec4> tangents = mesh_tangents(m);
   for (size_t i = 0; i < verts.size(); ++i) verts[i] = {m.positions[i], m.normals[i], m.uvs[i], tangents[i]};
   index_count_ = m.indices.size();
+  bounds_ = compute_bounds(m.positions);
 
   glCreateBuffers(1, &vertices_);
   glNamedBufferStorage(vertices_, GLsizeiptr(std::max<size_t>(verts.size(), 1) * sizeof(Vertex)),

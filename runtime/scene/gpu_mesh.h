@@ -24,6 +24,9 @@ class GpuMesh {
   unsigned vao() const { return vao_; }
   unsigned base_color_texture() const { return texture_; }
   bool has_base_color() const { return has_texture_; }
+  // The box around the uploaded positions (object space): what the draw can cover, whatever
+  // became of Mesh::bounds since.
+  const Bounds& bounds() const { return bounds_; }
 
   // How many GpuMesh objects were ever created (tests check that a second draw reuses one).
   static std::size_t uploads();
@@ -32,6 +35,7 @@ class GpuMesh {
   unsigned vao_ = 0, vertices_ = 0, indices_ = 0, texture_ = 0;
   std::size_t index_count_ = 0;
   bool has_texture_ = false;
+  Bounds bounds_;
 };
 
 // The GPU copy of `m`, uploading it on first use (cached in m.gpu).

@@ -2,7 +2,13 @@
 -- text promises where they are exact.
 local docs = require "doc_examples"
 
-local n = docs.run("docs/lua-api/networks-gl.md", 5, function(body, printed)
+local n = docs.run("docs/lua-api/networks-gl.md", 6, function(body, printed)
+  if body:find("print%(sn.render_info%(%).backend") then
+    local want = { "cpu 0", "true", "true", "true" }
+    for i, w in ipairs(want) do
+      assert(printed[i] == w, ("backends example line %d printed %s"):format(i, tostring(printed[i])))
+    end
+  end
   if body:find("print%(sn.mlp_weight_uploads") then
     assert(printed[1] == "1 0", "weight edit example printed " .. tostring(printed[1]))
   end

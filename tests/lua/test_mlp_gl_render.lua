@@ -1,7 +1,8 @@
--- net:render(gbuffer): the fragment-shader network equals a double-precision forward pass
--- (tests/lua/reference_forward.lua) at the G-buffer's covered pixels, in every colour space, with the
--- output taken back to RGB (sn.color.decode, the CPU twin); a weight edit shows in the next render
--- with one upload and no new program; bad networks are clear errors.
+-- net:render(gbuffer): the network, drawn by each backend (the fragment shader and the cpu
+-- kernels), equals a double-precision forward pass (tests/lua/reference_forward.lua) at the
+-- G-buffer's covered pixels, in every colour space, with the output taken back to RGB
+-- (sn.color.decode, the CPU twin); a weight edit shows in the fragment shader's next render with
+-- one upload and no new program; bad networks are clear errors.
 local sn = require "shadenet"
 
 local forward = require("reference_forward").forward
@@ -11,8 +12,11 @@ local g = scene:gbuffer { view = 1, attributes = { "view", "normal" } }  -- atta
 local normals, views = g:read("normal"), g:read("view")
 local w, h = g:size()
 
-local function check(net, label)
-  local img = net:render(g)
+local function check(net, label, backend)
+  backend = backend or "gl"
+  label = label .. " (" .. backend .. ")"
+  local img = net:render(g, { backend = backend })
+  assert(sn.render_info().backend == backend, label .. ": drawn by " .. sn.render_info().backend)
   local checked, worst = 0, 0
   for y = 1, h do
     for x = 1, w do
@@ -60,8 +64,10 @@ for _, case in ipairs {
   local bias = case.color == "cie" and { 0.5, 0.5, 0.5 } or { 0.4, 0.5, 0.6 }
   if case.color == "cie_xyz" then bias = { 0.3, 0.3, 0.3 } end
   net.layers[L].bias = bias
-  local _, worst = check(net, tostring(net))
-  print(("%-45s worst error %.2g"):format(tostring(net), worst))
+  for _, backend in ipairs { "gl", "cpu" } do
+    local _, worst = check(net, tostring(net), backend)
+    print(("%-45s %-3s worst error %.2g"):format(tostring(net), backend, worst))
+  end
 end
 
 -- Weight edits: one upload per version, the same program, a different image that is still right.

@@ -6,6 +6,8 @@
 #include <cstdlib>
 #include <set>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "gl/context.h"
 #include "data/dataset_cache.h"
 #include "scene/gather.h"
@@ -272,3 +274,51 @@ TEST(Dataset, CacheKeyCoversMeshContent) {
 }
 
 }  // namespace
+
+// The box a G-buffer promises to hold every covered pixel in: tight around a sphere seen from
+// afar (the renderers read only it), the whole frame once the box reaches behind the eye.
+TEST(GBuffer, CoveredPixelsLieInsideItsBox) {
+  gl::current();
+  scene::Mesh sphere = scene::sphere(1.0, 64, 32);
+  auto inside = [](const scene::GBuffer& g, int* covered) {
+    const io::Image cov = g.target->read(0);  // rows top first
+    const scene::PixelBox b = g.box();
+    *covered = 0;
+    for (int y = 0; y < g.height; ++y)
+      for (int x = 0; x < g.width; ++x) {
+        if (!(cov.at(x, y, 3) > 0)) continue;
+        ++*covered;
+        const int gy = g.height - 1 - y;  // GL rows start at the bottom
+        if (x < b.x0 || x >= b.x1 || gy < b.y0 || gy >= b.y1) return false;
+      }
+    return true;
+  };
+  int covered = 0;
+  // Off centre, far: a small box around the disc.
+  scene::Camera far{{3.0, 2.0, 9.0}, {1.5, 1.0, 0}};
+  auto g = scene::render_gbuffer({{&sphere, glm::translate(glm::dmat4(1.0), glm::dvec3(0.8, 0.3, 0))}}, far, W, H,
+                                 {"normal"});
+  ASSERT_TRUE(g.bounded);
+  EXPECT_TRUE(inside(g, &covered));
+  EXPECT_GT(covered, 100);
+  const scene::PixelBox b = g.box();
+  EXPECT_LT(b.width() * b.height(), W * H / 3) << b.x0 << "," << b.y0 << " .. " << b.x1 << "," << b.y1;
+  // Near enough that the disc fills most of the frame: the box is the frame, clamped.
+  scene::Camera near{{0, 0, 1.6}, {0, 0, 0}};
+  g = scene::render_gbuffer({{&sphere}}, near, W, H, {"normal"});
+  EXPECT_TRUE(inside(g, &covered));
+  // Inside the sphere: its box reaches behind the eye, so nothing is promised.
+  scene::Camera in{{0, 0, 0.2}, {0, 0, -1}};
+  g = scene::render_gbuffer({{&sphere}}, in, W, H, {"normal"});
+  EXPECT_FALSE(g.bounded);
+  EXPECT_EQ(g.box().width(), W);
+  EXPECT_TRUE(inside(g, &covered));
+  EXPECT_GT(covered, W * H / 2);
+  // In front of the eye but beside the frame: an empty box, and nothing covered.
+  scene::Camera away{{0, 0, 10}, {0, 0, 0}};
+  g = scene::render_gbuffer({{&sphere, glm::translate(glm::dmat4(1.0), glm::dvec3(20, 0, 0))}}, away, W, H, {"normal"});
+  EXPECT_TRUE(g.bounded);
+  EXPECT_TRUE(inside(g, &covered));
+  EXPECT_EQ(covered, 0);
+  EXPECT_EQ(g.box().width() * g.box().height(), 0);
+}

@@ -1,0 +1,39 @@
+// CPU inference over a G-buffer: the fragment path's twin (nn/mlp_render.h) for software
+// renderers, where llvmpipe runs the fragment shader one network per SIMD lane at a few hundred
+// ns per pixel. This path reads back only the attachments the network reads, gathers the covered
+// pixels straight into the cpu trainer's lane layout (nn/cpu_net.h: its kernels and activations,
+// eight pixels per register), runs them on every thread across bands of rows, and writes RGB
+// from the network's colour space, alpha = coverage, uncovered pixels (0, 0, 0, 0) -- what the
+// fragment shader writes, within 1e-5 per channel.
+#pragma once
+#include <cstddef>
+
+#include "io/image.h"
+#include "nn/mlp.h"
+#include "nn/render_inputs.h"
+#include "scene/gbuffer.h"
+
+namespace sn::nn {
+
+// Whether the cpu kernels can run `spec` (every built-in activation can; an activation defined in
+// GLSL by a script cannot). When not, `without` gets the activation that lacks cpu code.
+bool has_cpu_code(const MlpSpec& spec, Activation* without = nullptr);
+
+// Seconds the last cpu_render spent per stage (benchmarks and profiling).
+struct CpuRenderTimes {
+  double read = 0;     // G-buffer attachments to host memory
+  double network = 0;  // gather, forward pass, colour conversion, writing the image
+};
+
+// What cpu_render writes into `out` (RGBA): the whole frame with rows top first (an Image as
+// everyone reads it), or only g.box() with GL's rows, bottom first (for an upload into a texture
+// whose other pixels are cleared).
+enum class CpuLayout { image, gl_box };
+
+// Renders `net` over `g` into `out`, resized to what `layout` asks (reused when it has that size:
+// a frame then allocates nothing). `inputs` from render_inputs(net, g, values). Returns how many
+// covered pixels came out NaN or infinite. Throws when has_cpu_code(net.spec) is false.
+std::size_t cpu_render(const Mlp& net, const scene::GBuffer& g, const RenderInputs& inputs, io::Image& out,
+                       CpuLayout layout = CpuLayout::image, CpuRenderTimes* times = nullptr);
+
+}  // namespace sn::nn
