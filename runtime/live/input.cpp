@@ -32,6 +32,16 @@ bool parse_mode(const std::string& name, Mode& out) {
   return false;
 }
 
+bool picture_pixel(double fx, double fy, int fw, int fh, int pw, int ph, int& x, int& y) {
+  if (fw < 1 || fh < 1 || pw < 1 || ph < 1) return false;
+  double s = std::min(double(fw) / pw, double(fh) / ph);
+  double x0 = (fw - int(pw * s)) / 2, y0 = (fh - int(ph * s)) / 2;  // integer offsets, as present's
+  double px = (fx - x0) / s, py = (fy - y0) / s;
+  if (px < 0 || py < 0 || px >= pw || py >= ph) return false;
+  x = int(px), y = int(py);
+  return true;
+}
+
 std::array<double, 3> Orbit::position() const {
   double a = rad(azimuth), e = rad(elevation);
   return {center[0] + distance * std::cos(e) * std::sin(a), center[1] + distance * std::sin(e),
@@ -71,6 +81,17 @@ Actions Input::take_actions() {
   return a;
 }
 
+bool Input::take_probe_dirty() {
+  bool d = probe_dirty_;
+  probe_dirty_ = false;
+  return d;
+}
+
+void Input::move(double fx, double fy) {
+  cursor_ = {fx, fy};
+  if (probe_on_) probe_dirty_ = true;
+}
+
 bool Input::take_cancel() {
   bool c = actions_.cancel || actions_.quit;
   actions_.cancel = actions_.quit = false;
@@ -80,7 +101,8 @@ bool Input::take_cancel() {
 const char* Input::help() {
   return "keys: 1 network  2 truth  3 |error| heatmap  4 side by side (truth | network | error)  Tab next view\n"
          "      left drag: orbit   wheel: zoom   right drag or arrows: move the light   Home: reset view\n"
-         "      [ ] heatmap scale   S or F12: screenshot   R: record an orbit   P: print the view as Lua\n"
+         "      [ ] heatmap scale   I: probe the pixel under the cursor (truth, network, error)\n"
+         "      S or F12: screenshot   R: record an orbit   P: print the view as Lua\n"
          "      H: this help   Esc or Q: quit (while training or recording: cancel it; C too)\n";
 }
 
@@ -126,6 +148,7 @@ void Input::key(int k, int mods) {
     case GLFW_KEY_F12: actions_.screenshot = true; break;
     case GLFW_KEY_R: actions_.record = true; break;
     case GLFW_KEY_P: actions_.print_view = true; break;
+    case GLFW_KEY_I: probe_on_ = !probe_on_, probe_dirty_ = true; break;
     case GLFW_KEY_H:
     case GLFW_KEY_F1: actions_.help = true; break;
     case GLFW_KEY_ESCAPE:
@@ -150,6 +173,10 @@ void Input::on_cursor(GLFWwindow* w, double x, double y) {
   auto* self = static_cast<Input*>(glfwGetWindowUserPointer(w));
   if (self->dragging_ >= 0) self->drag(x - self->last_x_, y - self->last_y_, self->dragging_ == 1);
   self->last_x_ = x, self->last_y_ = y;
+  int ww = 0, wh = 0, fw = 0, fh = 0;  // screen coordinates to framebuffer pixels (HiDPI)
+  glfwGetWindowSize(w, &ww, &wh);
+  glfwGetFramebufferSize(w, &fw, &fh);
+  self->move(ww > 0 ? x * fw / ww : x, wh > 0 ? y * fh / wh : y);
 }
 
 void Input::on_button(GLFWwindow* w, int button, int action, int mods) {

@@ -132,6 +132,7 @@ class Loop {
   bool tick(const std::string& text, double fraction);
   static int tick_thunk(lua_State* L);
   void end_busy();
+  void update_probe();
   void actions();
   void set_status();
   void report(const std::string& message);
@@ -160,7 +161,7 @@ class Loop {
   double exit_after_ = 0, frame_ms_ = 0, view_error_scale_ = 0.25;
   bool dirty_ = true, quit_ = false, prompt_after_frame_ = false;
   std::string shown_title_;
-  long frame_ = 0;
+  long frame_ = 0, probed_frame_ = 0;
   std::array<double, 9> initial_{};  // eye, target, light dir of the script's view
   std::string initial_mode_;
   double initial_fov_ = 0;
@@ -510,6 +511,35 @@ bool Loop::tick(const std::string& text, double fraction) {
   return cancel;
 }
 
+// The probe box follows the cursor (key I): the values of the last frame under it, read back
+// from the frame's parts (sn.live._probe_lines), none when the cursor is off the picture.
+void Loop::update_probe() {
+  bool had = hud_.has_probe();
+  hud_.set_probe({}, 0, 0);
+  if (input_.probe_on() && target_ref_ != LUA_NOREF && ctx_.windowed()) {
+    lua_rawgeti(L_, LUA_REGISTRYINDEX, target_ref_);
+    auto& frame = lua::check<gl::RenderTarget>(L_, -1, "Target");
+    lua_pop(L_, 1);
+    auto [fw, fh] = ctx_.framebuffer_size();
+    auto c = input_.cursor();
+    int x = 0, y = 0;
+    if (picture_pixel(c[0], c[1], fw, fh, frame.width(), frame.height(), x, y)) {
+      lua_pushinteger(L_, x + 1);
+      lua_pushinteger(L_, y + 1);
+      std::vector<std::string> lines;
+      if (call("_probe_lines", 2, 1) && lua_istable(L_, -1))
+        for (int i = 1; i <= int(lua_objlen(L_, -1)); ++i) {
+          lua_rawgeti(L_, -1, i);
+          if (const char* l = lua_tostring(L_, -1)) lines.push_back(l);
+          lua_pop(L_, 1);
+        }
+      lua_settop(L_, 0);
+      hud_.set_probe(std::move(lines), x, y);
+    }
+  }
+  if (had || hud_.has_probe()) present_due_ = true;
+}
+
 // After a run, a console line or an action: the progress bar goes.
 void Loop::end_busy() {
   if (!hud_.has_progress()) return;
@@ -640,6 +670,11 @@ int Loop::run() {
         frame_error_ = e.what();
         set_status();
       }
+    }
+    // After a new frame the probe reads that frame; after a move, the pixel under the cursor.
+    if ((input_.take_probe_dirty() || (frame_ != probed_frame_ && input_.probe_on())) && !quit_) {
+      probed_frame_ = frame_;
+      update_probe();
     }
     if (present_due_ && !quit_) {
       try {

@@ -78,8 +78,9 @@ function live._frame(v)
   view.error_scale = (spec.error_scale or 0.25) * (v.error_scale_factor or 1)
   local size = view.width .. "x" .. view.height
   if S.out_size ~= size then S.out, S.out_size = {}, size end  -- a resized window frees the old targets
-  local target = render(spec, view, S.out)
-  S.view, S.frames = view, S.frames + 1
+  local target, parts = render(spec, view, S.out)
+  S.view, S.frames, S.drawn = view, S.frames + 1, parts
+  parts.frame = S.frames
   local parts = { spec.title or "shadenet", view.mode }
   if view.mode == "error" or view.mode == "side" then
     parts[#parts + 1] = ("|error| scale %.3g"):format(view.error_scale)

@@ -110,7 +110,7 @@ local function as_target(t, what, cache, key)
   error(("%s must return a Target or an Image, got %s"):format(what, type(t) == "userdata" and tostring(t) or type(t)), 0)
 end
 
-local function draw(spec, which, view, cache)
+function M.draw(spec, which, view, cache)
   local f = spec.draw[which]
   if not f then
     local has = spec.draw.network and "network" or "truth"
@@ -132,20 +132,25 @@ function M.resolve_view(spec, o)
 end
 
 -- Side by side: 2 x 2 panels of the view's aspect (truth | network, error | -) filling the view.
-local function panel_size(w, h)
+function M.panel_size(w, h)
   return math.max(1, math.floor(w / 2)), math.max(1, math.floor(h / 2))
 end
 
 -- `cache` (the loop's) keeps GPU targets between frames; headless renders get fresh ones.
+-- Returns the picture and what it was made of: { view = the view each part was drawn for (a
+-- panel's in side mode), network = Target, truth = Target } (the probe reads them).
 function M.render(spec, view, cache)
   local mode = view.mode
-  if mode == "network" then return draw(spec, "network", view, cache) end
-  if mode == "truth" then return draw(spec, "truth", view, cache) end
+  local draw = M.draw
+  if mode == "network" or mode == "truth" then
+    local t = draw(spec, mode, view, cache)
+    return t, { view = view, [mode] = t }
+  end
   local v = view
   if mode == "side" then
     v = {}
     for k, x in pairs(view) do v[k] = x end
-    v.width, v.height = panel_size(view.width, view.height)
+    v.width, v.height = M.panel_size(view.width, view.height)
   end
   local n, t = draw(spec, "network", v, cache), draw(spec, "truth", v, cache)
   local key = mode .. " " .. view.width .. "x" .. view.height
@@ -153,7 +158,7 @@ function M.render(spec, view, cache)
                                 scale = view.error_scale or spec.error_scale or 0.25, colormap = spec.colormap,
                                 into = cache and cache[key] }
   if cache then cache[key] = out end
-  return out
+  return out, { view = v, network = n, truth = t }
 end
 
 -- sn.live.render{ mode = "network" | "truth" | "error" | "side", camera = Camera,
@@ -175,7 +180,7 @@ function live.render(o)
   local spec = M.current_spec("sn.live.render")
   local ok, r = pcall(M.render, spec, M.resolve_view(spec, o))
   if not ok then error("sn.live.render: " .. tostring(r), 2) end
-  return r
+  return r  -- the picture only
 end
 
 -- sn.live.view() -> the view the window shows now ({mode, camera, light, width, height}), to

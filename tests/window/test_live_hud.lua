@@ -1,7 +1,8 @@
 -- What the window shows over the side view (SHADENET_LIVE_SHOWN): the panels' labels where the
 -- panels start (truth top-left, network top-right, the error under the truth), the heatmap's
 -- colour bar in the fourth panel (black to yellow, left to right), and the frame-time counter in
--- the top-right corner; the rest of the picture is the view itself, untouched.
+-- the top-right corner; the rest of the picture is the view itself, untouched. The probe (key I)
+-- draws a cross-hair and the values under the cursor, and follows it.
 local sn = require "shadenet"
 package.path = "tests/live/?.lua;" .. package.path
 local H = require "harness"
@@ -86,6 +87,42 @@ assert(mid[1] > 0.5 and mid[3] > mid[2], ("its middle is inferno's red-purple: %
 -- how long the frame took (the title ends "N.N ms").
 local title = H.window_title("live test")
 assert(title and title:find("side") and title:find("%d+%.%d ms$"), "the title has the frame time: " .. tostring(title))
+
+-- The probe (key I): a cross-hair on the pixel under the cursor and a box of its values beside
+-- it, following the cursor; the labels stay.
+local x11 = H.x11()
+local cx, cy = 60, 50  -- in the truth panel (the window sits at the screen's top-left)
+x11:move(cx, cy)
+local n0 = s:shown()
+x11:key("i")
+local probed
+for _ = 1, 200 do
+  local n, img = s:shown()
+  if n > n0 and img then
+    local arm = img:get(cx + 1, cy + 1 - 4)  -- the cross-hair's upper arm (1-based pixels)
+    if arm[1] > 0.95 and arm[2] > 0.95 then probed = img break end
+  end
+  H.sleep(0.05)
+end
+assert(probed, "the cross-hair is drawn on the pixel under the cursor")
+shown = probed
+local changed, white = region(cx + 14, cy + 14, cx + 60, cy + 40)
+assert(changed > 500 and white > 30, ("the probe's box is beside the pixel: %d changed, %d white"):format(changed, white))
+assert(same(probed:get(cx + 1, cy + 1), frame:get(cx + 1, cy + 1)), "the probed pixel itself stays visible")
+-- Moved: the box follows (a box now at the new place, none at the old).
+x11:move(cx + 100, cy + 100)
+local moved
+for _ = 1, 200 do
+  local _, img = s:shown()
+  local arm = img:get(cx + 101, cy + 101 - 4)
+  if arm[1] > 0.95 and arm[2] > 0.95 then moved = img break end
+  H.sleep(0.05)
+end
+assert(moved, "the probe follows the cursor")
+shown = moved
+local old_changed = region(cx + 14, cy + 14, cx + 60, cy + 40)
+assert(old_changed == 0, "no box left at the old place: " .. old_changed)
+x11:close()
 s:stop()
 print(("hud: labels at truth (1,1), network (%d,1), error (1,%d), colour bar at row %d, counter top-right; title %s")
       :format(pw + 1, ph + 1, bar_y, title))
