@@ -133,6 +133,9 @@ class Loop {
   static int tick_thunk(lua_State* L);
   void end_busy();
   void update_probe();
+  void prompt() {
+    if (stdin_ && console_) stdin_->prompt(console_->prompt());
+  }
   void actions();
   void set_status();
   void report(const std::string& message);
@@ -394,14 +397,14 @@ void Loop::console() {
   while (stdin_->take(line)) {
     bool ok = false;
     if (!console_->execute(line, &ok)) {
-      console_->prompt();
+      prompt();
       continue;
     }
     lua_settop(L_, 0);
     end_busy();
     if (ok) dirty_ = true;  // a line that ran may have changed anything the view depends on
     take_requests();
-    if (!dirty_) console_->prompt();  // after a redraw otherwise, so the prompt follows its messages
+    if (!dirty_) prompt();  // after a redraw otherwise, so the prompt follows its messages
     else prompt_after_frame_ = true;
   }
   if (stdin_->at_end()) {
@@ -646,7 +649,7 @@ int Loop::run() {
     run_script();
   }
   if (ctx_.windowed()) fprintf(stderr, "[live] %s", Input::help());
-  if (console_) console_->prompt();
+  if (console_) prompt();
 
   while (!quit_) {
     // A save is run once its files were quiet for kSettle: an editor that truncates, then writes,
@@ -683,7 +686,7 @@ int Loop::run() {
         fprintf(stderr, "[live] cannot show the overlay: %s\n", e.what());
       }
     }
-    if (prompt_after_frame_ && console_) console_->prompt(), prompt_after_frame_ = false;
+    if (prompt_after_frame_ && console_) prompt(), prompt_after_frame_ = false;
     dirty_ = false;
     if (quit_) break;
     double timeout = 3600;
