@@ -113,7 +113,10 @@ std::vector<Placed> Hud::layout(int w, int h) const {
     style.size = overlay_font_size(w) * 1.2f;
     style.background = {0.3f, 0.2f, 0.02f};
     style.opacity = 0.9f;
-    io::Image box = io::text_box({{notice_, {1, 0.9f, 0.5f}}}, 0, style);
+    std::vector<io::OverlayLine> lines;
+    for (const auto& l : notice_) lines.push_back({l, {1, 0.9f, 0.5f}});
+    io::Image box = io::text_box(lines, 0, style);
+    if (box.width > w) box = io::text_box(lines, w, style);  // cut to the window rather than run off it
     int x = std::max(0, (w - box.width) / 2), y = std::max(0, (h - box.height) / 2);
     out.push_back({std::move(box), x, y});
   }

@@ -36,8 +36,9 @@ class Hud {
   void set_probe(std::vector<std::string> lines, int x, int y) { probe_lines_ = std::move(lines), probe_x_ = x, probe_y_ = y; }
   bool has_probe() const { return !probe_lines_.empty(); }
 
-  // A note for a few seconds (a question such as "press Q again to quit"), centred; "" = none.
-  void set_notice(const std::string& text) { notice_ = text; }
+  // A note for a few seconds (a question such as "press Q again to quit"), centred; {} = none.
+  void set_notice(std::vector<std::string> lines) { notice_ = std::move(lines); }
+  bool has_notice() const { return !notice_.empty(); }
 
   // The overlays for a w x h picture, in drawing order.
   std::vector<Placed> layout(int w, int h) const;
@@ -55,7 +56,7 @@ class Hud {
   bool counter_ = false;
   std::vector<std::string> probe_lines_;
   int probe_x_ = 0, probe_y_ = 0;
-  std::string notice_;
+  std::vector<std::string> notice_;
   std::unique_ptr<gl::RenderTarget> shown_;
 };
 

@@ -137,6 +137,7 @@ class Loop {
     if (stdin_ && console_) stdin_->prompt(console_->prompt());
   }
   void actions();
+  void ask_quit();
   void set_status();
   void report(const std::string& message);
 
@@ -172,6 +173,9 @@ class Loop {
   bool reload_pending_ = false;
   Clock::time_point reload_at_;
   static constexpr std::chrono::milliseconds kSettle{40};
+  bool unsaved_ = false;  // console edits since the last run: Q asks before they are lost
+  Clock::time_point confirm_until_{};
+  static constexpr std::chrono::seconds kConfirm{3};
 };
 
 bool Loop::push_live(const char* fn) {
@@ -287,7 +291,8 @@ void Loop::run_script() {
     set_status();
     return;
   }
-  call("_begin_run", 0, 0);
+  call("_begin_run", 0, 0);  // kept networks go back to their snapshot: console edits are gone
+  unsaved_ = false;
   fallback_errors_.clear();
   lua_pushvalue(L_, -1);
   g_chunk_ref = luaL_ref(L_, LUA_REGISTRYINDEX);
@@ -403,6 +408,7 @@ void Loop::console() {
     lua_settop(L_, 0);
     end_busy();
     if (ok) dirty_ = true;  // a line that ran may have changed anything the view depends on
+    if (ok && !console_->printed_values()) unsaved_ = true;  // lost at the next reload or quit
     take_requests();
     if (!dirty_) prompt();  // after a redraw otherwise, so the prompt follows its messages
     else prompt_after_frame_ = true;
@@ -576,9 +582,26 @@ void Loop::present() {
   }
 }
 
+// Q or Esc: quits at once, unless console edits (or bound keys' changes) that are not in the
+// script would be lost; then it asks, in the window and on the terminal, for a second press
+// within kConfirm.
+void Loop::ask_quit() {
+  auto now = Clock::now();
+  if (!unsaved_ || now < confirm_until_) {
+    quit_ = true;
+    return;
+  }
+  fprintf(stderr, "[live] Console edits are not in the script and will be lost: press Q (or Esc) again to quit\n");
+  fflush(stderr);
+  hud_.set_notice({"Console edits will be lost", "(they are not in the script)", "Q or Esc again: quit"});
+  confirm_until_ = now + kConfirm;
+  present_due_ = true;
+}
+
 void Loop::actions() {
   Actions a = input_.take_actions();
-  if (a.quit) quit_ = true;
+  if (a.quit) ask_quit();
+  if (hud_.has_notice() && Clock::now() >= confirm_until_) hud_.set_notice({}), present_due_ = true;
   if (a.help) printf("%s", Input::help());
   auto run_lua = [&](const char* code) {
     if (luaL_loadstring(L_, code) != 0) return lua_settop(L_, 0);
@@ -696,6 +719,8 @@ int Loop::run() {
     }
     if (reload_pending_)
       timeout = std::min(timeout, std::max(0.0, std::chrono::duration<double>(reload_at_ - Clock::now()).count()));
+    if (hud_.has_notice())  // wake to take the question away
+      timeout = std::min(timeout, std::max(0.0, std::chrono::duration<double>(confirm_until_ - Clock::now()).count()));
     if (ctx_.windowed()) ctx_.poll(timeout);  // sleeps until an event, a file save or a console line
     else waker_.wait(timeout);
   }

@@ -189,6 +189,7 @@ bool incomplete(lua_State* L) {
 
 bool Console::execute(const std::string& line, bool* ok) {
   if (ok) *ok = false;
+  printed_values_ = false;
   buffer_ += buffer_.empty() ? line : "\n" + line;
   int base = lua_gettop(L_);
   // As the lua interpreter does: try the line as an expression first so its values print. It
@@ -224,6 +225,7 @@ bool Console::execute(const std::string& line, bool* ok) {
     lua_getfield(L_, results, "n");
     int n = int(lua_tointeger(L_, -1));
     lua_pop(L_, 1);
+    printed_values_ = n > 0;
     if (n > 0) {
       lua_getglobal(L_, "print");
       for (int i = 1; i <= n; ++i) lua_rawgeti(L_, results, i);

@@ -62,12 +62,16 @@ class Console {
   // Returns false while the chunk is incomplete; `ok` tells whether a finished chunk ran without error.
   bool execute(const std::string& line, bool* ok = nullptr);
   bool continuing() const { return !buffer_.empty(); }
+  // The last chunk was an expression whose values were printed (a query such as
+  // `net:trained_steps()`), not a statement that may have changed something.
+  bool printed_values() const { return printed_values_; }
   const char* prompt() const { return continuing() ? ">> " : "> "; }
 
  private:
   lua_State* L_;
   std::function<bool(lua_State*)> prepare_;
   std::string buffer_;
+  bool printed_values_ = false;
 };
 
 }  // namespace sn::live
