@@ -68,6 +68,16 @@ std::vector<Placed> Hud::layout(int w, int h) const {
     out.push_back({io::text_box({{"|error|, scale " + io::number_text(error_scale_)}}, 0, small), 0, ph});
     out.push_back({colour_bar(std::max(8, pw - 16), ph, error_scale_, small.size), pw + 8, ph + 8});
   }
+  if (!binds_.empty()) {  // under the error box, if any: the error matters more
+    io::OverlayStyle style = small;
+    style.opacity = 0.7f;
+    std::vector<io::OverlayLine> lines;
+    for (const auto& l : binds_) lines.push_back({l, {0.75f, 0.95f, 1.f}});
+    io::Image box = io::text_box(lines, 0, style);
+    if (box.width > w) box = io::text_box(lines, w, style);
+    int y = std::max(0, h - box.height);
+    out.push_back({std::move(box), 0, y});
+  }
   if (!error_lines_.empty()) {
     io::OverlayStyle style;
     style.size = overlay_font_size(w);

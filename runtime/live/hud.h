@@ -36,6 +36,10 @@ class Hud {
   void set_probe(std::vector<std::string> lines, int x, int y) { probe_lines_ = std::move(lines), probe_x_ = x, probe_y_ = y; }
   bool has_probe() const { return !probe_lines_.empty(); }
 
+  // The keys bound to values (sn.live.bind), one line each, in the bottom-left corner.
+  void set_binds(std::vector<std::string> lines) { binds_ = std::move(lines); }
+  const std::vector<std::string>& binds() const { return binds_; }
+
   // A note for a few seconds (a question such as "press Q again to quit"), centred; {} = none.
   void set_notice(std::vector<std::string> lines) { notice_ = std::move(lines); }
   bool has_notice() const { return !notice_.empty(); }
@@ -56,7 +60,7 @@ class Hud {
   bool counter_ = false;
   std::vector<std::string> probe_lines_;
   int probe_x_ = 0, probe_y_ = 0;
-  std::vector<std::string> notice_;
+  std::vector<std::string> notice_, binds_;
   std::unique_ptr<gl::RenderTarget> shown_;
 };
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace sn::live {
 
@@ -12,6 +13,9 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kDegPerPixel = 0.4;      // a drag across a 900-pixel window turns 360 degrees
 constexpr double kZoomPerStep = 0.9;      // one wheel step moves 10% closer
 constexpr double kLightStep = 5;          // degrees per arrow key press
+// The letters and digits the controls below use (GLFW's key codes are their upper-case ASCII);
+// every other one is free for sn.live.bind (shadenet.live.bind.lua keeps the same list).
+constexpr const char* kBuiltinKeys = "1234CHIPQRS";
 double rad(double d) { return d * kPi / 180; }
 double deg(double r) { return r * 180 / kPi; }
 }  // namespace
@@ -154,7 +158,12 @@ void Input::key(int k, int mods) {
     case GLFW_KEY_ESCAPE:
     case GLFW_KEY_Q: actions_.quit = true; break;
     case GLFW_KEY_C: actions_.cancel = true; break;
-    default: break;
+    default: {  // for sn.live.bind
+      bool shift = mods & GLFW_MOD_SHIFT;
+      if (k >= GLFW_KEY_A && k <= GLFW_KEY_Z) actions_.keys.push_back({char('a' + (k - GLFW_KEY_A)), shift});
+      if (k >= GLFW_KEY_0 && k <= GLFW_KEY_9) actions_.keys.push_back({char('0' + (k - GLFW_KEY_0)), shift});
+      break;
+    }
   }
 }
 
@@ -195,7 +204,11 @@ void Input::on_scroll(GLFWwindow* w, double, double dy) {
 }
 
 void Input::on_key(GLFWwindow* w, int key, int, int action, int mods) {
-  if (action == GLFW_PRESS || (action == GLFW_REPEAT && key >= GLFW_KEY_RIGHT && key <= GLFW_KEY_UP))
+  // Held arrows and bound keys repeat (a bound value steps on while its key is held); the
+  // other keys act once (a held S is one screenshot).
+  bool bindable = ((key >= GLFW_KEY_A && key <= GLFW_KEY_Z) || (key >= GLFW_KEY_0 && key <= GLFW_KEY_9)) &&
+                  !std::strchr(kBuiltinKeys, key);
+  if (action == GLFW_PRESS || (action == GLFW_REPEAT && ((key >= GLFW_KEY_RIGHT && key <= GLFW_KEY_UP) || bindable)))
     static_cast<Input*>(glfwGetWindowUserPointer(w))->key(key, mods);
 }
 

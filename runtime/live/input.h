@@ -4,6 +4,8 @@
 #pragma once
 #include <array>
 #include <string>
+#include <utility>
+#include <vector>
 
 struct GLFWwindow;
 
@@ -35,6 +37,9 @@ struct ViewState {
 struct Actions {
   bool screenshot = false, record = false, print_view = false, quit = false, help = false, cancel = false;
   bool present = false;  // the window was uncovered: show the last frame again (no new render)
+  // Letters and digits no control uses, in order, for sn.live.bind: the key ('a'..'z', '0'..'9')
+  // and whether Shift was held (steps down).
+  std::vector<std::pair<char, bool>> keys;
 };
 
 // Where a point of the window's framebuffer (fx, fy from the top-left) falls in a pw x ph picture

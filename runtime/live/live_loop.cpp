@@ -138,6 +138,7 @@ class Loop {
   }
   void actions();
   void ask_quit();
+  void update_binds();
   void set_status();
   void report(const std::string& message);
 
@@ -323,6 +324,7 @@ void Loop::run_script() {
   }
   take_requests();
   end_busy();
+  update_binds();
   set_status();
 }
 
@@ -407,6 +409,7 @@ void Loop::console() {
     }
     lua_settop(L_, 0);
     end_busy();
+    update_binds();
     if (ok) dirty_ = true;  // a line that ran may have changed anything the view depends on
     if (ok && !console_->printed_values()) unsaved_ = true;  // lost at the next reload or quit
     take_requests();
@@ -598,8 +601,35 @@ void Loop::ask_quit() {
   present_due_ = true;
 }
 
+// The HUD's list of bound keys and their values (sn.live.bind), read after anything that may
+// have changed them.
+void Loop::update_binds() {
+  std::vector<std::string> lines;
+  if (call("_bind_lines", 0, 1) && lua_istable(L_, -1))
+    for (int i = 1; i <= int(lua_objlen(L_, -1)); ++i) {
+      lua_rawgeti(L_, -1, i);
+      if (const char* l = lua_tostring(L_, -1)) lines.push_back(l);
+      lua_pop(L_, 1);
+    }
+  lua_settop(L_, 0);
+  if (lines != hud_.binds()) hud_.set_binds(std::move(lines)), present_due_ = true;
+}
+
 void Loop::actions() {
   Actions a = input_.take_actions();
+  for (auto [key, down] : a.keys) {  // sn.live.bind's keys: a bound value steps
+    lua_pushlstring(L_, &key, 1);
+    lua_pushboolean(L_, down);
+    if (!call("_key", 2, 2)) continue;
+    if (const char* line = lua_tostring(L_, 1)) {
+      printf("[live] %s\n", line);
+      dirty_ = unsaved_ = true;  // like a console edit: gone at the next reload
+    } else if (const char* err = lua_tostring(L_, 2)) {
+      fprintf(stderr, "[live] %s\n", err);
+    }
+    lua_settop(L_, 0);
+  }
+  if (!a.keys.empty()) update_binds();
   if (a.quit) ask_quit();
   if (hud_.has_notice() && Clock::now() >= confirm_until_) hud_.set_notice({}), present_due_ = true;
   if (a.help) printf("%s", Input::help());

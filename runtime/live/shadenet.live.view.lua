@@ -16,7 +16,7 @@ local SHOW_KEYS = { "network", "truth", "scene", "camera", "light", "mode", "tit
 
 -- What `network` / `truth` may be: a function of the view, or with a `scene`, a network (Mlp)
 -- or a lighting model (sn.lighting.*) that scene:render shades from the view's camera and light.
-local function drawer(spec, key)
+function M.drawer(spec, key)
   local x = spec[key]
   if x == nil or type(x) == "function" then return x end
   local kind = key == "network" and "Mlp" or "Lighting"
@@ -66,7 +66,7 @@ function live.show(spec)
   end
   local copy = { draw = {} }
   for k, v in pairs(spec) do copy[k] = v end
-  copy.draw.network, copy.draw.truth = drawer(spec, "network"), drawer(spec, "truth")
+  copy.draw.network, copy.draw.truth = M.drawer(spec, "network"), M.drawer(spec, "truth")
   copy.mode = copy.mode or (copy.network and "network" or "truth")
   local scene = spec.scene
   if scene then  -- the scene's first view, light and size unless the show says otherwise
