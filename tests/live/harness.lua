@@ -252,7 +252,7 @@ function H.run_headless(script, marker)
 end
 
 -- Real input for the window (X11's XTest, as a user's mouse and keyboard): H.x11() -> input
--- with :move(x, y), :key("3"), :drag(button, x0, y0, x1, y1); coordinates on the screen.
+-- with :move(x, y), :key("3" [, "Shift_L"]), :drag(button, x0, y0, x1, y1); coordinates on the screen.
 -- Without a window manager a new window sits at the screen's top-left corner.
 function H.x11()
   pcall(ffi.cdef, [[
@@ -274,11 +274,14 @@ function H.x11()
     Xtst.XTestFakeMotionEvent(d, -1, x, y, 0)
     X11.XSync(d, 0)
   end
-  function input:key(name)
+  function input:key(name, modifier)  -- modifier: a key held meanwhile ("Shift_L")
     local code = X11.XKeysymToKeycode(d, X11.XStringToKeysym(name))
     assert(code ~= 0, "no key " .. name)
+    local mod = modifier and X11.XKeysymToKeycode(d, X11.XStringToKeysym(modifier))
+    if mod then Xtst.XTestFakeKeyEvent(d, mod, 1, 0) end
     Xtst.XTestFakeKeyEvent(d, code, 1, 0)
     Xtst.XTestFakeKeyEvent(d, code, 0, 0)
+    if mod then Xtst.XTestFakeKeyEvent(d, mod, 0, 0) end
     X11.XSync(d, 0)
   end
   function input:drag(button, x0, y0, x1, y1, steps)
