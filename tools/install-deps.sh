@@ -6,6 +6,7 @@ packages=(
   g++ cmake make pkg-config ccache git
   libluajit-5.1-dev luajit          # the scripting language
   libglfw3-dev                      # --window
+  libedit-dev                       # the live console's line editing and history (BSD licence, readline API)
   libglm-dev                        # camera maths
   libtinygltf-dev nlohmann-json3-dev libstb-dev   # glTF meshes
   libopenimageio-dev                # PNG / EXR images

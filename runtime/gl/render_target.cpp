@@ -103,6 +103,20 @@ void RenderTarget::clear_drawn(std::array<int, 4> keep) {
   glDisable(GL_SCISSOR_TEST);
 }
 
+std::array<float, 4> RenderTarget::pixel(int x, int y, int i) const {
+  if (i < 0 || i >= n_)
+    throw std::out_of_range("render target has attachments 1.." + std::to_string(n_) + ", asked for " +
+                            std::to_string(i + 1));
+  if (x < 0 || x >= width_ || y < 0 || y >= height_)
+    throw std::out_of_range("pixel (" + std::to_string(x + 1) + ", " + std::to_string(y + 1) + ") is outside the " +
+                            std::to_string(width_) + "x" + std::to_string(height_) + " target (1.." +
+                            std::to_string(width_) + ", 1.." + std::to_string(height_) + ")");
+  glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+  std::array<float, 4> p{};
+  glGetTextureSubImage(color_[i], 0, x, height_ - 1 - y, 0, 1, 1, 1, GL_RGBA, GL_FLOAT, sizeof p, p.data());
+  return p;
+}
+
 io::Image RenderTarget::read(int i) const {
   if (i < 0 || i >= n_)
     throw std::out_of_range("render target has attachments 1.." + std::to_string(n_) + ", asked for " +

@@ -40,6 +40,9 @@ class RenderTarget {
 
   // Reads attachment `i` as a 4-channel float image, top row first.
   io::Image read(int i = 0) const;
+  // One pixel of attachment `i` (x, y from the top-left, 0-based): a probe reads 16 bytes, not
+  // the whole picture.
+  std::array<float, 4> pixel(int x, int y, int i = 0) const;
 
   static constexpr int kMaxAttachments = 8;
 

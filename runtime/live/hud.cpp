@@ -37,6 +37,23 @@ io::Image colour_bar(int w, int h, double scale, float size) {
   return out;
 }
 
+// A cross-hair on the probed pixel: white arms with a black edge, the pixel itself left clear.
+io::Image cross_hair(int arm) {
+  int n = 2 * arm + 3;
+  io::Image img(n, n, 4);
+  for (int d = 2; d <= arm + 1; ++d)
+    for (int s : {-1, 1})
+      for (int across = -1; across <= 1; ++across) {
+        float v = across == 0 ? 1.f : 0.f;
+        int c = arm + 1;
+        for (auto [x, y] : {std::pair{c + s * d, c + across}, std::pair{c + across, c + s * d}}) {
+          for (int k = 0; k < 3; ++k) img.at(x, y, k) = v;
+          img.at(x, y, 3) = 1;
+        }
+      }
+  return img;
+}
+
 }  // namespace
 
 std::vector<Placed> Hud::layout(int w, int h) const {
@@ -50,6 +67,16 @@ std::vector<Placed> Hud::layout(int w, int h) const {
     out.push_back({io::text_box({{"network"}}, 0, small), pw, 0});
     out.push_back({io::text_box({{"|error|, scale " + io::number_text(error_scale_)}}, 0, small), 0, ph});
     out.push_back({colour_bar(std::max(8, pw - 16), ph, error_scale_, small.size), pw + 8, ph + 8});
+  }
+  if (!binds_.empty()) {  // under the error box, if any: the error matters more
+    io::OverlayStyle style = small;
+    style.opacity = 0.7f;
+    std::vector<io::OverlayLine> lines;
+    for (const auto& l : binds_) lines.push_back({l, {0.75f, 0.95f, 1.f}});
+    io::Image box = io::text_box(lines, 0, style);
+    if (box.width > w) box = io::text_box(lines, w, style);
+    int y = std::max(0, h - box.height);
+    out.push_back({std::move(box), 0, y});
   }
   if (!error_lines_.empty()) {
     io::OverlayStyle style;
@@ -76,6 +103,32 @@ std::vector<Placed> Hud::layout(int w, int h) const {
     io::Image box = io::text_box({{text}}, 0, small);
     int x = std::max(0, w - box.width);
     out.push_back({std::move(box), x, top});  // under the progress bar, if any
+  }
+  if (!probe_lines_.empty()) {
+    int arm = 5;
+    out.push_back({cross_hair(arm), probe_x_ - arm - 1, probe_y_ - arm - 1});
+    io::OverlayStyle style = small;
+    style.opacity = 0.8f;
+    std::vector<io::OverlayLine> lines;
+    for (const auto& l : probe_lines_) lines.push_back({l});
+    io::Image box = io::text_box(lines, 0, style);
+    // Below and right of the pixel; flipped to the other side where the picture ends.
+    int x = probe_x_ + 12, y = probe_y_ + 12;
+    if (x + box.width > w) x = std::max(0, probe_x_ - 12 - box.width);
+    if (y + box.height > h) y = std::max(0, probe_y_ - 12 - box.height);
+    out.push_back({std::move(box), x, y});
+  }
+  if (!notice_.empty()) {
+    io::OverlayStyle style;
+    style.size = overlay_font_size(w) * 1.2f;
+    style.background = {0.3f, 0.2f, 0.02f};
+    style.opacity = 0.9f;
+    std::vector<io::OverlayLine> lines;
+    for (const auto& l : notice_) lines.push_back({l, {1, 0.9f, 0.5f}});
+    io::Image box = io::text_box(lines, 0, style);
+    if (box.width > w) box = io::text_box(lines, w, style);  // cut to the window rather than run off it
+    int x = std::max(0, (w - box.width) / 2), y = std::max(0, (h - box.height) / 2);
+    out.push_back({std::move(box), x, y});
   }
 
   return out;

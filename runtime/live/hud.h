@@ -1,5 +1,5 @@
 // What live mode draws over its view (the heads-up display): the error overlay, the training
-// progress bar, the frame-time counter and the panels' labels. It keeps the last good picture
+// progress bar, the frame-time counter, the panels' labels, the pixel probe and notices. It keeps the last good picture
 // untouched: the overlays go on a copy, which the window shows (and SHADENET_LIVE_SHOWN saves).
 #pragma once
 #include <memory>
@@ -31,6 +31,19 @@ class Hud {
     mode_ = mode, error_scale_ = error_scale, frame_ms_ = frame_ms, counter_ = counter;
   }
 
+  // The pixel probe: `lines` (truth, network, error) in a box beside pixel (x, y) of the picture
+  // (0-based), with a cross-hair on the pixel; no lines = none.
+  void set_probe(std::vector<std::string> lines, int x, int y) { probe_lines_ = std::move(lines), probe_x_ = x, probe_y_ = y; }
+  bool has_probe() const { return !probe_lines_.empty(); }
+
+  // The keys bound to values (sn.live.bind), one line each, in the bottom-left corner.
+  void set_binds(std::vector<std::string> lines) { binds_ = std::move(lines); }
+  const std::vector<std::string>& binds() const { return binds_; }
+
+  // A note for a few seconds (a question such as "press Q again to quit"), centred; {} = none.
+  void set_notice(std::vector<std::string> lines) { notice_ = std::move(lines); }
+  bool has_notice() const { return !notice_.empty(); }
+
   // The overlays for a w x h picture, in drawing order.
   std::vector<Placed> layout(int w, int h) const;
 
@@ -45,6 +58,9 @@ class Hud {
   std::string mode_;
   double error_scale_ = 0.25, frame_ms_ = 0;
   bool counter_ = false;
+  std::vector<std::string> probe_lines_;
+  int probe_x_ = 0, probe_y_ = 0;
+  std::vector<std::string> notice_, binds_;
   std::unique_ptr<gl::RenderTarget> shown_;
 };
 

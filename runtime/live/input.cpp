@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace sn::live {
 
@@ -12,6 +13,9 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kDegPerPixel = 0.4;      // a drag across a 900-pixel window turns 360 degrees
 constexpr double kZoomPerStep = 0.9;      // one wheel step moves 10% closer
 constexpr double kLightStep = 5;          // degrees per arrow key press
+// The letters and digits the controls below use (GLFW's key codes are their upper-case ASCII);
+// every other one is free for sn.live.bind (shadenet.live.bind.lua keeps the same list).
+constexpr const char* kBuiltinKeys = "1234CHIPQRS";
 double rad(double d) { return d * kPi / 180; }
 double deg(double r) { return r * 180 / kPi; }
 }  // namespace
@@ -30,6 +34,16 @@ bool parse_mode(const std::string& name, Mode& out) {
   for (Mode m : {Mode::network, Mode::truth, Mode::error, Mode::side})
     if (name == mode_name(m)) return out = m, true;
   return false;
+}
+
+bool picture_pixel(double fx, double fy, int fw, int fh, int pw, int ph, int& x, int& y) {
+  if (fw < 1 || fh < 1 || pw < 1 || ph < 1) return false;
+  double s = std::min(double(fw) / pw, double(fh) / ph);
+  double x0 = (fw - int(pw * s)) / 2, y0 = (fh - int(ph * s)) / 2;  // integer offsets, as present's
+  double px = (fx - x0) / s, py = (fy - y0) / s;
+  if (px < 0 || py < 0 || px >= pw || py >= ph) return false;
+  x = int(px), y = int(py);
+  return true;
 }
 
 std::array<double, 3> Orbit::position() const {
@@ -71,6 +85,17 @@ Actions Input::take_actions() {
   return a;
 }
 
+bool Input::take_probe_dirty() {
+  bool d = probe_dirty_;
+  probe_dirty_ = false;
+  return d;
+}
+
+void Input::move(double fx, double fy) {
+  cursor_ = {fx, fy};
+  if (probe_on_) probe_dirty_ = true;
+}
+
 bool Input::take_cancel() {
   bool c = actions_.cancel || actions_.quit;
   actions_.cancel = actions_.quit = false;
@@ -80,7 +105,8 @@ bool Input::take_cancel() {
 const char* Input::help() {
   return "keys: 1 network  2 truth  3 |error| heatmap  4 side by side (truth | network | error)  Tab next view\n"
          "      left drag: orbit   wheel: zoom   right drag or arrows: move the light   Home: reset view\n"
-         "      [ ] heatmap scale   S or F12: screenshot   R: record an orbit   P: print the view as Lua\n"
+         "      [ ] heatmap scale   I: probe the pixel under the cursor (truth, network, error)\n"
+         "      S or F12: screenshot   R: record an orbit   P: print the view as Lua\n"
          "      H: this help   Esc or Q: quit (while training or recording: cancel it; C too)\n";
 }
 
@@ -126,12 +152,18 @@ void Input::key(int k, int mods) {
     case GLFW_KEY_F12: actions_.screenshot = true; break;
     case GLFW_KEY_R: actions_.record = true; break;
     case GLFW_KEY_P: actions_.print_view = true; break;
+    case GLFW_KEY_I: probe_on_ = !probe_on_, probe_dirty_ = true; break;
     case GLFW_KEY_H:
     case GLFW_KEY_F1: actions_.help = true; break;
     case GLFW_KEY_ESCAPE:
     case GLFW_KEY_Q: actions_.quit = true; break;
     case GLFW_KEY_C: actions_.cancel = true; break;
-    default: break;
+    default: {  // for sn.live.bind
+      bool shift = mods & GLFW_MOD_SHIFT;
+      if (k >= GLFW_KEY_A && k <= GLFW_KEY_Z) actions_.keys.push_back({char('a' + (k - GLFW_KEY_A)), shift});
+      if (k >= GLFW_KEY_0 && k <= GLFW_KEY_9) actions_.keys.push_back({char('0' + (k - GLFW_KEY_0)), shift});
+      break;
+    }
   }
 }
 
@@ -150,6 +182,10 @@ void Input::on_cursor(GLFWwindow* w, double x, double y) {
   auto* self = static_cast<Input*>(glfwGetWindowUserPointer(w));
   if (self->dragging_ >= 0) self->drag(x - self->last_x_, y - self->last_y_, self->dragging_ == 1);
   self->last_x_ = x, self->last_y_ = y;
+  int ww = 0, wh = 0, fw = 0, fh = 0;  // screen coordinates to framebuffer pixels (HiDPI)
+  glfwGetWindowSize(w, &ww, &wh);
+  glfwGetFramebufferSize(w, &fw, &fh);
+  self->move(ww > 0 ? x * fw / ww : x, wh > 0 ? y * fh / wh : y);
 }
 
 void Input::on_button(GLFWwindow* w, int button, int action, int mods) {
@@ -168,7 +204,11 @@ void Input::on_scroll(GLFWwindow* w, double, double dy) {
 }
 
 void Input::on_key(GLFWwindow* w, int key, int, int action, int mods) {
-  if (action == GLFW_PRESS || (action == GLFW_REPEAT && key >= GLFW_KEY_RIGHT && key <= GLFW_KEY_UP))
+  // Held arrows and bound keys repeat (a bound value steps on while its key is held); the
+  // other keys act once (a held S is one screenshot).
+  bool bindable = ((key >= GLFW_KEY_A && key <= GLFW_KEY_Z) || (key >= GLFW_KEY_0 && key <= GLFW_KEY_9)) &&
+                  !std::strchr(kBuiltinKeys, key);
+  if (action == GLFW_PRESS || (action == GLFW_REPEAT && ((key >= GLFW_KEY_RIGHT && key <= GLFW_KEY_UP) || bindable)))
     static_cast<Input*>(glfwGetWindowUserPointer(w))->key(key, mods);
 }
 

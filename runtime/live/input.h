@@ -1,9 +1,11 @@
 // The window's controls, from GLFW callbacks into a plain state: an orbit camera (left drag
 // turns it, the wheel zooms), the light direction (right drag or the arrow keys), the view
-// mode and one-shot actions (screenshot, recording, ...). The live loop reads it each frame.
+// mode, the pixel probe and one-shot actions (screenshot, recording, ...). The live loop reads it each frame.
 #pragma once
 #include <array>
 #include <string>
+#include <utility>
+#include <vector>
 
 struct GLFWwindow;
 
@@ -35,7 +37,15 @@ struct ViewState {
 struct Actions {
   bool screenshot = false, record = false, print_view = false, quit = false, help = false, cancel = false;
   bool present = false;  // the window was uncovered: show the last frame again (no new render)
+  // Letters and digits no control uses, in order, for sn.live.bind: the key ('a'..'z', '0'..'9')
+  // and whether Shift was held (steps down).
+  std::vector<std::pair<char, bool>> keys;
 };
+
+// Where a point of the window's framebuffer (fx, fy from the top-left) falls in a pw x ph picture
+// the window shows letterboxed (as gl::Context::present draws it): 0-based pixel (x, y); false
+// when the point is outside the picture.
+bool picture_pixel(double fx, double fy, int fw, int fh, int pw, int ph, int& x, int& y);
 
 class Input {
  public:
@@ -57,10 +67,17 @@ class Input {
   bool take_cancel();
   static const char* help();  // the key bindings, for the terminal
 
+  // The pixel probe (I toggles it): on or off, and the cursor in framebuffer pixels. True once
+  // since the last call when the probe was toggled or the cursor moved while it is on.
+  bool probe_on() const { return probe_on_; }
+  std::array<double, 2> cursor() const { return cursor_; }
+  bool take_probe_dirty();
+
   // What the callbacks do (public so tests and the loop can drive them without a window).
   void drag(double dx, double dy, bool light);  // pixels
   void zoom(double wheel_steps);
   void key(int glfw_key, int mods);
+  void move(double fx, double fy);  // the cursor, in framebuffer pixels
 
  private:
   static void on_cursor(GLFWwindow* w, double x, double y);
@@ -76,6 +93,8 @@ class Input {
   Actions actions_;
   int dragging_ = -1;  // 0 = camera, 1 = light
   double last_x_ = 0, last_y_ = 0;
+  bool probe_on_ = false, probe_dirty_ = false;
+  std::array<double, 2> cursor_{-1, -1};
 };
 
 }  // namespace sn::live

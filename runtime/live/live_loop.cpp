@@ -132,7 +132,13 @@ class Loop {
   bool tick(const std::string& text, double fraction);
   static int tick_thunk(lua_State* L);
   void end_busy();
+  void update_probe();
+  void prompt() {
+    if (stdin_ && console_) stdin_->prompt(console_->prompt());
+  }
   void actions();
+  void ask_quit();
+  void update_binds();
   void set_status();
   void report(const std::string& message);
 
@@ -160,7 +166,7 @@ class Loop {
   double exit_after_ = 0, frame_ms_ = 0, view_error_scale_ = 0.25;
   bool dirty_ = true, quit_ = false, prompt_after_frame_ = false;
   std::string shown_title_;
-  long frame_ = 0;
+  long frame_ = 0, probed_frame_ = 0;
   std::array<double, 9> initial_{};  // eye, target, light dir of the script's view
   std::string initial_mode_;
   double initial_fov_ = 0;
@@ -168,6 +174,9 @@ class Loop {
   bool reload_pending_ = false;
   Clock::time_point reload_at_;
   static constexpr std::chrono::milliseconds kSettle{40};
+  bool unsaved_ = false;  // console edits since the last run: Q asks before they are lost
+  Clock::time_point confirm_until_{};
+  static constexpr std::chrono::seconds kConfirm{3};
 };
 
 bool Loop::push_live(const char* fn) {
@@ -283,7 +292,8 @@ void Loop::run_script() {
     set_status();
     return;
   }
-  call("_begin_run", 0, 0);
+  call("_begin_run", 0, 0);  // kept networks go back to their snapshot: console edits are gone
+  unsaved_ = false;
   fallback_errors_.clear();
   lua_pushvalue(L_, -1);
   g_chunk_ref = luaL_ref(L_, LUA_REGISTRYINDEX);
@@ -314,6 +324,7 @@ void Loop::run_script() {
   }
   take_requests();
   end_busy();
+  update_binds();
   set_status();
 }
 
@@ -393,14 +404,16 @@ void Loop::console() {
   while (stdin_->take(line)) {
     bool ok = false;
     if (!console_->execute(line, &ok)) {
-      console_->prompt();
+      prompt();
       continue;
     }
     lua_settop(L_, 0);
     end_busy();
+    update_binds();
     if (ok) dirty_ = true;  // a line that ran may have changed anything the view depends on
+    if (ok && !console_->printed_values()) unsaved_ = true;  // lost at the next reload or quit
     take_requests();
-    if (!dirty_) console_->prompt();  // after a redraw otherwise, so the prompt follows its messages
+    if (!dirty_) prompt();  // after a redraw otherwise, so the prompt follows its messages
     else prompt_after_frame_ = true;
   }
   if (stdin_->at_end()) {
@@ -510,6 +523,35 @@ bool Loop::tick(const std::string& text, double fraction) {
   return cancel;
 }
 
+// The probe box follows the cursor (key I): the values of the last frame under it, read back
+// from the frame's parts (sn.live._probe_lines), none when the cursor is off the picture.
+void Loop::update_probe() {
+  bool had = hud_.has_probe();
+  hud_.set_probe({}, 0, 0);
+  if (input_.probe_on() && target_ref_ != LUA_NOREF && ctx_.windowed()) {
+    lua_rawgeti(L_, LUA_REGISTRYINDEX, target_ref_);
+    auto& frame = lua::check<gl::RenderTarget>(L_, -1, "Target");
+    lua_pop(L_, 1);
+    auto [fw, fh] = ctx_.framebuffer_size();
+    auto c = input_.cursor();
+    int x = 0, y = 0;
+    if (picture_pixel(c[0], c[1], fw, fh, frame.width(), frame.height(), x, y)) {
+      lua_pushinteger(L_, x + 1);
+      lua_pushinteger(L_, y + 1);
+      std::vector<std::string> lines;
+      if (call("_probe_lines", 2, 1) && lua_istable(L_, -1))
+        for (int i = 1; i <= int(lua_objlen(L_, -1)); ++i) {
+          lua_rawgeti(L_, -1, i);
+          if (const char* l = lua_tostring(L_, -1)) lines.push_back(l);
+          lua_pop(L_, 1);
+        }
+      lua_settop(L_, 0);
+      hud_.set_probe(std::move(lines), x, y);
+    }
+  }
+  if (had || hud_.has_probe()) present_due_ = true;
+}
+
 // After a run, a console line or an action: the progress bar goes.
 void Loop::end_busy() {
   if (!hud_.has_progress()) return;
@@ -543,9 +585,53 @@ void Loop::present() {
   }
 }
 
+// Q or Esc: quits at once, unless console edits (or bound keys' changes) that are not in the
+// script would be lost; then it asks, in the window and on the terminal, for a second press
+// within kConfirm.
+void Loop::ask_quit() {
+  auto now = Clock::now();
+  if (!unsaved_ || now < confirm_until_) {
+    quit_ = true;
+    return;
+  }
+  fprintf(stderr, "[live] Console edits are not in the script and will be lost: press Q (or Esc) again to quit\n");
+  fflush(stderr);
+  hud_.set_notice({"Console edits will be lost", "(they are not in the script)", "Q or Esc again: quit"});
+  confirm_until_ = now + kConfirm;
+  present_due_ = true;
+}
+
+// The HUD's list of bound keys and their values (sn.live.bind), read after anything that may
+// have changed them.
+void Loop::update_binds() {
+  std::vector<std::string> lines;
+  if (call("_bind_lines", 0, 1) && lua_istable(L_, -1))
+    for (int i = 1; i <= int(lua_objlen(L_, -1)); ++i) {
+      lua_rawgeti(L_, -1, i);
+      if (const char* l = lua_tostring(L_, -1)) lines.push_back(l);
+      lua_pop(L_, 1);
+    }
+  lua_settop(L_, 0);
+  if (lines != hud_.binds()) hud_.set_binds(std::move(lines)), present_due_ = true;
+}
+
 void Loop::actions() {
   Actions a = input_.take_actions();
-  if (a.quit) quit_ = true;
+  for (auto [key, down] : a.keys) {  // sn.live.bind's keys: a bound value steps
+    lua_pushlstring(L_, &key, 1);
+    lua_pushboolean(L_, down);
+    if (!call("_key", 2, 2)) continue;
+    if (const char* line = lua_tostring(L_, 1)) {
+      printf("[live] %s\n", line);
+      dirty_ = unsaved_ = true;  // like a console edit: gone at the next reload
+    } else if (const char* err = lua_tostring(L_, 2)) {
+      fprintf(stderr, "[live] %s\n", err);
+    }
+    lua_settop(L_, 0);
+  }
+  if (!a.keys.empty()) update_binds();
+  if (a.quit) ask_quit();
+  if (hud_.has_notice() && Clock::now() >= confirm_until_) hud_.set_notice({}), present_due_ = true;
   if (a.help) printf("%s", Input::help());
   auto run_lua = [&](const char* code) {
     if (luaL_loadstring(L_, code) != 0) return lua_settop(L_, 0);
@@ -616,7 +702,7 @@ int Loop::run() {
     run_script();
   }
   if (ctx_.windowed()) fprintf(stderr, "[live] %s", Input::help());
-  if (console_) console_->prompt();
+  if (console_) prompt();
 
   while (!quit_) {
     // A save is run once its files were quiet for kSettle: an editor that truncates, then writes,
@@ -641,6 +727,11 @@ int Loop::run() {
         set_status();
       }
     }
+    // After a new frame the probe reads that frame; after a move, the pixel under the cursor.
+    if ((input_.take_probe_dirty() || (frame_ != probed_frame_ && input_.probe_on())) && !quit_) {
+      probed_frame_ = frame_;
+      update_probe();
+    }
     if (present_due_ && !quit_) {
       try {
         present();
@@ -648,7 +739,7 @@ int Loop::run() {
         fprintf(stderr, "[live] cannot show the overlay: %s\n", e.what());
       }
     }
-    if (prompt_after_frame_ && console_) console_->prompt(), prompt_after_frame_ = false;
+    if (prompt_after_frame_ && console_) prompt(), prompt_after_frame_ = false;
     dirty_ = false;
     if (quit_) break;
     double timeout = 3600;
@@ -658,6 +749,8 @@ int Loop::run() {
     }
     if (reload_pending_)
       timeout = std::min(timeout, std::max(0.0, std::chrono::duration<double>(reload_at_ - Clock::now()).count()));
+    if (hud_.has_notice())  // wake to take the question away
+      timeout = std::min(timeout, std::max(0.0, std::chrono::duration<double>(confirm_until_ - Clock::now()).count()));
     if (ctx_.windowed()) ctx_.poll(timeout);  // sleeps until an event, a file save or a console line
     else waker_.wait(timeout);
   }

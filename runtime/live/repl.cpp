@@ -5,11 +5,38 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <filesystem>
+
+#include <editline/readline.h>
 
 namespace sn::live {
 
+namespace {
+StdinReader* g_editing = nullptr;  // libedit's line callback takes no user data
+}  // namespace
+
+std::string StdinReader::history_path() {
+  if (const char* p = getenv("SHADENET_HISTORY")) return p;
+  if (const char* state = getenv("XDG_STATE_HOME"); state && *state) {
+    std::error_code ec;
+    std::filesystem::create_directories(std::string(state) + "/shadenet", ec);
+    return std::string(state) + "/shadenet/history";
+  }
+  const char* home = getenv("HOME");
+  return home && *home ? std::string(home) + "/.shadenet_history" : "";
+}
+
 StdinReader::StdinReader(std::function<void()> wake) : wake_(std::move(wake)) {
+  editing_ = isatty(0) && isatty(1) && !g_editing;
+  if (editing_) {
+    g_editing = this;
+    history_ = history_path();
+    using_history();
+    stifle_history(1000);
+    if (!history_.empty()) read_history(history_.c_str());
+  }
   if (pipe2(control_, O_CLOEXEC) != 0) control_[0] = control_[1] = -1;
   thread_ = std::thread([this] { run(); });
 }
@@ -17,13 +44,74 @@ StdinReader::StdinReader(std::function<void()> wake) : wake_(std::move(wake)) {
 StdinReader::~StdinReader() {
   char q = 'q';
   if (control_[1] >= 0) (void)!write(control_[1], &q, 1);
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    ready_ = false;  // a thread waiting for the loop to take what it saw stops waiting
+  }
+  consumed_.notify_one();
   thread_.join();
   if (control_[0] >= 0) close(control_[0]), close(control_[1]);
+  if (editing_) {
+    if (line_open_) rl_callback_handler_remove();  // the terminal goes back to its own mode
+    g_editing = nullptr;
+  }
+}
+
+void StdinReader::prompt(const char* text) {
+  if (!editing_) {
+    if (interactive()) fputs(text, stdout), fflush(stdout);
+    return;
+  }
+  if (line_open_) return;
+  fflush(stdout);
+  // Shows the prompt; libedit then reads the line a character at a time (edit()).
+  rl_callback_handler_install(text, [](char* line) {
+    StdinReader* self = g_editing;
+    if (!self) return free(line);
+    self->line_open_ = false;  // libedit left its reading mode: no character is fed until the next prompt
+    std::lock_guard<std::mutex> lock(self->mutex_);
+    if (!line) {  // Ctrl-D on an empty line
+      self->eof_ = true;
+      return;
+    }
+    std::string s = line;
+    free(line);
+    if (s.find_first_not_of(" \t") != std::string::npos) {
+      add_history(s.c_str());
+      if (!self->history_.empty()) write_history(self->history_.c_str());
+    }
+    self->lines_.push_back(std::move(s));
+  });
+  line_open_ = true;
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (ready_) wake_();  // characters typed while the last line ran
+}
+
+void StdinReader::edit() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!ready_ || !line_open_) return;  // nothing typed, or no line being edited yet
+  }
+  bool hangup = false;
+  for (;;) {  // every character already typed, never waiting for more
+    pollfd fd = {0, POLLIN, 0};
+    if (!line_open_ || poll(&fd, 1, 0) <= 0) break;
+    if (!(fd.revents & POLLIN)) {
+      hangup = fd.revents & (POLLHUP | POLLERR | POLLNVAL);
+      break;
+    }
+    rl_callback_read_char();
+  }
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (hangup) eof_ = true;
+  ready_ = false;
+  consumed_.notify_one();
 }
 
 bool StdinReader::interactive() { return isatty(0); }
 
 bool StdinReader::take(std::string& line) {
+  if (editing_) edit();
   std::lock_guard<std::mutex> lock(mutex_);
   if (lines_.empty()) return false;
   line = std::move(lines_.front());
@@ -53,6 +141,16 @@ void StdinReader::run() {
     }
     if (fds[1].revents) return;
     if (fds[0].revents & POLLNVAL) return finish(), wake_();
+    if (editing_) {  // the loop's thread feeds the characters to libedit; wait until it has
+      std::unique_lock<std::mutex> lock(mutex_);
+      ready_ = true;
+      lock.unlock();
+      wake_();
+      lock.lock();
+      consumed_.wait(lock, [&] { return !ready_ || eof_; });
+      if (eof_) return;
+      continue;
+    }
     ssize_t n = read(0, buf, sizeof buf);
     if (n < 0 && (errno == EINTR || errno == EAGAIN)) continue;
     if (n <= 0) return finish(), wake_();
@@ -89,14 +187,9 @@ bool incomplete(lua_State* L) {
 
 }  // namespace
 
-void Console::prompt() const {
-  if (!StdinReader::interactive()) return;
-  fputs(continuing() ? ">> " : "> ", stdout);
-  fflush(stdout);
-}
-
 bool Console::execute(const std::string& line, bool* ok) {
   if (ok) *ok = false;
+  printed_values_ = false;
   buffer_ += buffer_.empty() ? line : "\n" + line;
   int base = lua_gettop(L_);
   // As the lua interpreter does: try the line as an expression first so its values print. It
@@ -132,6 +225,7 @@ bool Console::execute(const std::string& line, bool* ok) {
     lua_getfield(L_, results, "n");
     int n = int(lua_tointeger(L_, -1));
     lua_pop(L_, 1);
+    printed_values_ = n > 0;
     if (n > 0) {
       lua_getglobal(L_, "print");
       for (int i = 1; i <= n; ++i) lua_rawgeti(L_, results, i);

@@ -1,7 +1,14 @@
-// The console of live mode: a thread reads lines from stdin into a queue (and calls `wake`);
-// the main loop takes them and runs each in the script's Lua state, printing results as the
+// The console of live mode: lines from stdin go into a queue (the loop is woken by `wake`); the
+// main loop takes them and runs each in the script's Lua state, printing results as the
 // standalone lua interpreter does. A line that ends inside a statement waits for the next.
+//
+// At a terminal the line is edited with libedit (BSD licence, readline's API: arrows, Ctrl-A/E,
+// history search) and the history is kept across sessions in a file (history_path()). The
+// reader thread then only watches stdin and wakes the loop; libedit runs on the loop's thread,
+// so editing, prompts and the loop's own output never race. A pipe (the tests) is read as plain
+// lines by the thread.
 #pragma once
+#include <condition_variable>
 #include <deque>
 #include <functional>
 #include <mutex>
@@ -22,10 +29,22 @@ class StdinReader {
   bool take(std::string& line);  // the next complete line, without its newline
   bool at_end();  // stdin was closed and every line was taken
   static bool interactive();  // stdin is a terminal (prompts are printed only then)
+  // At a terminal: shows `text` and lets the user edit the next line (nothing otherwise).
+  void prompt(const char* text);
+
+  // The history file: $SHADENET_HISTORY (empty: none), else $XDG_STATE_HOME/shadenet/history,
+  // else ~/.shadenet_history.
+  static std::string history_path();
 
  private:
   void run();
+  void edit();  // feeds the typed characters to libedit (loop thread)
   std::function<void()> wake_;
+  bool editing_ = false;  // a terminal: libedit reads, the thread only polls
+  bool ready_ = false;    // (editing) stdin has characters the loop has not fed to libedit yet
+  bool line_open_ = false;  // (editing) a prompt is shown and libedit is reading its line
+  std::condition_variable consumed_;
+  std::string history_;
   int control_[2] = {-1, -1};
   std::mutex mutex_;
   std::deque<std::string> lines_;
@@ -43,12 +62,16 @@ class Console {
   // Returns false while the chunk is incomplete; `ok` tells whether a finished chunk ran without error.
   bool execute(const std::string& line, bool* ok = nullptr);
   bool continuing() const { return !buffer_.empty(); }
-  void prompt() const;  // "> " or ">> " on a terminal, nothing otherwise
+  // The last chunk was an expression whose values were printed (a query such as
+  // `net:trained_steps()`), not a statement that may have changed something.
+  bool printed_values() const { return printed_values_; }
+  const char* prompt() const { return continuing() ? ">> " : "> "; }
 
  private:
   lua_State* L_;
   std::function<bool(lua_State*)> prepare_;
   std::string buffer_;
+  bool printed_values_ = false;
 };
 
 }  // namespace sn::live

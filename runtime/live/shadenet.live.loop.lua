@@ -3,6 +3,7 @@
 local sn = require "shadenet.core"
 local S = require "shadenet.live.state"
 local keep = require "shadenet.live.keep"
+local bind = require "shadenet.live.bind"
 local view_of = require "shadenet.live.view"
 local live = sn.live
 local snapshot, restore = keep.snapshot, keep.restore
@@ -16,13 +17,14 @@ function live._begin_run()
   S.modules = {}
   S.files_before, S.files = S.files, {}
   for _, k in pairs(S.kept) do restore(k.snapshot) end
-  S.running, S.pending = true, nil
+  S.running, S.pending, S.pending_binds = true, nil, nil
 end
 
 -- After it: a good run makes its sn.live.show the view and its networks the good state; a
 -- failed one puts the networks back as the last good run left them and keeps that view.
 function live._end_run(ok)
   S.running = false
+  bind.end_run(ok)
   if ok then
     S.spec = S.pending or S.spec
     for _, k in pairs(S.kept) do k.good = snapshot(k.value) end
@@ -78,8 +80,9 @@ function live._frame(v)
   view.error_scale = (spec.error_scale or 0.25) * (v.error_scale_factor or 1)
   local size = view.width .. "x" .. view.height
   if S.out_size ~= size then S.out, S.out_size = {}, size end  -- a resized window frees the old targets
-  local target = render(spec, view, S.out)
-  S.view, S.frames = view, S.frames + 1
+  local target, parts = render(spec, view, S.out)
+  S.view, S.frames, S.drawn = view, S.frames + 1, parts
+  parts.frame = S.frames
   local parts = { spec.title or "shadenet", view.mode }
   if view.mode == "error" or view.mode == "side" then
     parts[#parts + 1] = ("|error| scale %.3g"):format(view.error_scale)

@@ -9,6 +9,9 @@ return {
   files = {},       -- file -> true: modules and dofile'd scripts, watched for saves
   view = nil,       -- the last view the loop rendered ({mode, camera, light, width, height})
   frames = 0,       -- frames rendered by the loop
+  drawn = nil,      -- the last frame's parts: { view, network = Target, truth = Target } (probe)
+  binds = {},       -- key -> sn.live.bind's binding in force
+  pending_binds = nil,  -- the ones given during the run in progress (committed when it succeeds)
   requests = {},    -- actions asked of the loop from Lua (quit)
   out = {},         -- the loop's targets, reused between frames (by "what WxH")
 }

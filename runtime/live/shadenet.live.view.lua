@@ -16,7 +16,7 @@ local SHOW_KEYS = { "network", "truth", "scene", "camera", "light", "mode", "tit
 
 -- What `network` / `truth` may be: a function of the view, or with a `scene`, a network (Mlp)
 -- or a lighting model (sn.lighting.*) that scene:render shades from the view's camera and light.
-local function drawer(spec, key)
+function M.drawer(spec, key)
   local x = spec[key]
   if x == nil or type(x) == "function" then return x end
   local kind = key == "network" and "Mlp" or "Lighting"
@@ -88,7 +88,7 @@ function live.show(spec)
   end
   local copy = { draw = {} }
   for k, v in pairs(spec) do copy[k] = v end
-  copy.draw.network, copy.draw.truth = drawer(spec, "network"), drawer(spec, "truth")
+  copy.draw.network, copy.draw.truth = M.drawer(spec, "network"), M.drawer(spec, "truth")
   copy.mode = copy.mode or (copy.network and "network" or "truth")
   local scene = spec.scene
   if scene then  -- the scene's first view, light and size unless the show says otherwise
@@ -132,7 +132,7 @@ local function as_target(t, what, cache, key)
   error(("%s must return a Target or an Image, got %s"):format(what, type(t) == "userdata" and tostring(t) or type(t)), 0)
 end
 
-local function draw(spec, which, view, cache)
+function M.draw(spec, which, view, cache)
   local f = spec.draw[which]
   if not f then
     local has = spec.draw.network and "network" or "truth"
@@ -157,20 +157,25 @@ function M.resolve_view(spec, o)
 end
 
 -- Side by side: 2 x 2 panels of the view's aspect (truth | network, error | -) filling the view.
-local function panel_size(w, h)
+function M.panel_size(w, h)
   return math.max(1, math.floor(w / 2)), math.max(1, math.floor(h / 2))
 end
 
 -- `cache` (the loop's) keeps GPU targets between frames; headless renders get fresh ones.
+-- Returns the picture and what it was made of: { view = the view each part was drawn for (a
+-- panel's in side mode), network = Target, truth = Target } (the probe reads them).
 function M.render(spec, view, cache)
   local mode = view.mode
-  if mode == "network" then return draw(spec, "network", view, cache) end
-  if mode == "truth" then return draw(spec, "truth", view, cache) end
+  local draw = M.draw
+  if mode == "network" or mode == "truth" then
+    local t = draw(spec, mode, view, cache)
+    return t, { view = view, [mode] = t }
+  end
   local v = view
   if mode == "side" then
     v = {}
     for k, x in pairs(view) do v[k] = x end
-    v.width, v.height = panel_size(view.width, view.height)
+    v.width, v.height = M.panel_size(view.width, view.height)
   end
   local n, t = draw(spec, "network", v, cache), draw(spec, "truth", v, cache)
   local key = mode .. " " .. view.width .. "x" .. view.height
@@ -178,7 +183,7 @@ function M.render(spec, view, cache)
                                 scale = view.error_scale or spec.error_scale or 0.25, colormap = spec.colormap,
                                 into = cache and cache[key] }
   if cache then cache[key] = out end
-  return out
+  return out, { view = v, network = n, truth = t }
 end
 
 -- sn.live.render{ mode = "network" | "truth" | "error" | "side", camera = Camera,
@@ -200,7 +205,7 @@ function live.render(o)
   local spec = M.current_spec("sn.live.render")
   local ok, r = pcall(M.render, spec, M.resolve_view(spec, o))
   if not ok then error("sn.live.render: " .. tostring(r), 2) end
-  return r
+  return r  -- the picture only
 end
 
 -- sn.live.view() -> the view the window shows now ({mode, camera, light, width, height}), to

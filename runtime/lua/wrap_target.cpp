@@ -40,6 +40,17 @@ int w_read(lua_State* L) {
   return 1;
 }
 
+// target:pixel(x, y [, attachment = 1]) -> {r, g, b, a} (1-based from the top-left, as image:get)
+int w_pixel(lua_State* L) {
+  RenderTarget& t = self(L);
+  int x = check_int32(L, 2, "x"), y = check_int32(L, 3, "y");
+  int i = lua_isnoneornil(L, 4) ? 0 : check_int32(L, 4, "attachment") - 1;
+  auto p = t.pixel(x - 1, y - 1, i);
+  lua_createtable(L, 4, 0);
+  for (int c = 0; c < 4; ++c) lua_pushnumber(L, p[c]), lua_rawseti(L, -2, c + 1);
+  return 1;
+}
+
 int w_size(lua_State* L) {
   RenderTarget& t = self(L);
   lua_pushinteger(L, t.width()), lua_pushinteger(L, t.height());
@@ -86,7 +97,8 @@ int w_tostring(lua_State* L) {
 }  // namespace
 
 void open_target(lua_State* L) {
-  static const luaL_Reg methods[] = {SN_FN("clear", w_clear), SN_FN("read", w_read), SN_FN("size", w_size),
+  static const luaL_Reg methods[] = {SN_FN("clear", w_clear), SN_FN("read", w_read), SN_FN("pixel", w_pixel),
+                                     SN_FN("size", w_size),
                                      {nullptr, nullptr}};
   define_box_type<RenderTarget>(L, kType, methods, wrap<w_tostring>);
   lua_pushcfunction(L, wrap<w_new>);

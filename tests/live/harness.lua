@@ -167,6 +167,71 @@ function Session:stop()
   return not H.exists(("/proc/%d/stat"):format(self.pid))
 end
 
+-- A process on a pseudo-terminal, as a user at a terminal runs it (the console's line editing
+-- works only there): H.tty{ "cmd", "arg", ... } -> t with t:type(bytes), t:wait(plain text,
+-- timeout) -> output so far, t:output(), t:close() (waits for the process to exit).
+function H.tty(argv)
+  pcall(ffi.cdef, [[
+    int forkpty(int* amaster, char* name, void* termp, void* winp);
+    int execvp(const char* file, char* const argv[]);
+    void _exit(int status);
+    long read(int fd, void* buf, size_t n);
+    long write(int fd, const void* buf, size_t n);
+    int close(int fd);
+    struct sn_pollfd { int fd; short events; short revents; };
+    int poll(struct sn_pollfd* fds, unsigned long n, int timeout);
+    int waitpid(int pid, int* status, int options);
+  ]])
+  local cargv = ffi.new("char*[?]", #argv + 1)
+  local keep = {}
+  for i, a in ipairs(argv) do
+    keep[i] = ffi.new("char[?]", #a + 1, a)
+    cargv[i - 1] = keep[i]
+  end
+  local master = ffi.new("int[1]")
+  local pid = ffi.C.forkpty(master, nil, nil, nil)
+  assert(pid >= 0, "forkpty failed")
+  if pid == 0 then
+    ffi.C.execvp(cargv[0], cargv)
+    ffi.C._exit(127)
+  end
+  local t = { fd = master[0], pid = pid, out = "" }
+  local buf = ffi.new("char[4096]")
+  function t:pump(ms)
+    local p = ffi.new("struct sn_pollfd[1]", { { self.fd, 1, 0 } })
+    while ffi.C.poll(p, 1, ms or 0) > 0 do
+      local n = ffi.C.read(self.fd, buf, 4096)
+      if n <= 0 then return false end
+      self.out = self.out .. ffi.string(buf, n)
+      ms = 0
+    end
+    return true
+  end
+  function t:output() self:pump() return self.out end
+  function t:type(bytes)
+    ffi.C.write(self.fd, bytes, #bytes)
+    H.sleep(0.05)
+  end
+  function t:wait(text, timeout, from)
+    local t0 = sn.clock()
+    while not self.out:find(text, from or 1, true) do
+      if not self:pump(50) or sn.clock() - t0 > (timeout or 20) then
+        error(("the terminal never showed %q; it shows:\n%s"):format(text, self.out), 2)
+      end
+    end
+    return self.out
+  end
+  function t:close()
+    local status = ffi.new("int[1]")
+    for _ = 1, 400 do  -- reading keeps the child from blocking on a full terminal
+      self:pump(25)
+      if ffi.C.waitpid(self.pid, status, 1) == self.pid then break end  -- WNOHANG
+    end
+    ffi.C.close(self.fd)
+  end
+  return t
+end
+
 -- Images equal in every channel of every pixel.
 function H.same(a, b)
   local w, h = a:size()
@@ -187,7 +252,7 @@ function H.run_headless(script, marker)
 end
 
 -- Real input for the window (X11's XTest, as a user's mouse and keyboard): H.x11() -> input
--- with :move(x, y), :key("3"), :drag(button, x0, y0, x1, y1); coordinates on the screen.
+-- with :move(x, y), :key("3" [, "Shift_L"]), :drag(button, x0, y0, x1, y1); coordinates on the screen.
 -- Without a window manager a new window sits at the screen's top-left corner.
 function H.x11()
   pcall(ffi.cdef, [[
@@ -209,11 +274,14 @@ function H.x11()
     Xtst.XTestFakeMotionEvent(d, -1, x, y, 0)
     X11.XSync(d, 0)
   end
-  function input:key(name)
+  function input:key(name, modifier)  -- modifier: a key held meanwhile ("Shift_L")
     local code = X11.XKeysymToKeycode(d, X11.XStringToKeysym(name))
     assert(code ~= 0, "no key " .. name)
+    local mod = modifier and X11.XKeysymToKeycode(d, X11.XStringToKeysym(modifier))
+    if mod then Xtst.XTestFakeKeyEvent(d, mod, 1, 0) end
     Xtst.XTestFakeKeyEvent(d, code, 1, 0)
     Xtst.XTestFakeKeyEvent(d, code, 0, 0)
+    if mod then Xtst.XTestFakeKeyEvent(d, mod, 0, 0) end
     X11.XSync(d, 0)
   end
   function input:drag(button, x0, y0, x1, y1, steps)

@@ -1,0 +1,43 @@
+-- The console at a terminal (a pseudo-terminal here): lines are edited (the up arrow recalls the
+-- last line, backspace deletes, the edited line runs), the history is saved to its file and the
+-- next session recalls the last session's lines; Ctrl-D on an empty line ends the session.
+-- (Piped stdin, no terminal: tests/window/test_live_repl.lua and the other live tests.)
+local sn = require "shadenet"
+package.path = "tests/live/?.lua;" .. package.path
+local H = require "harness"
+
+local dir = "out/live_tests/console_tty"
+os.execute(("rm -rf %q && mkdir -p %q"):format(dir, dir))
+local script, history = dir .. "/main.lua", dir .. "/history"
+H.write(script, 'local sn = require "shadenet"\nprint("READY")\n')
+local function session()
+  return H.tty { "env", "SHADENET_HISTORY=" .. history, "SHADENET_LIVE_EXIT_AFTER=60", H.shadenet, "--watch", script }
+end
+local UP, BACKSPACE, CTRL_D = "\27[A", "\127", "\4"
+
+local t = session()
+t:wait("READY")
+t:wait("> ")
+t:type("v = 40 + 1\r")
+t:type(UP .. BACKSPACE .. "2\r")  -- recalls "v = 40 + 1", deletes the 1, types 2: v = 40 + 2
+t:type('print("V=" .. v)\r')
+local out = t:wait("V=42")
+t:type(CTRL_D)
+t:close()
+assert(not out:find("V=41", 1, true), "the edited line ran, not the recalled one")
+-- libedit's format: a header line, then one line each with spaces as \040 (vis(3) encoding)
+local saved = H.read(history):gsub("\\(%d%d%d)", function(o) return string.char(tonumber(o, 8)) end)
+assert(saved:find("v = 40 + 2", 1, true) and saved:find('print("V=" .. v)', 1, true),
+       "the history file holds the session's lines:\n" .. saved)
+
+-- A new session recalls the last one's lines: up twice is "v = 40 + 2" (before the print).
+local t2 = session()
+t2:wait("READY")
+t2:wait("> ")
+t2:type(UP .. UP .. "\r")
+t2:type(UP .. UP .. "\r")  -- now the print line again
+local out2 = t2:wait("V=42")
+t2:type(CTRL_D)
+t2:close()
+assert(select(2, out2:gsub("V=42", "")) >= 1, "the recalled lines ran")
+print(("console at a terminal: the edited line ran (V=42), history in %s recalled by the next session"):format(history))

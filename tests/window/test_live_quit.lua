@@ -1,0 +1,93 @@
+-- Q asks before console edits are lost: with none it quits at once; after a console edit (a
+-- line that changed something, not a query) it asks in the window and on the terminal, and a
+-- second Q within 3 s quits; the question goes after 3 s; a reload drops the edits (the script
+-- is the truth again), so Q quits at once.
+local sn = require "shadenet"
+package.path = "tests/live/?.lua;" .. package.path
+local H = require "harness"
+
+local dir = "out/live_tests/quit"
+os.execute(("mkdir -p %q && cp tests/live/tint.frag %q/"):format(dir, dir))
+local script = dir .. "/scenario.lua"
+local template = H.read("tests/live/scenario.lua")
+H.write(script, template)
+local ASK = "press Q (or Esc) again to quit"
+local ASK_PATTERN = (ASK:gsub("%p", "%%%0"))
+
+local function alive(s)
+  local f = io.open(("/proc/%d/stat"):format(s.pid))
+  if not f then return false end
+  local state = f:read("*a"):match("%) (%a)")
+  f:close()
+  return state ~= "Z"
+end
+local function wait_exit(s, what)
+  for _ = 1, 200 do
+    if not alive(s) then return end
+    H.sleep(0.05)
+  end
+  s:fail(what)
+end
+local function asks(s) return select(2, s:log():gsub(ASK_PATTERN, "")) end
+
+local x11 = H.x11()
+-- 1. Only queries at the console: Q quits at once.
+local s = H.start { dir = dir .. "/s1", script = script, size = "240x180" }
+s:wait_frame(1)
+s:send("net:trained_steps()")
+s:wait_log("\n%d+\n")
+x11:move(120, 90)
+x11:key("q")
+wait_exit(s, "Q with no console edit quits at once")
+assert(asks(s) == 0, "nothing was asked")
+s.pipe:close()
+
+-- 2. A console edit: Q asks (the window shows the question over the middle), Q again quits.
+s = H.start { dir = dir .. "/s2", script = script, size = "240x180", shown = true }
+s:wait_frame(1)
+s:send("net.layers[1].weight[1][2] = -0.4")
+s:wait_frame(2)
+local n0 = s:shown()
+x11:move(120, 90)
+x11:key("q")
+s:wait_log(ASK_PATTERN)
+H.sleep(0.3)
+assert(alive(s), "the first Q after an edit does not quit")
+local _, pic = s:wait_shown(n0)
+local frame = s:image(s:frames())
+local centre, yellow = 0, 0
+for y = 80, 100 do
+  for x = 10, 230, 2 do
+    local p, q = pic:get(x, y), frame:get(x, y)
+    if math.abs(p[1] - q[1]) + math.abs(p[2] - q[2]) + math.abs(p[3] - q[3]) > 0.05 then centre = centre + 1 end
+    if p[1] > 0.9 and p[2] > 0.8 and p[3] < 0.7 then yellow = yellow + 1 end
+  end
+end
+assert(centre > 300 and yellow > 20, ("the question is drawn over the middle: %d changed, %d text pixels"):format(centre, yellow))
+-- After 3 s the question has gone: Q asks again; then Q within 3 s quits.
+H.sleep(3.3)
+x11:key("q")
+for _ = 1, 100 do if asks(s) == 2 then break end H.sleep(0.05) end
+assert(asks(s) == 2 and alive(s), "after 3 s a Q asks again")
+x11:key("q")
+wait_exit(s, "a second Q within 3 s quits")
+s.pipe:close()
+
+-- 3. An edit, then a reload: the edit is gone with it, Q quits at once.
+s = H.start { dir = dir .. "/s3", script = script, size = "240x180" }
+s:wait_frame(1)
+s:send("net.layers[1].weight[1][2] = -0.4")
+s:wait_frame(2)
+H.write(script, template .. "\n-- saved again\n")
+for _ = 1, 400 do
+  if select(2, s:log():gsub("%[live%] ran ", "")) >= 2 then break end
+  H.sleep(0.05)
+end
+assert(select(2, s:log():gsub("%[live%] ran ", "")) >= 2, "the save reloaded the script")
+x11:move(120, 90)
+x11:key("q")
+wait_exit(s, "Q after a reload quits at once")
+assert(asks(s) == 0, "nothing was asked after the reload")
+s.pipe:close()
+x11:close()
+print("quit: at once without edits, asked (window + terminal) after a console edit, asked again after 3 s, at once after a reload")
