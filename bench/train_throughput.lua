@@ -1,15 +1,18 @@
 -- Training throughput: sample-steps per second (one sample through forward, backward and its
 -- share of the Adam step) for the thesis' architectures, with 1 .. 360 networks per job.
 --
---   shadenet bench/train_throughput.lua [backend] [counts] [epochs] [activations] [archs]
+--   shadenet bench/train_throughput.lua [backend] [counts] [epochs] [activations] [archs] [encodings]
 --     backend:     cpu | gl | all (default: every backend in this build)
 --     counts:      networks per job, comma separated (default 1,2,8,32,360)
 --     epochs:      epochs per job (default 1)
 --     activations: hidden activations, comma separated (default tanh; "all": every built-in)
 --     archs:       hidden layers x width, comma separated (default 4x6,8x8,8x12,12x12)
+--     encodings:   input encodings, comma separated (default none): none, or NAME:N, the encoding
+--                  NAME (frequency, oneblob, sh, triangle_wave) with count N (bands, bins or
+--                  degree) on both input groups
 --
--- Synthetic data: 64,000 samples of 6 inputs -> 3 outputs, split 80/20 (51,200 training rows),
--- batch 8, Adam. Wall time includes the per-epoch validation pass. "cpu s" is
+-- Synthetic data: 64,000 samples of 6 inputs (named normal, view: two groups of 3) -> 3
+-- outputs, split 80/20 (51,200 training rows), batch 8, Adam. Wall time includes the per-epoch validation pass. "cpu s" is
 -- the process CPU time of the job (all threads), "steps/cpu-s" the sample-steps per second of
 -- CPU time; "load" the 1-minute load average before the job: other work on the machine slows
 -- the wall-clock figures, hardly the CPU-time ones.
@@ -31,6 +34,22 @@ for a in (arg[4] or "tanh"):gmatch("[%w_]+") do
 end
 local archs = {}
 for l, w in (arg[5] or "4x6,8x8,8x12,12x12"):gmatch("(%d+)x(%d+)") do archs[#archs + 1] = { tonumber(l), tonumber(w) } end
+local count_of = { frequency = "bands", triangle_wave = "bands", oneblob = "bins", sh = "degree" }
+local encodings = {}
+for e in (arg[6] or "none"):gmatch("[^,]+") do
+  if e == "none" then
+    encodings[#encodings + 1] = { label = "none" }
+  else
+    local name, n = e:match("^([%w_]+):(%d+)$")
+    assert(name and count_of[name], "encoding '" .. e .. "': none or NAME:N, NAME one of frequency, oneblob, sh, triangle_wave")
+    local one = { name, [count_of[name]] = tonumber(n) }
+    encodings[#encodings + 1] = { label = e, encoding = { normal = one, view = one } }
+  end
+end
+local function make_net(hidden, act, enc, seed)
+  return sn.mlp { inputs = { "normal", "view" }, hidden = hidden, outputs = 3, activation = act, seed = seed,
+                  encoding = enc.encoding }
+end
 
 local function status(field)
   local f = io.open("/proc/self/status")
@@ -60,7 +79,7 @@ for i = 0, rows - 1 do
   py[i * 3 + 1] = 0.5 + 0.3 * math.sin(x2 + x5)
   py[i * 3 + 2] = 0.3 + 0.2 * x3 - 0.1 * x6
 end
-local data = sn.dataset { x = bx, inputs = 6, y = by, outputs = 3, split = 0.8, seed = 1 }
+local data = sn.dataset { x = bx, inputs = 6, y = by, outputs = 3, split = 0.8, seed = 1, input_names = { "normal", "view" } }
 bx:release()
 by:release()
 
@@ -68,7 +87,7 @@ by:release()
 -- a small job per architecture compiles it before anything is timed.
 local wx, wy = {}, {}
 for i = 1, 80 do wx[i] = { 0, 0, 0, 0, 0, i / 80 } wy[i] = { 0.5, 0.5, 0.5 } end
-local warm = sn.dataset { x = wx, y = wy }
+local warm = sn.dataset { x = wx, y = wy, input_names = { "normal", "view" } }
 
 local backends = {}
 for _, b in ipairs(sn.backends()) do
@@ -76,29 +95,28 @@ for _, b in ipairs(sn.backends()) do
 end
 assert(#backends > 0, "backend '" .. want .. "' is not in this build (have: " .. table.concat(sn.backends(), ", ") .. ")")
 
-local jobs = {}  -- (architecture, activation) pairs, activations innermost
+local jobs = {}  -- (architecture, activation, encoding), encodings innermost
 for _, a in ipairs(archs) do
-  for _, act in ipairs(activations) do jobs[#jobs + 1] = { a, act } end
+  for _, act in ipairs(activations) do
+    for _, enc in ipairs(encodings) do jobs[#jobs + 1] = { a, act, enc } end
+  end
 end
 
 local ntrain = data:counts()
 print(("dataset: %d samples (%d training), %d epoch(s), batch 8"):format(rows, ntrain, epochs))
-print(("%-7s %-6s %-11s %5s %14s %12s %8s %8s %14s %6s %9s"):format("backend", "arch", "activation", "nets",
-  "total steps/s", "per net", "wall s", "cpu s", "steps/cpu-s", "load", "peak MiB"))
+print(("%-7s %-6s %-11s %-15s %6s %5s %14s %12s %8s %8s %14s %6s %9s"):format("backend", "arch", "activation",
+  "encoding", "inputs", "nets", "total steps/s", "per net", "wall s", "cpu s", "steps/cpu-s", "load", "peak MiB"))
 for _, backend in ipairs(backends) do
   for _, job in ipairs(jobs) do
-    local a, act = job[1], job[2]
+    local a, act, enc = job[1], job[2], job[3]
     local hidden = {}
     for i = 1, a[1] do hidden[i] = a[2] end
     if backend == "gl" then
-      sn.train { nets = sn.mlp { inputs = 6, hidden = hidden, outputs = 3, activation = act }, data = warm,
-                 epochs = 1, batch = 8, backend = "gl" }
+      sn.train { nets = make_net(hidden, act, enc, 1), data = warm, epochs = 1, batch = 8, backend = "gl" }
     end
     for _, count in ipairs(counts) do
       local nets = {}
-      for s = 1, count do
-        nets[s] = sn.mlp { inputs = 6, hidden = hidden, outputs = 3, activation = act, seed = s }
-      end
+      for s = 1, count do nets[s] = make_net(hidden, act, enc, s) end
       local load = loadavg()
       local c0 = os.clock()
       local runs = sn.train { nets = nets, data = data, epochs = epochs, batch = 8, backend = backend,
@@ -107,8 +125,9 @@ for _, backend in ipairs(backends) do
       local steps = 0
       for _, r in ipairs(runs) do steps = steps + r.steps * 8 end
       local wall = runs[1].wall_time
-      print(("%-7s %-6s %-11s %5d %14.0f %12.0f %8.2f %8.2f %14.0f %6s %9.1f"):format(backend, a[1] .. "x" .. a[2],
-        act, count, steps / wall, steps / wall / count, wall, cpu, steps / cpu, load, status("VmHWM") / 1024))
+      print(("%-7s %-6s %-11s %-15s %6d %5d %14.0f %12.0f %8.2f %8.2f %14.0f %6s %9.1f"):format(backend,
+        a[1] .. "x" .. a[2], act, enc.label, nets[1]:spec().encoded_inputs, count, steps / wall, steps / wall / count,
+        wall, cpu, steps / cpu, load, status("VmHWM") / 1024))
       nets, runs = nil, nil
       collectgarbage()
     end

@@ -5,7 +5,7 @@
 // reading outputs back); 0 writes the outputs themselves.
 layout(local_size_x = MLP_EVAL_LOCAL_SIZE) in;
 
-layout(std430, binding = 0) readonly buffer X { float xs[]; };       // rows x MLP_IN
+layout(std430, binding = 0) readonly buffer X { float xs[]; };       // rows x MLP_RAW_IN
 layout(std430, binding = 1) readonly buffer Y { float ys[]; };       // rows x MLP_OUT (loss mode)
 layout(std430, binding = 2) readonly buffer Params { vec4 params[]; };
 layout(std430, binding = 3) writeonly buffer Out { float outs[]; };  // per net: rows x MLP_OUT
@@ -27,6 +27,7 @@ uint pbase, lane;
 #define MLP_UNIT(b, u0, k) sh_u[lane * uint(MLP_UQ) + uint((u0) + (k))]
 #define MLP_ROLLED(n) ((n) + u_zero)
 #include "mlp/forward.glsl"
+#include "mlp/encoding.glsl"
 #include "mlp/loss.glsl"
 
 #if MLP_EVAL_LOSS
@@ -41,12 +42,20 @@ void main() {
   pbase = u_param_offset + net * u_param_stride;
   const bool live = row < u_rows;
   const uint r = live ? row : 0u;  // a dead row computes row 0 and drops it
+#if MLP_ENCODED
+  float raw[MLP_RAW_IN];
+  for (int i = 0; i < MLP_RAW_IN; ++i) raw[i] = xs[r * uint(MLP_RAW_IN) + uint(i)];
+  vec4 enc[MLP_IN4];
+  mlp_encode(raw, enc);
+  for (int q = 0; q < MLP_IN4; ++q) MLP_UNIT(0, 0, q) = enc[q];
+#else
   for (int q = 0; q < MLP_IN4; ++q) {
     vec4 x = vec4(0.0);
     for (int c = 0; c < 4; ++c)
       if (4 * q + c < MLP_IN) x[c] = xs[r * uint(MLP_IN) + uint(4 * q + c)];
     MLP_UNIT(0, 0, q) = x;
   }
+#endif
   MLP_FORWARD()
 
   // Once llvmpipe's loop limiter is spent every loop stops after one pass: flag the result.

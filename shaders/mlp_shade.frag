@@ -5,11 +5,13 @@
 // RGB; alpha = coverage. Uncovered pixels skip the network and stay transparent black.
 //
 // Host-made #defines besides the architecture's: MLP_ATTRS (attachments read), MLP_GATHER_INPUTS
-// (code filling the array u0[] of input vec4s from them), MLP_MAX_WIDTH4, MLP_CONDITIONS (uniform
+// (code filling the array u0[] of input vec4s from them, through mlp_encode when the network
+// encodes its inputs: mlp/encoding.glsl), MLP_MAX_WIDTH4, MLP_CONDITIONS (uniform
 // inputs of a conditioned network, when it has any).
 #define COLOR_SPACE MLP_COLOR
 #include "color.glsl"
 #include "mlp/activation.glsl"
+#include "mlp/encoding.glsl"
 
 // Padded vec4 layout (runtime/nn/mlp_shader.h). A uniform buffer where it fits: every fragment
 // reads the same parameters, what uniform buffers are for (llvmpipe: one scalar load instead of

@@ -11,6 +11,7 @@
 //  - a step whose new parameters are not finite commits nothing (status 2): the host re-runs
 //    the chunk one step short of it.
 #include "mlp/activation.glsl"
+#include "mlp/encoding.glsl"
 #include "mlp/adam.glsl"
 #include "mlp/loss.glsl"
 
@@ -165,12 +166,20 @@ void main() {
   int done = 0, status = 0;
   for (int step = 0; step < limit; ++step) {
     uint row = order[first_row + uint(step * B + lane)];
+#if MLP_ENCODED
+    float raw[MLP_RAW_IN];
+    for (int i = 0; i < MLP_RAW_IN; ++i) raw[i] = train_x[row * uint(MLP_RAW_IN) + uint(i)];
+    vec4 enc[MLP_IN4];
+    mlp_encode(raw, enc);
+    for (int q = 0; q < MLP_IN4; ++q) A4(lane, q) = enc[q];
+#else
     for (int q = 0; q < MLP_IN4; ++q) {
       vec4 x = vec4(0.0);
       for (int c = 0; c < 4; ++c)
         if (4 * q + c < MLP_IN) x[c] = train_x[row * uint(MLP_IN) + uint(4 * q + c)];
       A4(lane, q) = x;
     }
+#endif
     MLP_FORWARD()
 
     // d/dy of the mean loss over the minibatch's samples and outputs (mlp/loss.glsl), then backward.

@@ -15,6 +15,7 @@
 //  - a step whose loss or deltas are not finite stops the net before its update (status 1);
 //  - a step whose new parameters are not finite commits nothing (status 2).
 #include "mlp/activation.glsl"
+#include "mlp/encoding.glsl"
 #include "mlp/adam.glsl"
 #include "mlp/loss.glsl"
 

@@ -39,6 +39,7 @@ int open_core(lua_State* L) {
   open_dataset_sample(L);
   open_train(L);
   open_activation(L);
+  open_encoding(L);
   open_lighting(L);
   open_scene(L);
   return 1;

@@ -27,6 +27,7 @@ void open_dataset(lua_State* L);
 void open_dataset_sample(lua_State* L);  // after open_dataset: sn.dataset.sample
 void open_train(lua_State* L);
 void open_activation(lua_State* L);  // sn.activation.*
+void open_encoding(lua_State* L);    // sn.encoding.*
 void open_lighting(lua_State* L);  // sn.lighting.*, sn.color.*
 void open_scene(lua_State* L);     // sn.scene, sn.render_truth, sn.dataset_stats
 

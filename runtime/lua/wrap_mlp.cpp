@@ -9,6 +9,7 @@
 
 #include "io/text.h"
 #include "lua/binding.h"
+#include "lua/encoding_binding.h"
 #include "lua/module.h"
 #include "nn/checkpoint.h"
 #include "nn/mlp.h"
@@ -248,18 +249,51 @@ int w_view_tostring(lua_State* L) {
 
 // ---- the network ----
 
-// sn.mlp{ inputs, hidden = {...}, outputs, activation, slope, omega, alpha, output_activation, init,
-//         seed, color, input_names }
+// sn.mlp{ inputs (a count, or the input names), hidden = {...}, outputs, encoding, activation,
+//         slope, omega, alpha, output_activation, init, seed, color, input_names }
 int w_new(lua_State* L) {
   Options o(L, 1, "sn.mlp",
-            {"inputs", "hidden", "outputs", "activation", "slope", "omega", "alpha", "output_activation", "init", "seed",
-             "color", "input_names"});
+            {"inputs", "hidden", "outputs", "encoding", "activation", "slope", "omega", "alpha", "output_activation",
+             "init", "seed", "color", "input_names"});
   nn::MlpSpec s;
-  s.inputs = o.int32("inputs");
+  InputGroups groups;
+  auto read_names = [&](const char* key) {
+    const int at = o.push(key);
+    if (!lua_istable(L, at)) throw Error(o.where(key) + ": table of strings expected, got " + type_name_at(L, at));
+    for (int i = 1; i <= int(lua_objlen(L, at)); ++i) {
+      lua_rawgeti(L, at, i);
+      groups.names.push_back(check_string(L, -1, o.where(key).c_str()));
+      groups.widths.push_back(input_width(groups.names.back()));
+      lua_pop(L, 1);
+    }
+    lua_pop(L, 1);
+    for (std::size_t i = 0; i < groups.names.size(); ++i)
+      for (std::size_t j = 0; j < i; ++j)
+        if (groups.names[i] == groups.names[j]) throw Error(o.where(key) + ": '" + groups.names[i] + "' is listed twice");
+  };
+  const int in_at = o.push("inputs");
+  const bool named = lua_istable(L, in_at);
+  lua_pop(L, 1);
+  if (named) {  // inputs = { "normal", "view", "uv" }: the names, and their widths add up
+    if (o.has("input_names")) throw Error("sn.mlp: give the input names once, as inputs = {...} or input_names = {...}");
+    read_names("inputs");
+    if (groups.names.empty()) throw Error(o.where("inputs") + ": at least one input name");
+    s.inputs = groups.total();
+  } else {
+    s.inputs = o.int32("inputs");
+    if (o.has("input_names")) read_names("input_names");
+  }
   s.outputs = o.int32("outputs", 3);
   for (double w : o.numbers("hidden")) {
     if (w != std::floor(w)) throw Error("sn.mlp option 'hidden': widths must be integers, got " + std::to_string(w));
     s.hidden.push_back(int(w));
+  }
+  if (o.has("encoding")) {
+    if (!named && !groups.names.empty() && groups.total() != s.inputs)
+      throw Error("sn.mlp: input_names {" + join(groups.names) + "} describe " + std::to_string(groups.total()) +
+                  " input columns, inputs = " + std::to_string(s.inputs) + "; encodings need them to agree");
+    s.encodings = check_encodings(L, o.push("encoding"), groups, o.where("encoding"));
+    lua_pop(L, 1);
   }
   s.activation = nn::parse_activation(o.string("activation", "tanh"), nn::Position::hidden);
   s.slope = o.number("slope", 0.01);
@@ -275,16 +309,7 @@ int w_new(lua_State* L) {
     throw Error(std::string("sn.mlp: ") + e.what());
   }
   auto net = std::make_shared<Mlp>(s, init, uint64_t(seed));
-  int names = o.push("input_names");
-  if (!lua_isnil(L, names)) {
-    if (!lua_istable(L, names)) throw Error("sn.mlp option 'input_names': table of strings expected");
-    for (int i = 1; i <= int(lua_objlen(L, names)); ++i) {
-      lua_rawgeti(L, names, i);
-      net->input_names.push_back(check_string(L, -1, "sn.mlp option 'input_names'"));
-      lua_pop(L, 1);
-    }
-  }
-  lua_pop(L, 1);
+  net->input_names = groups.names;
   push(L, std::move(net), kType);
   return 1;
 }
@@ -396,6 +421,47 @@ int w_spec(lua_State* L) {
   lua_setfield(L, -2, "output_activation");
   lua_pushstring(L, shading::color_space_name(s.color));
   lua_setfield(L, -2, "color");
+  push_encodings(L, s.encodings);
+  lua_setfield(L, -2, "encoding");
+  lua_pushinteger(L, s.width(0));
+  lua_setfield(L, -2, "encoded_inputs");
+  return 1;
+}
+
+// net:encode(x) -> what the first layer reads for raw inputs x (one sample: a table of inputs
+// numbers; or a table of such tables), the encodings computed in double (the twins the cpu
+// backend and the oracle use).
+int w_encode(lua_State* L) {
+  const Mlp& net = self(L);
+  const nn::MlpSpec& s = net.spec;
+  if (!lua_istable(L, 2)) throw Error("net:encode: a table of " + std::to_string(s.inputs) + " inputs, or a table of such tables, expected, got " + type_name_at(L, 2));
+  lua_rawgeti(L, 2, 1);
+  const bool nested = lua_istable(L, -1);
+  lua_pop(L, 1);
+  const int w = s.width(0);
+  std::vector<double> enc(static_cast<std::size_t>(w));
+  auto one = [&](int idx, const std::string& what) {
+    const auto x = check_numbers(L, idx, what.c_str(), s.inputs);
+    if (s.encodings.empty()) enc.assign(x.begin(), x.end());
+    else nn::encode_row(s.encodings, s.inputs, x.data(), enc.data());
+    lua_createtable(L, w, 0);
+    for (int i = 0; i < w; ++i) {
+      lua_pushnumber(L, enc[std::size_t(i)]);
+      lua_rawseti(L, -2, i + 1);
+    }
+  };
+  if (!nested) {
+    one(2, "net:encode sample");
+    return 1;
+  }
+  const int n = int(lua_objlen(L, 2));
+  lua_createtable(L, n, 0);
+  for (int r = 1; r <= n; ++r) {
+    lua_rawgeti(L, 2, r);
+    one(lua_gettop(L), "net:encode sample " + std::to_string(r));
+    lua_remove(L, -2);
+    lua_rawseti(L, -2, r);
+  }
   return 1;
 }
 
@@ -472,7 +538,7 @@ void open_mlp(lua_State* L) {
       SN_FN("save", w_save),       SN_FN("version", w_version),   SN_FN("trained_steps", w_trained_steps),
       SN_FN("inputs", w_inputs),   SN_FN("conditions", w_conditions), SN_FN("set_input", w_set_input),   SN_FN("restore_best", w_restore_best), SN_FN("best", w_best),
       SN_FN("spec", w_spec),       SN_FN("params", w_params),     SN_FN("set_params", w_set_params),
-      SN_FN("clone", w_clone),     {nullptr, nullptr}};
+      SN_FN("clone", w_clone),     SN_FN("encode", w_encode),     {nullptr, nullptr}};
   static const luaL_Reg meta[] = {SN_FN("__newindex", w_newindex), SN_FN("__eq", w_eq), {nullptr, nullptr}};
   define_box_type<Mlp>(L, kType, methods, wrap<w_tostring>, meta);
   index_through(L, kType, wrap<w_index>);

@@ -105,6 +105,20 @@ void save_checkpoint(const Mlp& net, const std::string& path) {
       p.put(double(c.value));
     }
   }
+  if (!net.spec.encodings.empty()) {
+    p.str("encodings");
+    p.put(uint32_t(net.spec.encodings.size()));
+    for (const auto& e : net.spec.encodings) {
+      p.str(e.input);
+      p.put(uint32_t(e.offset));
+      p.put(uint32_t(e.width));
+      p.str(encoding_name(e.kind));
+      p.put(uint32_t(e.n));
+      p.put(uint8_t(e.include_input ? 1 : 0));
+      p.put(double(e.lo));
+      p.put(double(e.hi));
+    }
+  }
   std::vector<std::pair<std::string, std::string>> entries;
   for (Activation a : {net.spec.activation, net.spec.output_activation}) {
     const ActivationParam k = activation_def(a).param;
@@ -182,10 +196,10 @@ Mlp load_checkpoint(const std::string& path) {
   const uint32_t names = r.get<uint32_t>("input names");
   for (uint32_t i = 0; i < names; ++i) net.input_names.push_back(r.str("input names"));
   net.trained_steps = r.get<uint64_t>("counters");
+  // The count is checked against the spec once the sections (its encodings) are read; until
+  // then it only has to fit in the file.
   const uint64_t count = r.get<uint64_t>("parameters");
-  if (count != s.param_count())
-    throw std::runtime_error(path + ": checkpoint has " + std::to_string(count) + " parameters, its spec " +
-                             s.describe() + " needs " + std::to_string(s.param_count()));
+  r.need(count > payload.size() / sizeof(float) ? payload.size() + 1 : std::size_t(count) * sizeof(float), "parameters");
   net.params.resize(count);
   for (auto& v : net.params) v = r.get<float>("parameters");
   net.best_epoch = int(r.get<uint32_t>("best snapshot"));
@@ -209,6 +223,32 @@ Mlp load_checkpoint(const std::string& path) {
           throw std::runtime_error(path + ": checkpoint has a bad condition '" + c.name + "'");
         net.conditions.push_back(c);
       }
+    } else if (tag == "encodings") {
+      const uint32_t n = r.get<uint32_t>("encodings");
+      if (n > uint32_t(s.inputs)) throw std::runtime_error(path + ": checkpoint has more encodings than inputs");
+      for (uint32_t i = 0; i < n; ++i) {
+        InputEncoding e;
+        e.input = r.str("encodings");
+        const uint32_t offset = r.get<uint32_t>("encodings"), width = r.get<uint32_t>("encodings");
+        if (offset >= uint32_t(s.inputs) || width > uint32_t(s.inputs))
+          throw std::runtime_error(path + ": checkpoint encodes columns past the network's " + std::to_string(s.inputs) +
+                                   " inputs");
+        e.offset = int(offset);
+        e.width = int(width);
+        const std::string kind = r.str("encodings");
+        e.n = int(std::min<uint32_t>(r.get<uint32_t>("encodings"), 1u << 20));  // checked by validate()
+        e.include_input = r.get<uint8_t>("encodings") != 0;
+        e.lo = r.get<double>("encodings");
+        e.hi = r.get<double>("encodings");
+        if (!find_encoding(kind, &e.kind))
+          throw std::runtime_error(path + ": the network encodes input '" + e.input + "' with '" + kind +
+                                   "', which this build does not know (valid: " + [] {
+                                     std::string v;
+                                     for (const auto& name : encoding_names()) v += (v.empty() ? "" : ", ") + name;
+                                     return v;
+                                   }() + ")");
+        s.encodings.push_back(e);
+      }
     } else if (tag == "entries") {
       const uint32_t entries = r.get<uint32_t>("entries");
       for (uint32_t i = 0; i < entries; ++i) {
@@ -226,6 +266,14 @@ Mlp load_checkpoint(const std::string& path) {
     }
   }
   if (r.pos != payload.size()) throw std::runtime_error(path + ": checkpoint has unread bytes after the network");
+  try {
+    s.validate();  // the encodings, before they size anything
+  } catch (const std::invalid_argument& e) {
+    throw std::runtime_error(path + ": bad network spec in checkpoint: " + e.what());
+  }
+  if (count != s.param_count())
+    throw std::runtime_error(path + ": checkpoint has " + std::to_string(count) + " parameters, its spec " +
+                             s.describe() + " needs " + std::to_string(s.param_count()));
   // Activations by name; a user's one must be defined, as the checkpoint recorded it.
   auto resolve = [&](const std::string& name, Position where, const char* option) {
     const auto glsl = defs.find(name + " glsl"), grad = defs.find(name + " grad");

@@ -15,6 +15,9 @@
 //   them, as files before them did):
 //     "conditions" (a conditioned network): u32 count, per condition str name, f64 min, f64 max,
 //     f64 value
+//     "encodings" (a network that encodes inputs, nn/encoding.h): u32 count, per encoded input
+//     str input name, u32 first column, u32 width, str encoding, u32 count (bands, bins or
+//     degree), u8 include_input, f64 range min, f64 range max
 //     "entries": u32 count, per entry str key, str value ("omega", "alpha": an activation's
 //     parameter, written when the network uses it; "activation NAME glsl" / "activation NAME
 //     grad": a user's activation, by definition)

@@ -32,6 +32,9 @@ void use_cpu_kernel(const std::string& name);
 // f(z) where the activation allows, else as the forward pass stores it).
 void cpu_activation(Activation a, float param, const float* z, std::size_t n, float* f, float* df);
 
+// Its rows are what the first layer reads: spec.width(0) floats each, the inputs already
+// encoded when the spec has encodings (nn/encoding.h encode_rows; the cpu trainer encodes a
+// dataset once per run).
 class CpuNet {
  public:
   CpuNet(const MlpSpec& spec, const float* params);  // params in the shared flat layout
@@ -49,7 +52,7 @@ class CpuNet {
   // The loss step() minimises (nn/loss.h; l2 until set).
   void set_loss(const Loss& loss) { loss_ = loss; }
 
-  // One Adam step on the minibatch of rows `rows[0..batch)` of x (inputs wide) and y (outputs
+  // One Adam step on the minibatch of rows `rows[0..batch)` of x (width(0) wide) and y (outputs
   // wide). Returns false, leaving the parameters as they were, when the loss or the new
   // parameters are not finite. `loss` = the minibatch's loss before the update.
   bool step(const float* x, const float* y, const uint32_t* rows, int batch, const AdamStep& adam, double* loss);

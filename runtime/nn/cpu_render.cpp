@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "nn/cpu_net.h"
+#include "nn/encoding.h"
 #include "nn/parallel.h"
 #include "shading/color.h"
 
@@ -90,7 +91,9 @@ std::size_t cpu_render(const Mlp& net, const scene::GBuffer& g, const RenderInpu
     return 0;
   }
 
-  const int in = net.spec.inputs;
+  const int in = net.spec.inputs;      // raw inputs per pixel
+  const int first = net.spec.width(0);  // what the first layer reads: encoded when the net encodes
+  const std::vector<InputEncoding>& encodings = net.spec.encodings;
   const shading::ColorSpace color = net.spec.color;
   const int bands = (bh + kBandRows - 1) / kBandRows;
   const int threads = std::max(1, std::min(default_threads(), bands));
@@ -108,7 +111,8 @@ std::size_t cpu_render(const Mlp& net, const scene::GBuffer& g, const RenderInpu
   };
   parallel_for(threads, threads, [&](int) {
     CpuNet cpu(net.spec, net.params.data());
-    std::vector<float> x(std::size_t(kChunkBlocks) * kLanes * std::size_t(in));
+    std::vector<float> x(std::size_t(kChunkBlocks) * kLanes * std::size_t(first));
+    std::vector<float> raw(static_cast<std::size_t>(in)), encoded(static_cast<std::size_t>(first));  // one pixel's, when encoding
     std::vector<float> y(std::size_t(kChunkBlocks) * kLanes * 3);
     std::vector<uint32_t> pix(std::size_t(kChunkBlocks) * kLanes);  // box texel per lane
     std::vector<std::size_t> dst(pix.size());                        // output pixel per lane
@@ -118,8 +122,19 @@ std::size_t cpu_render(const Mlp& net, const scene::GBuffer& g, const RenderInpu
       const std::size_t blocks = (n + kLanes - 1) / kLanes;
       for (std::size_t k = n; k < blocks * kLanes; ++k) pix[k] = pix[n - 1];  // dead lanes repeat a live one
       for (std::size_t b = 0; b < blocks; ++b) {
-        float* xb = x.data() + b * std::size_t(in) * kLanes;
+        float* xb = x.data() + b * std::size_t(first) * kLanes;
         const uint32_t* pb = pix.data() + b * kLanes;
+        if (!encodings.empty()) {  // per pixel: its raw inputs, encoded as the trainers encode rows
+          for (int l = 0; l < kLanes; ++l) {
+            for (int i = 0; i < in; ++i) {
+              const InputSlot& s = inputs.slots[std::size_t(i)];
+              raw[std::size_t(i)] = s.attribute < 0 ? s.value : src[std::size_t(s.attribute)][std::size_t(pb[l]) * 4 + std::size_t(s.component)];
+            }
+            encode_rows(encodings, in, raw.data(), 1, encoded.data());
+            for (int j = 0; j < first; ++j) xb[std::size_t(j) * kLanes + std::size_t(l)] = encoded[std::size_t(j)];
+          }
+          continue;
+        }
         for (int i = 0; i < in; ++i) {
           const InputSlot& s = inputs.slots[std::size_t(i)];
           float* xi = xb + std::size_t(i) * kLanes;

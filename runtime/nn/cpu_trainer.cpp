@@ -1,5 +1,6 @@
 #include "nn/cpu_trainer.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <string>
@@ -31,6 +32,37 @@ std::string cpu_model() {
   return "unknown cpu";
 }
 
+// A dataset's training and validation rows under one set of input encodings (nn/encoding.h),
+// encoded in double and rounded to float once per run: (train + val rows) x encoded width x 4
+// bytes for each distinct set of encodings among the run's networks.
+struct EncodedRows {
+  std::vector<InputEncoding> encodings;
+  const float *train = nullptr, *val = nullptr;
+  std::vector<float> train_rows, val_rows;
+};
+
+std::unique_ptr<EncodedRows> encode_data(const std::vector<InputEncoding>& encs, const data::Dataset& d, int threads) {
+  auto r = std::make_unique<EncodedRows>();
+  r->encodings = encs;
+  const std::size_t w = std::size_t(encoded_width(encs, d.inputs));
+  r->train_rows.resize(d.train_count() * w);
+  r->val_rows.resize(d.val_count() * w);
+  // In blocks of rows over the machine's threads (sin, cos, erfc per value add up).
+  constexpr std::size_t kBlock = 4096;
+  const std::size_t nt = (d.train_count() + kBlock - 1) / kBlock, nv = (d.val_count() + kBlock - 1) / kBlock;
+  parallel_for(int(nt + nv), threads, [&](int b) {
+    const bool train = std::size_t(b) < nt;
+    const std::size_t first = (train ? std::size_t(b) : std::size_t(b) - nt) * kBlock;
+    const std::size_t count = std::min(kBlock, (train ? d.train_count() : d.val_count()) - first);
+    const float* x = (train ? d.train_x.data() : d.val_x.data()) + first * std::size_t(d.inputs);
+    float* out = (train ? r->train_rows.data() : r->val_rows.data()) + first * w;
+    encode_rows(encs, d.inputs, x, count, out);
+  });
+  r->train = r->train_rows.data();
+  r->val = r->val_rows.data();
+  return r;
+}
+
 class CpuBackend : public Backend {
  public:
   explicit CpuBackend(int threads) : threads_(threads > 0 ? threads : default_threads()) {}
@@ -49,6 +81,22 @@ class CpuBackend : public Backend {
       work[i] = std::make_unique<CpuNet>(nets[i]->spec, nets[i]->params.data());
       work[i]->set_loss(cfg.loss);
     });
+    // Rows as each net's first layer reads them: the dataset's own, or encoded once per distinct
+    // set of input encodings for the whole run.
+    std::vector<const EncodedRows*> rows_of(static_cast<std::size_t>(count));
+    std::vector<std::unique_ptr<EncodedRows>> encoded;
+    const EncodedRows plain{{}, data.train_x.data(), data.val_x.data(), {}, {}};
+    for (int i = 0; i < count; ++i) {
+      const auto& encs = nets[i]->spec.encodings;
+      const EncodedRows* r = &plain;
+      if (!encs.empty()) {
+        r = nullptr;
+        for (const auto& e : encoded)
+          if (e->encodings == encs) r = e.get();
+        if (!r) r = encoded.emplace_back(encode_data(encs, data, threads_)).get();
+      }
+      rows_of[i] = r;
+    }
 
     const uint32_t n = uint32_t(data.train_count());
     const long long steps = n / uint32_t(cfg.batch);
@@ -68,7 +116,7 @@ class CpuBackend : public Backend {
         double sum = 0;
         for (long long s = 0; s < steps; ++s) {
           double loss;
-          if (!net.step(data.train_x.data(), data.train_y.data(), rows.data() + s * cfg.batch, cfg.batch,
+          if (!net.step(rows_of[i]->train, data.train_y.data(), rows.data() + s * cfg.batch, cfg.batch,
                         adam[std::size_t(s)], &loss)) {
             r.diverged = Divergence{e + 1, s + 1};
             return;
@@ -76,9 +124,9 @@ class CpuBackend : public Backend {
           sum += loss;
           ++r.steps;
         }
-        const double val = net.mse(data.val_x.data(), data.val_y.data(), data.val_count());
+        const double val = net.mse(rows_of[i]->val, data.val_y.data(), data.val_count());
         const double val_loss =
-            cfg.loss.kind == LossKind::l2 ? val : net.mean_loss(data.val_x.data(), data.val_y.data(), data.val_count());
+            cfg.loss.kind == LossKind::l2 ? val : net.mean_loss(rows_of[i]->val, data.val_y.data(), data.val_count());
         std::vector<float> p(net.spec().param_count());
         net.get_params(p.data());
         r.end_epoch(cfg.loss, sum / double(steps), val, val_loss, p.data(), p.size());

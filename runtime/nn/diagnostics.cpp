@@ -8,7 +8,9 @@ std::vector<double> dead_unit_fractions(const Mlp& net, const float* x, std::siz
   // Counted by the cpu backend's kernels: a custom activation without them has no figure.
   if (activation_def(net.spec.activation).simd < 0 || activation_def(net.spec.output_activation).simd < 0) return {};
   CpuNet work(net.spec, net.params.data());
-  const auto counts = work.unit_counts(x, count);
+  std::vector<float> encoded;  // the cpu kernels read encoded rows
+  if (!net.spec.encodings.empty()) encoded = encode_rows(net.spec.encodings, net.spec.inputs, x, count);
+  const auto counts = work.unit_counts(encoded.empty() ? x : encoded.data(), count);
   const bool relu_like = net.spec.activation == Activation::relu || net.spec.activation == Activation::leaky_relu;
   std::vector<double> fractions;
   for (const auto& layer : counts) {

@@ -113,6 +113,34 @@ std::shared_ptr<gl::Buffer> gl_forward(const Mlp& net, const gl::Buffer& x, std:
   return out;
 }
 
+std::vector<float> gl_encode(const MlpSpec& spec, const std::vector<float>& x) {
+  if (spec.encodings.empty()) throw std::invalid_argument("gl encode: " + spec.describe() + " encodes no input");
+  const std::size_t in = std::size_t(spec.inputs), w = std::size_t(spec.width(0)), w4 = std::size_t(chunks4(int(w)));
+  if (x.size() % in)
+    throw std::invalid_argument("gl encode: " + std::to_string(x.size()) + " numbers are not whole rows of " +
+                                std::to_string(in) + " inputs");
+  const std::size_t rows = x.size() / in;
+  if (rows == 0) return {};
+  if (rows > 64 * kMaxGroupsPerDispatch)
+    throw std::invalid_argument("gl encode: at most " + std::to_string(64 * kMaxGroupsPerDispatch) + " rows at once");
+  gl::ProgramDesc desc;
+  desc.compute = "encoding_check.comp";
+  desc.defines = mlp_defines(spec);
+  desc.includes = mlp_includes(spec);
+  auto program = gl::get_program(desc);
+  gl::Buffer xb(gl::ElemType::float32, x.size()), out(gl::ElemType::vec4, rows * w4);
+  xb.upload(x.data(), 0, x.size());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, xb.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, out.id());
+  program->set_uniform("u_rows", {double(rows)});
+  gl::dispatch(*program, unsigned((rows + 63) / 64));
+  std::vector<float> padded(rows * w4 * 4), e(rows * w);
+  out.download(padded.data(), 0, padded.size());
+  for (std::size_t r = 0; r < rows; ++r)
+    for (std::size_t i = 0; i < w; ++i) e[r * w + i] = padded[r * w4 * 4 + i];
+  return e;
+}
+
 std::vector<float> gl_forward(const Mlp& net, const std::vector<float>& x) {
   const std::size_t in = std::size_t(net.spec.inputs);
   if (x.size() % in)

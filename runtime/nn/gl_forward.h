@@ -30,6 +30,11 @@ void gl_forward(const MlpSpec& spec, const GlParams& params, const gl::Buffer& x
 std::vector<double> gl_squared_errors(const MlpSpec& spec, const GlParams& params, const gl::Buffer& x,
                                       const gl::Buffer& y, std::size_t rows, const Loss& loss = {});
 
+// What the first layer of a network with `spec` reads for host rows of raw inputs (rows x
+// spec.inputs floats): its encodings evaluated by the GLSL every gl path runs
+// (shaders/encoding_check.comp), rows x spec.width(0) floats. The spec must encode something.
+std::vector<float> gl_encode(const MlpSpec& spec, const std::vector<float>& x);
+
 // One network over host rows (rows x net.spec.inputs floats): its outputs, rows x outputs.
 std::vector<float> gl_forward(const Mlp& net, const std::vector<float>& x);
 // One network over a buffer of rows: a new float32 buffer of rows x outputs.

@@ -156,7 +156,16 @@ gl::Defines per_net_step_defines(const MlpSpec& s, int batch) {
   });
   defs["MLP_R_ZERO"] = zero;
   std::string inputs;
-  for (int q = 0; q < chunks4(s.inputs); ++q) inputs += a(std::size_t(q)) + " = " + row_vec4("u_train_x", s.inputs, q) + "; ";
+  if (s.encodings.empty()) {
+    for (int q = 0; q < chunks4(s.inputs); ++q) inputs += a(std::size_t(q)) + " = " + row_vec4("u_train_x", s.inputs, q) + "; ";
+  } else {  // the raw row, then its encoding (shaders/include/mlp/encoding.glsl)
+    inputs = "{ float x_[" + i(std::size_t(s.inputs)) + "] = float[](";
+    for (int k = 0; k < s.inputs; ++k)
+      inputs += (k ? ", " : "") + ("texelFetch(u_train_x, (row) * " + i(std::size_t(s.inputs)) + " + " + i(std::size_t(k)) + ").r");
+    inputs += "); vec4 e_[" + i(std::size_t(chunks4(s.width(0)))) + "]; mlp_encode(x_, e_); ";
+    for (int q = 0; q < chunks4(s.width(0)); ++q) inputs += a(std::size_t(q)) + " = e_[" + i(std::size_t(q)) + "]; ";
+    inputs += "} ";
+  }
   defs["MLP_R_INPUTS(row)"] = inputs;
   defs["MLP_R_FORWARD"] = forward(s);
   defs["MLP_R_OUTPUT(row)"] = output_deltas(s, batch);

@@ -33,7 +33,8 @@ std::size_t g_uploads = 0;
 const char* kSwizzle = "xyzw";
 
 // GLSL that fills the array u0[] of input vec4s: attribute a's components from attachment a, a
-// condition's value from u_condition[k], in input order, zeros after the last input.
+// condition's value from u_condition[k], in input order, zeros after the last input; encoded
+// by mlp_encode when the network encodes inputs.
 std::string gather_inputs(const Mlp& net) {
   std::vector<std::string> comps;
   std::string code;
@@ -47,6 +48,12 @@ std::string gather_inputs(const Mlp& net) {
     const int w = scene::attribute_width(name);
     for (int c = 0; c < w; ++c) comps.push_back("g" + std::to_string(a) + "." + kSwizzle[c]);
     ++a;
+  }
+  if (!net.spec.encodings.empty()) {  // the raw row, then its encoding (mlp/encoding.glsl)
+    std::string raw;
+    for (const auto& c : comps) raw += (raw.empty() ? "" : ", ") + c;
+    return code + "float x_[" + std::to_string(comps.size()) + "] = float[](" + raw + "); vec4 u0[" +
+           std::to_string(chunks4(net.spec.width(0))) + "]; mlp_encode(x_, u0); ";
   }
   while (comps.size() % 4) comps.push_back("0.0");
   std::string all;

@@ -110,9 +110,11 @@ void unpack_padded(const MlpSpec& s, const float* padded, float* flat) {
 
 gl::Defines mlp_defines(const MlpSpec& s) {
   gl::Defines d;
-  d["MLP_IN"] = num(s.inputs);
+  d["MLP_IN"] = num(s.width(0));
+  d["MLP_RAW_IN"] = num(s.inputs);
+  d["MLP_ENCODED"] = s.encodings.empty() ? "0" : "1";
   d["MLP_OUT"] = num(s.outputs);
-  d["MLP_IN4"] = num(chunks4(s.inputs));
+  d["MLP_IN4"] = num(chunks4(s.width(0)));
   d["MLP_OUT4"] = num(chunks4(s.outputs));
   d["MLP_LAYERS"] = num(s.layers());
   d["MLP_PARAMS"] = num(s.param_count());
@@ -148,6 +150,7 @@ gl::Includes mlp_includes(const MlpSpec& s) {
   gl::Includes src;
   src["mlp/act_hidden.glsl"] = activation_glsl_source(s.activation);
   src["mlp/act_output.glsl"] = s.output_activation == s.activation ? "" : activation_glsl_source(s.output_activation);
+  src["mlp/enc_net.glsl"] = s.encodings.empty() ? "" : encoding_glsl_source(s.encodings, s.inputs);
   return src;
 }
 
@@ -170,7 +173,7 @@ TrainLayout plan_train_layout(const MlpSpec& spec, int batch, std::size_t max_sh
   const std::size_t PQ = padded_chunks(spec), B = std::size_t(batch);
   // Per sample: the units of every block, the deltas of every block but the inputs.
   const std::size_t UQ = unit_chunks(spec);
-  const std::size_t units_q = B * (UQ + (UQ - std::size_t(chunks4(spec.inputs))));
+  const std::size_t units_q = B * (UQ + (UQ - std::size_t(chunks4(spec.width(0)))));
   const std::size_t fixed = 16 + 8 * B + 64;  // flags, the loss reduction, a margin for the compiler's padding
   TrainLayout t;
   if (per_net && PQ <= kPerNetMaxChunks) {

@@ -40,7 +40,8 @@ void pack_padded(const MlpSpec& spec, const float* flat, float* padded);
 void unpack_padded(const MlpSpec& spec, const float* padded, float* flat);
 
 // Architecture defines shared by every mlp shader:
-//   MLP_IN, MLP_OUT, MLP_LAYERS, MLP_PARAMS (flat floats), MLP_PQ (padded vec4s), MLP_UQ (unit
+//   MLP_IN (the first layer's input width: encoded), MLP_RAW_IN (an input row's width),
+//   MLP_ENCODED (1 when inputs are encoded: shaders/include/mlp/encoding.glsl), MLP_OUT, MLP_LAYERS, MLP_PARAMS (flat floats), MLP_PQ (padded vec4s), MLP_UQ (unit
 //   vec4s), MLP_IN4, MLP_OUT4, MLP_OUT_UQ (first vec4 of the outputs), MLP_MAX_WIDTH, MLP_COLOR,
 //   the activations (MLP_ACT_F(z), MLP_ACT_GRAD_Z(z), MLP_ACT_FROM_OUTPUT, MLP_ACT_GRAD_A(a) and
 //   the same with MLP_OUT_ACT_ for the output layer: shaders/include/mlp/activation.glsl),
@@ -53,7 +54,8 @@ void unpack_padded(const MlpSpec& spec, const float* padded, float* flat);
 //   lists the runs backpropagation passes through (all but the first layer's), last first.
 gl::Defines mlp_defines(const MlpSpec& spec);
 // The in-memory #includes (gl::Includes) every mlp shader needs with mlp_defines: the GLSL of the network's
-// activations from the registry (mlp/act_hidden.glsl, mlp/act_output.glsl).
+// activations from the registry (mlp/act_hidden.glsl, mlp/act_output.glsl) and its encodings
+// (mlp/enc_net.glsl, read by mlp/encoding.glsl).
 gl::Includes mlp_includes(const MlpSpec& spec);
 
 // Which fused training kernel and where it keeps each array. With `per_net` allowed (a CPU

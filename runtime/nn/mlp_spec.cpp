@@ -25,7 +25,7 @@ double MlpSpec::param(Activation a) const {
 }
 
 int MlpSpec::width(int i) const {
-  if (i == 0) return inputs;
+  if (i == 0) return encodings.empty() ? inputs : encoded_width(encodings, inputs);
   if (i == layers()) return outputs;
   return hidden.at(size_t(i - 1));
 }
@@ -43,7 +43,7 @@ std::size_t MlpSpec::bias_offset(int layer) const {
 std::size_t MlpSpec::param_count() const { return weight_offset(layers()); }
 
 int MlpSpec::max_width() const {
-  int m = std::max(inputs, outputs);
+  int m = std::max(width(0), outputs);
   for (int w : hidden) m = std::max(m, w);
   return m;
 }
@@ -55,6 +55,18 @@ void MlpSpec::validate() const {
                                   std::to_string(v));
   };
   range("inputs", inputs, 1, kMaxWidth);
+  int end = 0;
+  for (const InputEncoding& e : encodings) {
+    if (e.offset < end || e.width < 1 || e.width > inputs || e.offset > inputs - e.width)
+      throw std::invalid_argument("encoding of input '" + e.input + "': columns " + std::to_string(e.offset + 1) + ".." +
+                                  std::to_string(e.offset + e.width) + " overlap another encoded input or lie past the " +
+                                  std::to_string(inputs) + " inputs");
+    check(e);
+    end = e.offset + e.width;
+  }
+  if (!encodings.empty() && width(0) > kMaxEncodedWidth)
+    throw std::invalid_argument("the encoded inputs are " + std::to_string(width(0)) + " wide, at most " +
+                                std::to_string(kMaxEncodedWidth) + " (fewer bands, bins or a lower degree)");
   range("outputs", outputs, 1, kMaxWidth);
   range("number of hidden layers", int(hidden.size()), 1, kMaxHidden);
   for (size_t i = 0; i < hidden.size(); ++i)
@@ -80,7 +92,7 @@ std::string MlpSpec::describe() const {
     size_t j = i;
     while (j < hidden.size() && hidden[j] == hidden[i]) ++j;
     s += " -> " + std::to_string(hidden[i]);
-    if (j - i > 1) s += "x" + std::to_string(j - i);
+    if (j - i > 1) s.append("x").append(std::to_string(j - i));
     i = j;
   }
   s += " -> " + std::to_string(outputs) + ", " + activation_name(activation);
@@ -91,11 +103,15 @@ std::string MlpSpec::describe() const {
       s += " " + short_number(param(output_activation));
   }
   if (color != shading::ColorSpace::rgb) s += std::string(", ") + shading::color_space_name(color);
+  if (!encodings.empty()) {
+    for (std::size_t i = 0; i < encodings.size(); ++i) s += (i ? ", " : "; ") + encodings[i].describe();
+    s += " -> " + std::to_string(width(0)) + " inputs";
+  }
   return s + ")";
 }
 
 bool MlpSpec::same_shape(const MlpSpec& o) const {
-  return inputs == o.inputs && hidden == o.hidden && outputs == o.outputs && activation == o.activation &&
+  return inputs == o.inputs && encodings == o.encodings && hidden == o.hidden && outputs == o.outputs && activation == o.activation &&
          output_activation == o.output_activation && param(activation) == o.param(activation) &&
          param(output_activation) == o.param(output_activation);
 }

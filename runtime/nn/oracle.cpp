@@ -17,7 +17,10 @@ Activation layer_activation(const MlpSpec& s, int l) {
 }  // namespace
 
 std::vector<double> forward(const MlpSpec& spec, const std::vector<double>& p, const double* x, Trace* trace) {
-  std::vector<double> a(x, x + spec.inputs), z;
+  // a[0]: the raw inputs encoded (nn/encoding.h), in double.
+  std::vector<double> a(std::size_t(spec.width(0))), z;
+  if (spec.encodings.empty()) a.assign(x, x + spec.inputs);
+  else encode_row(spec.encodings, spec.inputs, x, a.data());
   if (trace) {
     trace->a.assign(1, a);
     trace->z.assign(1, {});

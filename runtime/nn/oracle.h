@@ -16,8 +16,9 @@ double activate(Activation a, double param, double z);
 // d activation / dz, from the pre-activation z.
 double activate_grad(Activation a, double param, double z);
 
-// Activations of every layer for one sample: a[0] = x, a[layers()] = output; z likewise
-// (z[0] unused).
+// Activations of every layer for one sample: a[0] = x encoded (spec.width(0) numbers; x itself
+// when nothing is encoded), a[layers()] = output; z likewise (z[0] unused). x holds spec.inputs
+// raw numbers.
 struct Trace {
   std::vector<std::vector<double>> z, a;
 };

@@ -364,10 +364,38 @@ function exp.rep(width, count)
   return t
 end
 
+-- sn.mlp's encodings ({ uv = { "frequency", bands = 8 } }) in a form JSON holds (configs are
+-- written to run.json and compared as JSON): the name under `name`; and back.
+function exp.encoding_to_config(enc)
+  if not enc then return nil end
+  local out = {}
+  for input, e in pairs(enc) do
+    if type(e) == "table" then
+      local c = {}
+      for k, v in pairs(e) do if k ~= 1 then c[k] = v end end
+      c.name = e[1]
+      out[input] = c
+    else
+      out[input] = { name = e }
+    end
+  end
+  return out
+end
+local function encoding_from_config(c)
+  if not c then return nil end
+  local out = {}
+  for input, e in pairs(c) do
+    local t = { e.name }
+    for k, v in pairs(e) do if k ~= "name" then t[k] = v end end
+    out[input] = t
+  end
+  return out
+end
+
 -- A run: { id, config }. The config holds the network, the training settings and the dataset's
 -- description, so a finished run is reused only for exactly the same experiment.
 -- o = { id, hidden, seed, activation, slope, omega, alpha, output_activation, init, color, epochs,
---       batch, adam, data (desc), keep_params }
+--       batch, adam, data (desc), keep_params, encoding (sn.mlp's, by input name) }
 function exp.run(o)
   local adam = o.adam or exp.adam
   return {
@@ -380,6 +408,7 @@ function exp.run(o)
       omega = o.omega,                       -- nil (the defaults) keeps older configs' keys
       alpha = o.alpha,
       output_activation = o.output_activation,
+      encoding = exp.encoding_to_config(o.encoding),  -- nil (none) keeps older configs' keys
       init = o.init,
       color = o.data.color,
       seed = o.seed,
@@ -411,7 +440,7 @@ function exp.make_net(c)
   return sn.mlp { inputs = exp.input_count(c.data.inputs), hidden = c.hidden, outputs = c.outputs,
                   activation = c.activation, slope = c.slope, omega = c.omega, alpha = c.alpha,
                   output_activation = c.output_activation, init = c.init, color = c.color, seed = c.seed,
-                  input_names = c.data.inputs }
+                  input_names = c.data.inputs, encoding = encoding_from_config(c.encoding) }
 end
 
 -- The trained network of a finished record (needs keep_params in its config).

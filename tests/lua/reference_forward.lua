@@ -1,5 +1,7 @@
 -- A double-precision forward pass written in Lua from net:params() (the flat layout: per layer,
--- weights [out][in] then biases [out]): the reference the gl tests compare against.
+-- weights [out][in] then biases [out]): the reference the gl tests compare against. A network
+-- that encodes inputs reads them through tests/lua/encoding_reference.lua.
+local encoding = require "encoding_reference"
 local M = {}
 
 -- Lua twins of user-defined activations, by name (tests add theirs).
@@ -26,7 +28,8 @@ end
 -- params: the parameters in double (a table in net:params()' layout), default the net's own.
 function M.forward(net, x, params)
   local s, p = net:spec(), params or net:params()
-  local widths = { s.inputs }
+  local widths = { s.encoded_inputs }
+  if next(s.encoding) then x = encoding.encode(net, x) end
   for _, w in ipairs(s.hidden) do widths[#widths + 1] = w end
   widths[#widths + 1] = s.outputs
   local a, off = x, 0

@@ -87,6 +87,19 @@ for i, c in ipairs(cases) do
   print(("%-50s %-13s |gl - cpu| <= %.2g"):format(tostring(net), g[1], worst))
 end
 
+-- Input encodings: the cpu path encodes each pixel's inputs as the trainers encode rows.
+local encoded = {
+  { normal = { "sh", degree = 4 }, view = { "frequency", bands = 4 } },
+  { normal = { "oneblob", bins = 8 }, view = { "triangle_wave", bands = 3 } },
+}
+for i, enc in ipairs(encoded) do
+  local net = sn.mlp { inputs = attrs, encoding = enc, hidden = { 8, 8 }, outputs = 3, seed = 20 + i }
+  net.layers[#net.layers].bias = { 0.4, 0.5, 0.6 }
+  local g = gbuffers[i][2]
+  local worst = both(net, g, tostring(net) .. " on " .. gbuffers[i][1])
+  print(("%-50s %-13s |gl - cpu| <= %.2g"):format(tostring(net), gbuffers[i][1], worst))
+end
+
 -- "auto": the cpu kernels on llvmpipe, saying so; the fragment shader where asked for storage
 -- weights; the image is the cpu one.
 local net = sn.mlp { inputs = 6, hidden = { 8, 8 }, outputs = 3, seed = 9, input_names = attrs }

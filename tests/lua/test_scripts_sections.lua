@@ -29,7 +29,7 @@ dir = C.tmpdir("s45")
 C.ok("scripts/sec_4_5_textures.lua", { "--quick", "--out", dir })
 C.assert_files(dir, { "figures/textures.png", "table.md", "table.csv", "run.json" })
 rows = C.csv(dir .. "/table.csv")
-assert(#rows == 2, "textured Phong and texture")
+assert(#rows == 4, "textured Phong, texture, texture frequency-encoded into two networks")
 C.assert_range(rows, "val_mse", 1e-7, 0.05, "textures")
 C.assert_range(rows, "detail_kept", 0, 1.5, "textures")
 assert(rows[1].thesis_val_mse == thesis.sec_4_5.textured_phong and rows[2].thesis_val_mse == thesis.sec_4_5.texture_from_position_uv,
@@ -39,5 +39,15 @@ for _, r in ipairs(rows) do
 end
 -- The texture from position + UV comes out blurry: most of its gradient energy is gone.
 assert(rows[2].detail_kept < 0.5, "texture detail lost: " .. rows[2].detail_kept)
+assert(rows[2].texture_learned == "no", rows[2].texture_learned)
+-- Frequency-encoded, the same network draws the checks: a lower image error, the coarse detail kept.
+for i = 3, 4 do
+  assert(rows[i].encoding:find("frequency"), rows[i].encoding)
+  assert(rows[i].image_mse < 0.6 * rows[2].image_mse, ("%s: image MSE %g vs %g unencoded"):format(rows[i].case, rows[i].image_mse, rows[2].image_mse))
+  assert(rows[i].coarse_detail_kept > 2 * rows[2].coarse_detail_kept and rows[i].coarse_detail_kept > 0.5,
+         rows[i].case .. ": coarse detail " .. rows[i].coarse_detail_kept)
+  assert(rows[i].texture_learned ~= "no", rows[i].texture_learned)
+end
+assert(rows[1].texture_learned == "n/a", "(a) is not a texture case")
 C.rm(dir)
 print("section scripts: ok")

@@ -9,6 +9,7 @@
 
 #include <unistd.h>
 
+#include "io/hash.h"
 #include "nn/checkpoint.h"
 #include "nn/oracle.h"
 
@@ -157,6 +158,57 @@ TEST(Checkpoint, ActivationParametersRoundTrip) {
   EXPECT_EQ(back.spec.describe(), "mlp(3 -> 4 -> 2, sine 30, out elu 0.35)");
   EXPECT_TRUE(back.spec.same_shape(net.spec));
   EXPECT_EQ(back.params, net.params);
+}
+
+// Input encodings travel in the "encodings" section; a network that uses none writes none (the
+// file an older build reads), and an encoding this build does not know is a clear error.
+TEST(Checkpoint, EncodingsRoundTrip) {
+  MlpSpec s;
+  s.inputs = 9;  // normal, view, uv, roughness
+  s.hidden = {10, 7};
+  s.outputs = 3;
+  InputEncoding sh = default_encoding(Encoding::sh, "normal", 0, 3);
+  sh.n = 3;
+  InputEncoding tri = default_encoding(Encoding::triangle_wave, "uv", 6, 2);
+  tri.include_input = true;
+  InputEncoding blob = default_encoding(Encoding::oneblob, "roughness", 8, 1);
+  blob.n = 12, blob.lo = 0.05, blob.hi = 1.0;
+  s.encodings = {sh, tri, blob};
+  Mlp net(s, Init::xavier, 3);
+  net.input_names = {"normal", "view", "uv", "roughness"};
+  net.best_params = net.params;
+  net.best_epoch = 2;
+  auto path = scratch("encoded.snmlp");
+  save_checkpoint(net, path.string());
+  Mlp back = load_checkpoint(path.string());
+  EXPECT_EQ(back.spec.describe(),
+            "mlp(9 -> 10 -> 7 -> 3, tanh; normal: sh 3, uv: triangle_wave 6 + input, roughness: oneblob 12 on [0.05, 1] "
+            "-> 38 inputs)");
+  EXPECT_EQ(back.spec.encodings, net.spec.encodings);
+  EXPECT_TRUE(back.spec.same_shape(net.spec));
+  EXPECT_EQ(back.params, net.params);
+  EXPECT_EQ(back.best_params, net.best_params);
+  std::vector<double> p(net.params.begin(), net.params.end());
+  const double x[9] = {0, 0.6, 0.8, 1, 0, 0, 0.25, 0.5, 0.3};
+  EXPECT_EQ(oracle::forward(back.spec, p, x), oracle::forward(net.spec, p, x));
+
+  const std::string good = read_all(path);
+  EXPECT_NE(good.find("encodings"), std::string::npos);
+  save_checkpoint(sample_net(), scratch("plain.snmlp").string());
+  EXPECT_EQ(read_all(scratch("plain.snmlp")).find("encodings"), std::string::npos);
+  // The payload renamed to an unknown encoding (same length), its checksum made good again.
+  std::string renamed = good;
+  const std::size_t at = renamed.find("triangle_wave");
+  ASSERT_NE(at, std::string::npos);
+  renamed.replace(at, 13, "triangle_wavy");
+  const uint64_t sum = io::fnv1a(renamed.substr(24));
+  std::memcpy(renamed.data() + 16, &sum, 8);
+  auto bad = scratch("unknown_encoding.snmlp");
+  write_all(bad, renamed);
+  EXPECT_NE(load_error(bad).find("the network encodes input 'uv' with 'triangle_wavy', which this build does not know "
+                                 "(valid: identity, frequency, oneblob, sh, triangle_wave)"),
+            std::string::npos)
+      << load_error(bad);
 }
 
 TEST(Checkpoint, FailedSaveLeavesTheOldFile) {

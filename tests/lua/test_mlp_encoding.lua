@@ -1,0 +1,163 @@
+-- Input encodings (sn.mlp{ encoding = {...} }) against the Lua reference of each one
+-- (tests/lua/encoding_reference.lua): what the first layer reads (net:encode, the double twins),
+-- net:forward in a compute shader, the fragment shader of net:render, and two training steps on
+-- the cpu and the gl backend against a Lua reference that takes its gradients by central
+-- differences of the reference forward pass; checkpoints; net:spec() and tostring.
+local sn = require "shadenet"
+local encoding = require "encoding_reference"
+local forward = require("reference_forward").forward
+
+local cases = {
+  { uv = { "frequency", bands = 4 } },
+  { uv = { "frequency", bands = 9, include_input = false }, normal = "sh" },
+  { uv = { "oneblob", bins = 8 } },
+  { view = { "oneblob", bins = 6, range = { -1.2, 1.1 } } },
+  { normal = { "sh", degree = 1 }, view = { "sh", degree = 3 } },
+  { uv = "triangle_wave" },
+  { uv = { "triangle_wave", bands = 5, include_input = true }, view = "identity" },
+}
+
+-- Rows of (unit normal, unit view, uv) and a target with detail in uv. Inputs rounded to float,
+-- as the network reads them (high frequency bands magnify a difference of 3e-8 in uv 800 times).
+local f32 = require("ffi").new("float[1]")
+local function float(v)
+  f32[0] = v
+  return f32[0]
+end
+local function unit(a, b, c)
+  local l = math.sqrt(a * a + b * b + c * c)
+  return float(a / l), float(b / l), float(c / l)
+end
+local x, y = {}, {}
+for i = 1, 24 do
+  local n1, n2, n3 = unit(math.sin(i * 1.3), math.cos(i * 0.7), 0.4 + 0.3 * math.sin(i))
+  local v1, v2, v3 = unit(math.cos(i * 2.1), 0.5, math.sin(i * 0.37))
+  local u, v = float((i * 0.137) % 1), float((i * 0.291) % 1)
+  x[i] = { n1, n2, n3, v1, v2, v3, u, v }
+  y[i] = { 0.5 + 0.3 * math.sin(11 * u) * n3, 0.4 + 0.2 * v1 * v, 0.3 + 0.2 * math.cos(7 * v) }
+end
+-- 16 rows, 8 training: one minibatch of every training row per epoch, so the order does not matter
+local data = sn.dataset { x = { unpack(x, 1, 16) }, y = { unpack(y, 1, 16) }, split = 0.5, seed = 2,
+                          input_names = { "normal", "view", "uv" } }
+
+local function max_abs(a, b)
+  assert(#a == #b, ("%d numbers against %d"):format(#a, #b))
+  local m = 0
+  for i = 1, #a do m = math.max(m, math.abs(a[i] - b[i])) end
+  return m
+end
+
+local function make(enc, seed)
+  return sn.mlp { inputs = { "normal", "view", "uv" }, encoding = enc, hidden = { 8, 6 }, outputs = 3, seed = seed }
+end
+
+for k, enc in ipairs(cases) do
+  local net = make(enc, k)
+  local label = tostring(net)
+  -- what the first layer reads: the twins against the Lua reference
+  local width = net:spec().encoded_inputs
+  for i = 1, #x do
+    local want, got = encoding.encode(net, x[i]), net:encode(x[i])
+    assert(#want == width, label .. ": encoded width")
+    -- (oneblob's reference integrates numerically: within 1e-11)
+    assert(max_abs(got, want) < 1e-10, ("%s: net:encode row %d off by %g"):format(label, i, max_abs(got, want)))
+  end
+  -- net:forward (a compute shader, float) against the reference in double
+  local outs, worst = net:forward(x), 0
+  for i = 1, #x do worst = math.max(worst, max_abs(outs[i], forward(net, x[i]))) end
+  assert(worst < 1e-5, ("%s: net:forward vs the reference: %g"):format(label, worst))
+
+  -- two steps, both backends, against central differences of the reference (eps = 1: each step
+  -- is about lr * g, so the comparison sees every gradient's size)
+  local p0 = net:params()
+  local rows = {}
+  for i = 1, 8 do rows[i] = { data:row("train", i) } end
+  local function loss(p)
+    local sum = 0
+    for _, r in ipairs(rows) do
+      local out = forward(net, r[1], p)
+      for o = 1, 3 do sum = sum + (out[o] - r[2][o]) ^ 2 end
+    end
+    return sum / (8 * 3)
+  end
+  local lr, b1, b2, eps = 0.1, 0.8, 0.9, 1
+  local p, m, v = {}, {}, {}
+  for j = 1, #p0 do p[j], m[j], v[j] = p0[j], 0, 0 end
+  for t = 1, 2 do
+    local g = {}
+    for j = 1, #p do
+      local keep, h = p[j], 1e-6
+      p[j] = keep + h
+      local up = loss(p)
+      p[j] = keep - h
+      local down = loss(p)
+      p[j] = keep
+      g[j] = (up - down) / (2 * h)
+    end
+    for j = 1, #p do
+      m[j] = b1 * m[j] + (1 - b1) * g[j]
+      v[j] = b2 * v[j] + (1 - b2) * g[j] * g[j]
+      p[j] = p[j] - lr * (m[j] / (1 - b1 ^ t)) / (math.sqrt(v[j] / (1 - b2 ^ t)) + eps)
+    end
+  end
+  local moved = max_abs(p, p0)
+  assert(moved > 1e-3, label .. ": two steps moved the parameters: " .. moved)
+  for _, backend in ipairs { "cpu", "gl" } do
+    local copy = net:clone()
+    local r = sn.train { nets = copy, data = data, epochs = 2, batch = 8, adam = { lr = lr, eps = eps }, backend = backend }[1]
+    assert(r.steps == 2 and math.abs(r.train_loss[1] - loss(p0)) < 1e-6 * loss(p0),
+           ("%s on %s: the same rows and forward pass (%g vs %g)"):format(label, backend, r.train_loss[1], loss(p0)))
+    local off = max_abs(copy:params(), p)
+    assert(off < 1e-5, ("%s on %s: two steps vs the central-difference reference: %g"):format(label, backend, off))
+    assert(tostring(copy) == label)
+  end
+  print(("%s: encode, forward (%.1g) and two steps on cpu and gl match the reference"):format(label, worst))
+
+  -- checkpoints keep the encodings
+  local path = os.tmpname() .. ".snmlp"
+  net:save(path)
+  local back = sn.load(path)
+  os.remove(path)
+  assert(tostring(back) == label, tostring(back))
+  assert(max_abs(back:forward(x[3]), outs[3]) == 0, label .. ": the loaded network computes the same")
+end
+
+-- net:spec() and tostring
+local net = sn.mlp { inputs = { "normal", "view", "uv" }, encoding = { uv = { "frequency", bands = 8 }, normal = { "sh", degree = 4 } },
+                     hidden = { 32, 32 }, outputs = 3 }
+assert(tostring(net) == "mlp(8 -> 32x2 -> 3, tanh; normal: sh 4, uv: frequency 8 -> 53 inputs)", tostring(net))
+local s = net:spec()
+assert(s.inputs == 8 and s.encoded_inputs == 53 and net.layers[1].inputs == 53)
+assert(s.encoding.uv[1] == "frequency" and s.encoding.uv.bands == 8 and s.encoding.uv.include_input == true)
+assert(s.encoding.normal[1] == "sh" and s.encoding.normal.degree == 4 and s.encoding.view == nil)
+assert(table.concat(net:inputs(), " ") == "normal view uv")
+assert(table.concat(sn.encoding.names(), " ") == "identity frequency oneblob sh triangle_wave")
+-- the same network from a count and input_names
+local again = sn.mlp { inputs = 8, input_names = { "normal", "view", "uv" }, hidden = { 32, 32 },
+                       encoding = { uv = { "frequency", bands = 8 }, normal = "sh" } }
+assert(tostring(again) == tostring(net))
+
+-- rendering: the fragment shader against the reference at covered pixels
+local scene = sn.scene { mesh = "meshes/test_blob.glb", size = { 48, 32 }, views = { count = 1, elevation = 15 } }
+local g = scene:gbuffer { view = 1, attributes = { "uv", "normal", "view" } }
+local normals, views, uvs = g:read("normal"), g:read("view"), g:read("uv")
+local w, h = g:size()
+for k, enc in ipairs(cases) do
+  local shown = make(enc, 10 + k)
+  shown.layers[3].bias = { 0.4, 0.5, 0.6 }
+  local img, checked, rworst = shown:render(g), 0, 0
+  for py = 1, h do
+    for px = 1, w do
+      local n = normals:get(px, py)
+      if n[4] > 0.5 then
+        local vv, uv, c = views:get(px, py), uvs:get(px, py), img:get(px, py)
+        local out = forward(shown, { n[1], n[2], n[3], vv[1], vv[2], vv[3], uv[1], uv[2] })
+        for i = 1, 3 do rworst = math.max(rworst, math.abs(c[i] - out[i])) end
+        checked = checked + 1
+      end
+    end
+  end
+  assert(checked > 100 and rworst < 1e-5, ("%s render: %d pixels, worst %g"):format(tostring(shown), checked, rworst))
+end
+print("render matches the reference for every case")
+print("ok")
