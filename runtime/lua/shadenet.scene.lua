@@ -11,14 +11,16 @@ local function type_name(x)
 end
 
 -- scene:render(model_or_net [, { view = 1, pose = 1, camera = Camera, light = {dir, color}, size = {w, h},
---                                values = { condition = x } }])
+--                                values = { condition = x }, nonfinite = "warn" | "error" | "ignore" }])
 --   -> Image (RGBA float, alpha = coverage)
 --   a "Lighting" model: the ground truth over the view's G-buffer (sn.render_truth);
 --   an "Mlp": the network's own fragment pass over the attributes it reads (net:render).
 -- `camera` replaces the scene's view (live mode's orbit), `light` the scene's light for the
 -- ground truth (a network shows what it learned), `size` the scene's image size, `values` a
--- conditioned network's condition inputs (net:conditions()).
-local RENDER_KEYS = { view = true, pose = true, camera = true, light = true, size = true, values = true }
+-- conditioned network's condition inputs (net:conditions()), `nonfinite` what a network's NaN or
+-- infinite pixels give (net:render: a warning, an error, nothing).
+local RENDER_KEYS = { view = true, pose = true, camera = true, light = true, size = true, values = true,
+                      nonfinite = true }
 function Scene.render(scene, what, options)
   options = options or {}
   if type(options) ~= "table" then
@@ -26,7 +28,7 @@ function Scene.render(scene, what, options)
   end
   for k in pairs(options) do
     if not RENDER_KEYS[k] then
-      error("scene:render: unknown option '" .. tostring(k) .. "' (valid: camera, light, pose, size, values, view)", 2)
+      error("scene:render: unknown option '" .. tostring(k) .. "' (valid: camera, light, nonfinite, pose, size, values, view)", 2)
     end
   end
   if options.view ~= nil and options.camera ~= nil then error("scene:render: give 'view' or 'camera', not both", 2) end
@@ -36,6 +38,9 @@ function Scene.render(scene, what, options)
   if kind == "Lighting" then
     if options.values then
       error("scene:render: 'values' sets a conditioned network's inputs; for a lighting model use model:with{...}", 2)
+    end
+    if options.nonfinite then
+      error("scene:render: 'nonfinite' is for networks (net:render), not lighting models", 2)
     end
     where.attributes = what:attributes()
     local g = scene:gbuffer(where)
@@ -59,7 +64,7 @@ function Scene.render(scene, what, options)
     end
     where.attributes = attributes
     local g = scene:gbuffer(where)
-    return what:render(g, options.values and { values = options.values } or nil)
+    return what:render(g, { values = options.values, nonfinite = options.nonfinite })
   end
   error("scene:render: a lighting model (sn.lighting.*) or a network (sn.mlp) expected, got " .. kind, 2)
 end

@@ -1,5 +1,6 @@
 #include "nn/cpu_trainer.h"
 
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <string>
@@ -48,6 +49,10 @@ class CpuBackend : public Backend {
     parallel_for(count, threads_, [&](int i) {
       work[i] = std::make_unique<CpuNet>(nets[i]->spec, nets[i]->params.data());
       work[i]->set_loss(cfg.loss);
+      const double given = cfg.initial_val_mse_of(std::size_t(i));
+      results[i].initial_val_mse =
+          std::isnan(given) ? work[i]->mse(data.val_x.data(), data.val_y.data(), data.val_count()) : given;
+      work[i]->set_sample_limit(cfg.divergence.sample_limit(results[i].initial_val_mse, nets[i]->spec.outputs));
     });
 
     const uint32_t n = uint32_t(data.train_count());
@@ -56,6 +61,7 @@ class CpuBackend : public Backend {
     std::vector<AdamStep> adam(static_cast<std::size_t>(steps));
     long long t = 0;  // Adam's step counter, the same for every net of the run
     for (int e = 0; e < cfg.epochs; ++e) {
+      if (cfg.stop_requested()) break;
       EpochShuffle perm(cfg.seed, uint32_t(e), n);
       for (std::size_t k = 0; k < rows.size(); ++k) rows[k] = perm(uint32_t(k));
       for (long long s = 0; s < steps; ++s) adam[std::size_t(s)] = AdamStep::at(cfg, ++t);
@@ -67,10 +73,15 @@ class CpuBackend : public Backend {
         CpuNet& net = *work[i];
         double sum = 0;
         for (long long s = 0; s < steps; ++s) {
+          if (cfg.stop_requested()) {
+            r.interrupted = StopPoint{e + 1, s};
+            return;
+          }
           double loss;
+          DivergenceKind why = DivergenceKind::nonfinite;
           if (!net.step(data.train_x.data(), data.train_y.data(), rows.data() + s * cfg.batch, cfg.batch,
-                        adam[std::size_t(s)], &loss)) {
-            r.diverged = Divergence{e + 1, s + 1};
+                        adam[std::size_t(s)], &loss, &why)) {
+            r.diverged = Divergence{e + 1, s + 1, why};
             return;
           }
           sum += loss;
@@ -81,7 +92,7 @@ class CpuBackend : public Backend {
             cfg.loss.kind == LossKind::l2 ? val : net.mean_loss(data.val_x.data(), data.val_y.data(), data.val_count());
         std::vector<float> p(net.spec().param_count());
         net.get_params(p.data());
-        r.end_epoch(cfg.loss, sum / double(steps), val, val_loss, p.data(), p.size());
+        r.end_epoch(cfg, steps, sum / double(steps), val, val_loss, p.data(), p.size());
         finished[i] = 1;
       });
       if (progress)
@@ -89,6 +100,10 @@ class CpuBackend : public Backend {
           if (finished[i])
             progress({i, e + 1, results[i].train_loss.back(), results[i].val_mse.back(), results[i].val_loss.back()});
     }
+    // Stopped between epochs: every net still training ends after its last finished epoch.
+    if (cfg.stop_requested())
+      for (NetResult& r : results)
+        if (!r.diverged && !r.interrupted && r.epochs_done() < cfg.epochs) r.interrupted = StopPoint{r.epochs_done() + 1, 0};
     for (int i = 0; i < count; ++i) {
       results[i].final_params.resize(nets[i]->spec.param_count());
       work[i]->get_params(results[i].final_params.data());
