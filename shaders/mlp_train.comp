@@ -7,7 +7,9 @@
 //  - llvmpipe ends every loop of an invocation after 65,535 iterations in total; the sentinel
 //    loop at the end notices, and the dispatch commits nothing (status 3);
 //  - a step whose loss or deltas are not finite stops the net before its update (status 1,
-//    the parameters committed are the last finite ones);
+//    the parameters committed are the last finite ones); so does one in which a sample's squared
+//    error is above the net's sample_limit (status 4; a non-finite loss goes first, then this,
+//    then non-finite deltas, as runtime/nn/cpu_net.cpp checks them);
 //  - a step whose new parameters are not finite commits nothing (status 2): the host re-runs
 //    the chunk one step short of it.
 #include "mlp/activation.glsl"
@@ -60,6 +62,8 @@ shared vec4 sh_d[B * UD];
 #endif
 
 shared uint sh_bad;   // some sample's loss or delta is not finite: stop before the update
+shared uint sh_bad_loss;  // some sample's loss is not finite
+shared uint sh_big;   // some sample's squared error is above the limit
 shared uint sh_late;  // some new parameter is not finite
 shared uint sh_cut;   // the loop limiter ended a loop early
 shared double sh_loss[B];
@@ -155,6 +159,8 @@ void main() {
   }
   if (lane == 0) {
     sh_bad = 0u;
+    sh_bad_loss = 0u;
+    sh_big = 0u;
     sh_late = 0u;
     sh_cut = 0u;
   }
@@ -162,6 +168,7 @@ void main() {
 
   uint t = ctl[net].t0;
   const uint first_row = ctl[net].first_row;
+  const float sample_limit = ctl[net].sample_limit;
   double loss_sum = 0.0lf;
   int done = 0, status = 0;
   for (int step = 0; step < limit; ++step) {
@@ -184,23 +191,25 @@ void main() {
 
     // d/dy of the mean loss over the minibatch's samples and outputs (mlp/loss.glsl), then backward.
     bool ok = true;
-    float loss = 0.0;
+    float loss = 0.0, se = 0.0;
     for (int q = 0; q < MLP_OUT4; ++q) {
       vec4 y = A4(lane, MLP_OUT_UQ + q), target = vec4(0.0);
       for (int c = 0; c < 4; ++c)
         if (4 * q + c < MLP_OUT) target[c] = train_y[row * uint(MLP_OUT) + uint(4 * q + c)];
       vec4 e = mix(vec4(0.0), y - target, mlp_live(q, MLP_OUT));
       loss += dot(mlp_loss(e, target), vec4(1.0));
+      se += dot(e, e);
       vec4 dq = (1.0 / float(B * MLP_OUT)) * mlp_loss_grad(e, target) * MLP_OUT_ACT_DERIV(y, D4(lane, MLP_OUT_UQ + q));
       ok = ok && mlp_finite(dq);
       D4(lane, MLP_OUT_UQ + q) = dq;
     }
-    ok = ok && mlp_finite(loss);
+    if (!mlp_finite(loss)) sh_bad_loss = 1u;
+    if (MLP_SQUARED_ERROR(loss, se) > sample_limit) sh_big = 1u;
     MLP_INNER_RUN_TABLE_REVERSED(BACKWARD_RUN)
     if (!ok) sh_bad = 1u;
     SYNC();
-    if (sh_bad != 0u && u_probe == 0) {
-      status = 1;
+    if ((sh_bad | sh_bad_loss | sh_big) != 0u && u_probe == 0) {
+      status = sh_bad_loss != 0u ? 1 : (sh_big != 0u ? 4 : 1);
       break;
     }
 
@@ -225,7 +234,7 @@ void main() {
   if (count < u_sentinel) sh_cut = 1u;
   sh_loss[lane] = loss_sum;
   SYNC();
-  const bool commit = sh_cut == 0u && status < 2 && u_probe == 0;
+  const bool commit = sh_cut == 0u && status != 2 && u_probe == 0;
   if (lane == 0) {
     ctl[net].done = done;
     ctl[net].status = sh_cut != 0u ? 3 : status;

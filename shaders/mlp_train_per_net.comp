@@ -12,7 +12,9 @@
 // reach the state buffer only when the dispatch is sound, as in mlp_train.comp:
 //  - llvmpipe ends every loop of an invocation after 65,535 iterations in total; the sentinel
 //    loop at the end notices, and the dispatch commits nothing (status 3);
-//  - a step whose loss or deltas are not finite stops the net before its update (status 1);
+//  - a step whose loss or deltas are not finite stops the net before its update (status 1); so
+//    does one in which a sample's squared error is above the net's sample_limit (status 4; a
+//    non-finite loss goes first, then this, then non-finite deltas, as the cpu backend checks);
 //  - a step whose new parameters are not finite commits nothing (status 2).
 #include "mlp/activation.glsl"
 #include "mlp/encoding.glsl"
@@ -59,25 +61,27 @@ void main() {
 
   uint t = ctl[net].t0;
   const uint first_row = ctl[net].first_row;
+  const float sample_limit = ctl[net].sample_limit;
   double loss_sum = 0.0lf;
   int done = 0, status = 0;
   for (int step = 0; step < limit; ++step) {
     MLP_R_ZERO
-    bool ok = true;
+    bool ok = true, loss_ok = true, big = false;
     double step_loss = 0.0lf;
     for (int s = 0; s < B; ++s) {
       const int row = int(texelFetch(u_order, int(first_row) + step * B + s).r);
-      float loss = 0.0;
+      float loss = 0.0, se = 0.0;
       MLP_R_INPUTS(row)
       MLP_R_FORWARD
       MLP_R_OUTPUT(row)
-      ok = ok && mlp_finite(loss);
+      loss_ok = loss_ok && mlp_finite(loss);
+      big = big || MLP_SQUARED_ERROR(loss, se) > sample_limit;
       MLP_R_BACKWARD
       MLP_R_ACCUMULATE
       step_loss += double(loss);
     }
-    if (!ok && u_probe == 0) {
-      status = 1;
+    if (!(ok && loss_ok && !big) && u_probe == 0) {
+      status = !loss_ok ? 1 : (big ? 4 : 1);
       break;
     }
     t += 1u;
@@ -101,7 +105,7 @@ void main() {
   ctl[net].done = done;
   ctl[net].status = cut ? 3 : status;
   ctl[net].remaining = count;
-  if (!cut && status < 2 && u_probe == 0) {
+  if (!cut && status != 2 && u_probe == 0) {
     ctl[net].loss_sum += loss_sum;
     // One store of each kind per pass, the value picked by selects: written out straight, the
     // stores (each a loop over the lanes) took LLVM most of the compile time.

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "io/limits.h"
 #include "io/read_file.h"
 
 namespace fs = std::filesystem;
@@ -21,12 +22,11 @@ std::function<void(const std::string&)>& file_observer() {
   return f;
 }
 
-// Shader sources are small: 16 MiB is far beyond any real one and keeps /dev/zero out.
-constexpr std::uint64_t kMaxShaderBytes = std::uint64_t(1) << 24;
-
+// Shader sources are small: io::limits().shader_bytes (16 MiB until raised) is far beyond any
+// real one and keeps /dev/zero out.
 std::string read_file(const fs::path& p) {
   if (file_observer()) file_observer()(fs::absolute(p).string());  // before reading: a missing file is watched too
-  return io::read_file(p.string(), "shader file", kMaxShaderBytes);
+  return io::read_file(p.string(), "shader file", io::limits().shader_bytes, "shader_bytes");
 }
 
 std::vector<std::string> split_lines(const std::string& text) {

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "io/atomic_write.h"
+#include "io/limits.h"
 
 namespace sn::io {
 
@@ -25,11 +26,15 @@ Image read_from(std::unique_ptr<OIIO::ImageInput> in, const std::string& what) {
   if (spec.depth > 1)
     throw std::runtime_error(what + ": a volume image (" + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
                              "x" + std::to_string(spec.depth) + "); shadenet reads 2-D images");
-  if (uint64_t(spec.width) * uint64_t(spec.height) > kMaxImagePixels || spec.nchannels > kMaxImageChannels)
-    throw std::runtime_error(what + ": " + std::to_string(spec.width) + "x" + std::to_string(spec.height) + "x" +
-                             std::to_string(spec.nchannels) + " is above the limit of " +
-                             std::to_string(kMaxImagePixels) + " pixels and " + std::to_string(kMaxImageChannels) +
-                             " channels (io/image.h)");
+  const Limits lim = limits();
+  const uint64_t pixels = uint64_t(spec.width) * uint64_t(spec.height);
+  if (pixels > lim.image_pixels)
+    throw std::runtime_error(what + ": " + std::to_string(spec.width) + "x" + std::to_string(spec.height) + " is " +
+                             std::to_string(pixels) + " pixels, above the limit of " + std::to_string(lim.image_pixels) +
+                             raise_hint("image_pixels"));
+  if (uint64_t(spec.nchannels) > lim.image_channels)
+    throw std::runtime_error(what + ": " + std::to_string(spec.nchannels) + " channels, above the limit of " +
+                             std::to_string(lim.image_channels) + raise_hint("image_channels"));
   Image img(spec.width, spec.height, spec.nchannels);
   bool ok = true;
   if (spec.tile_width == 0) {

@@ -7,10 +7,9 @@
 
 namespace sn::io {
 
-// What a loaded image may be: 2^28 pixels (16384 x 16384; 4 GiB as float RGBA) and 64 channels.
-// Larger is an error naming the file, before any pixel is read; volumes (depth > 1) are refused.
-constexpr uint64_t kMaxImagePixels = uint64_t(1) << 28;
-constexpr int kMaxImageChannels = 64;
+// What a loaded image may be: io::limits().image_pixels and image_channels (2^28 pixels, 64
+// channels until raised, io/limits.h). Larger is an error naming the file, before any pixel is
+// read; volumes (depth > 1) are refused.
 
 struct Image {
   int width = 0, height = 0, channels = 0;

@@ -1,5 +1,7 @@
 #include "io/read_file.h"
 
+#include "io/limits.h"
+
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -10,7 +12,8 @@
 
 namespace sn::io {
 
-std::string read_file(const std::string& path, const std::string& what, std::uint64_t max_bytes) {
+std::string read_file(const std::string& path, const std::string& what, std::uint64_t max_bytes, const char* limit) {
+  if (max_bytes == 0) max_bytes = limits().file_bytes;
   const std::string head = "cannot read " + what + " '" + path + "': ";
   // O_NONBLOCK: opening a FIFO would otherwise wait for a writer; regular files ignore it.
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
@@ -28,7 +31,8 @@ std::string read_file(const std::string& path, const std::string& what, std::uin
   }
   if (std::uint64_t(st.st_size) > max_bytes) {
     ::close(fd);
-    throw std::runtime_error(head + std::to_string(st.st_size) + " bytes, above the limit of " + std::to_string(max_bytes));
+    throw std::runtime_error(head + std::to_string(st.st_size) + " bytes, above the limit of " + std::to_string(max_bytes) +
+                             " bytes" + raise_hint(limit));
   }
   std::string bytes(std::size_t(st.st_size), '\0');
   std::size_t done = 0;

@@ -6,11 +6,11 @@
 
 namespace sn::io {
 
-// The default cap on what one read may hold.
-constexpr std::uint64_t kMaxReadBytes = std::uint64_t(1) << 30;  // 1 GiB
-
 // Throws "cannot read <what> '<path>': <cause>" for a missing file, a directory or other
 // non-regular file (/dev/zero, a FIFO), a file larger than `max_bytes`, or a failed read.
-std::string read_file(const std::string& path, const std::string& what = "file", std::uint64_t max_bytes = kMaxReadBytes);
+// `limit` names the io/limits.h field `max_bytes` came from, for the error's hint. Without
+// them: limits().file_bytes.
+std::string read_file(const std::string& path, const std::string& what = "file", std::uint64_t max_bytes = 0,
+                      const char* limit = "file_bytes");
 
 }  // namespace sn::io

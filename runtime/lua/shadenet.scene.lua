@@ -11,7 +11,8 @@ local function type_name(x)
 end
 
 -- scene:render(model_or_net [, { view = 1, pose = 1, camera = Camera, light = {dir, color}, size = {w, h},
---                                values = { condition = x }, backend = "auto", target = Target }])
+--                                values = { condition = x }, backend = "auto", target = Target,
+--                                nonfinite = "warn" | "error" | "ignore" }])
 --   -> Image (RGBA float, alpha = coverage), or the Target given
 --   a "Lighting" model: the ground truth over the view's G-buffer (sn.render_truth);
 --   an "Mlp": the network over the attributes it reads (net:render; sn.render_info() says which
@@ -20,9 +21,10 @@ end
 -- ground truth (a network shows what it learned), `size` the scene's image size, `values` a
 -- conditioned network's condition inputs (net:conditions()), `backend` a network's renderer
 -- ("gl", "cpu" or "auto", net:render's), `target` a Target the network is drawn into instead of
--- a new Image (net:render's; what a window shows).
+-- a new Image (net:render's; what a window shows), `nonfinite` what a network's NaN or infinite
+-- pixels give (net:render's: a warning, an error, nothing).
 local RENDER_KEYS = { view = true, pose = true, camera = true, light = true, size = true, values = true,
-                      backend = true, target = true }
+                      backend = true, target = true, nonfinite = true }
 function Scene.render(scene, what, options)
   options = options or {}
   if type(options) ~= "table" then
@@ -30,7 +32,7 @@ function Scene.render(scene, what, options)
   end
   for k in pairs(options) do
     if not RENDER_KEYS[k] then
-      error("scene:render: unknown option '" .. tostring(k) .. "' (valid: backend, camera, light, pose, size, target, values, view)", 2)
+      error("scene:render: unknown option '" .. tostring(k) .. "' (valid: backend, camera, light, nonfinite, pose, size, target, values, view)", 2)
     end
   end
   if options.view ~= nil and options.camera ~= nil then error("scene:render: give 'view' or 'camera', not both", 2) end
@@ -41,9 +43,9 @@ function Scene.render(scene, what, options)
     if options.values then
       error("scene:render: 'values' sets a conditioned network's inputs; for a lighting model use model:with{...}", 2)
     end
-    if options.backend or options.target then
-      error("scene:render: 'backend' and 'target' are a network's (net:render); a lighting model is drawn by its "
-            .. "shader into a new Image", 2)
+    if options.backend or options.target or options.nonfinite then
+      error("scene:render: 'backend', 'target' and 'nonfinite' are a network's (net:render); a lighting model is "
+            .. "drawn by its shader into a new Image", 2)
     end
     where.attributes = what:attributes()
     local g = scene:gbuffer(where)
@@ -69,7 +71,8 @@ function Scene.render(scene, what, options)
     end
     where.attributes = attributes
     local g = scene:gbuffer(where)
-    local img = what:render(g, { values = options.values, backend = options.backend, target = options.target })
+    local img = what:render(g, { values = options.values, backend = options.backend, target = options.target,
+                                 nonfinite = options.nonfinite })
     g:release()
     return img
   end

@@ -1,11 +1,13 @@
 // sn.fs.*: the few file-system calls results writers need and plain Lua lacks (creating
 // folders, listing one, checking a path, writing a file whole), through std::filesystem and
-// io/atomic_write rather than a shell or io.open.
+// io/atomic_write rather than a shell or io.open; and sn.limits, the loaders' resource limits
+// (io/limits.h).
 #include <algorithm>
 #include <filesystem>
 #include <system_error>
 
 #include "io/atomic_write.h"
+#include "io/limits.h"
 #include "io/numbered_path.h"
 #include "lua/binding.h"
 #include "lua/module.h"
@@ -74,9 +76,53 @@ int w_claim(lua_State* L) {
   return 1;
 }
 
+// The limits sn.limits reads and sets, by name.
+struct LimitField {
+  const char* name;
+  std::uint64_t io::Limits::*field;
+};
+constexpr LimitField kLimitFields[] = {
+    {"file_bytes", &io::Limits::file_bytes},         {"shader_bytes", &io::Limits::shader_bytes},
+    {"image_pixels", &io::Limits::image_pixels},     {"image_channels", &io::Limits::image_channels},
+    {"node_placements", &io::Limits::node_placements}, {"mesh_vertices", &io::Limits::mesh_vertices},
+    {"mesh_indices", &io::Limits::mesh_indices},
+};
+
+void push_limits(lua_State* L, const io::Limits& l) {
+  lua_createtable(L, 0, int(std::size(kLimitFields)));
+  for (const LimitField& f : kLimitFields) {
+    lua_pushnumber(L, double(l.*f.field));
+    lua_setfield(L, -2, f.name);
+  }
+}
+
+// sn.limits([{ file_bytes = n, shader_bytes = n, image_pixels = n, image_channels = n,
+//              node_placements = n, mesh_vertices = n, mesh_indices = n }]) -> the limits before
+// the call (all of them, so sn.limits(old) puts them back). Process-wide; each a whole number
+// in 1..2^53.
+int w_limits(lua_State* L) {
+  const io::Limits old = io::limits();
+  if (!lua_isnoneornil(L, 1)) {
+    Options o(L, 1, "sn.limits", {"file_bytes", "shader_bytes", "image_pixels", "image_channels", "node_placements",
+                                  "mesh_vertices", "mesh_indices"});
+    io::Limits next = old;
+    for (const LimitField& f : kLimitFields) {
+      if (!o.has(f.name)) continue;
+      const long long v = o.integer(f.name);
+      if (v < 1) throw Error(o.where(f.name) + " must be at least 1, got " + std::to_string(v));
+      next.*f.field = std::uint64_t(v);
+    }
+    io::set_limits(next);
+  }
+  push_limits(L, old);
+  return 1;
+}
+
 }  // namespace
 
 void open_files(lua_State* L) {
+  lua_pushcfunction(L, wrap<w_limits>);
+  lua_setfield(L, -2, "limits");
   static const luaL_Reg fns[] = {SN_FN("mkdir", w_mkdir), SN_FN("list", w_list), SN_FN("exists", w_exists), SN_FN("write", w_write),
                                  SN_FN("claim", w_claim),
                                  {nullptr, nullptr}};

@@ -1,8 +1,11 @@
 // The GPU side of the "Mlp" type: net:forward(samples) in a compute shader and net:render(gbuffer)
 // in a fragment shader, added to the methods open_mlp defined; and the "gl" training backend,
 // registered for sn.train.
-#include <map>
 #include <cmath>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <vector>
 
 #include "gl/buffer.h"
 #include "gl/render_target.h"
@@ -51,6 +54,49 @@ std::vector<float> rows_from_table(lua_State* L, int idx, int inputs, bool* nest
   return x;
 }
 
+// What net:forward and net:render do with outputs that are NaN or infinite (a diverged network,
+// weights that overflow): `nonfinite = "warn"` (default: one line on stderr, once per network
+// version), "error", or "ignore".
+enum class NonFinite { warn, error, ignore };
+
+NonFinite read_nonfinite(lua_State* L, int idx, const char* what) {
+  if (lua_isnoneornil(L, idx)) return NonFinite::warn;
+  Options o(L, idx, what, {"nonfinite"});
+  return NonFinite(o.choice("nonfinite", {"warn", "error", "ignore"}, 0));
+}
+
+void report_nonfinite(const std::shared_ptr<Mlp>& net, const char* what, std::size_t bad, std::size_t total,
+                      const char* unit, const std::string& first, NonFinite mode) {
+  if (bad == 0 || mode == NonFinite::ignore) return;
+  const std::string msg = std::string(what) + ": " + std::to_string(bad) + " of " + std::to_string(total) + " " + unit +
+                          " are NaN or infinite" + (first.empty() ? "" : " (the first: " + first + ")") + "; the weights of " + net->spec.describe() +
+                          " may have diverged";
+  if (mode == NonFinite::error) throw Error(msg);
+  // Once per network version and caller: a live view renders the same network every frame.
+  struct Warned {
+    std::weak_ptr<Mlp> net;
+    uint64_t version;
+    std::string what;
+  };
+  static std::vector<Warned> warned;
+  std::erase_if(warned, [](const Warned& w) { return w.net.expired(); });
+  for (const Warned& w : warned)
+    if (w.net.lock() == net && w.version == net->version && w.what == what) return;
+  warned.push_back({net, net->version, what});
+  std::fprintf(stderr, "warning: %s (nonfinite = \"error\" makes this an error, \"ignore\" silences it)\n", msg.c_str());
+}
+
+// Counts the non-finite values of rows x outputs floats.
+void check_outputs(const std::shared_ptr<Mlp>& net, const float* y, std::size_t n, NonFinite mode) {
+  if (mode == NonFinite::ignore) return;
+  const std::size_t outputs = std::size_t(net->spec.outputs);
+  std::size_t bad = 0, first = 0;
+  for (std::size_t j = 0; j < n; ++j)
+    if (!std::isfinite(y[j]) && bad++ == 0) first = j;
+  report_nonfinite(net, "net:forward", bad, n, "outputs",
+                   "row " + std::to_string(first / outputs + 1) + " output " + std::to_string(first % outputs + 1), mode);
+}
+
 void push_row(lua_State* L, const float* y, int n) {
   lua_createtable(L, n, 0);
   for (int i = 0; i < n; ++i) {
@@ -59,14 +105,26 @@ void push_row(lua_State* L, const float* y, int n) {
   }
 }
 
-// net:forward(x) evaluates the network in a compute shader:
+// net:forward(x [, { nonfinite = "warn" | "error" | "ignore" }]) evaluates the network in a
+// compute shader:
 //   x a float32 Buffer of rows x inputs numbers -> a float32 Buffer of rows x outputs;
 //   x a Dataset [, "val" (default) | "train"]   -> a float32 Buffer of that set's outputs;
 //   x a table of inputs numbers (one sample)    -> a table of outputs numbers;
 //   x a table of such tables                    -> a table of tables.
+// Outputs that are NaN or infinite are counted: a warning (default), an error or nothing.
 int w_forward(lua_State* L) {
   auto net = check_shared<Mlp>(L, 1, kType);
   const int in = net->spec.inputs, out = net->spec.outputs;
+  // The options follow x (and a dataset's set name).
+  const int opt = test_type(L, 2, "Dataset") && lua_type(L, 3) == LUA_TSTRING ? 4 : 3;
+  const NonFinite mode = read_nonfinite(L, opt, "net:forward");
+  auto checked = [&](std::shared_ptr<gl::Buffer> y) {
+    if (mode != NonFinite::ignore) {
+      const std::vector<float> v = y->download_floats();
+      check_outputs(net, v.data(), v.size(), mode);
+    }
+    return y;
+  };
   if (test_type(L, 2, "Buffer")) {
     gl::Buffer& x = check<gl::Buffer>(L, 2, "Buffer");
     if (!gl::elem_info(x.type()).is_float) throw Error("net:forward: the buffer must hold floats, got " + std::string(gl::elem_info(x.type()).name));
@@ -80,14 +138,13 @@ int w_forward(lua_State* L) {
       if (!std::isfinite(v[j]))
         throw Error("net:forward: buffer row " + std::to_string(j / std::size_t(in) + 1) + " input " +
                     std::to_string(j % std::size_t(in) + 1) + " is " + (std::isnan(v[j]) ? "NaN" : "infinite"));
-    push(L, nn::gl_forward(*net, x, x.components() / std::size_t(in)), "Buffer");
+    push(L, checked(nn::gl_forward(*net, x, x.components() / std::size_t(in))), "Buffer");
     return 1;
   }
   if (test_type(L, 2, "Dataset")) {
     const data::Dataset& d = check<data::Dataset>(L, 2, "Dataset");
-    const bool train = lua_isnoneornil(L, 3)
-                           ? false
-                           : check_choice(check_string(L, 3, "net:forward set"), {"val", "train"}, "dataset set") == 1;
+    const bool train = opt == 3 ? false
+                                : check_choice(check_string(L, 3, "net:forward set"), {"val", "train"}, "dataset set") == 1;
     if (d.inputs != in)
       throw Error("net:forward: the dataset has " + std::to_string(d.inputs) + " inputs, " + net->spec.describe() +
                   " takes " + std::to_string(in));
@@ -95,13 +152,14 @@ int w_forward(lua_State* L) {
     if (x.empty()) throw Error(std::string("net:forward: the dataset's ") + (train ? "train" : "val") + " set is empty");
     gl::Buffer xb(gl::ElemType::float32, x.size());
     xb.upload(x.data(), 0, x.size());
-    push(L, nn::gl_forward(*net, xb, x.size() / std::size_t(in)), "Buffer");
+    push(L, checked(nn::gl_forward(*net, xb, x.size() / std::size_t(in))), "Buffer");
     return 1;
   }
   if (lua_istable(L, 2)) {
     bool nested = false;
     auto x = rows_from_table(L, 2, in, &nested);
     auto y = nn::gl_forward(*net, x);
+    check_outputs(net, y.data(), y.size(), mode);
     if (!nested) {
       push_row(L, y.data(), out);
     } else {
@@ -130,7 +188,7 @@ LastRender& last_render() {
 }
 
 // net:render(gbuffer [, { backend = "auto", frames = 1, weights = "auto", values = { condition = x },
-//                         target = Target }])
+//                         target = Target, nonfinite = "warn" | "error" | "ignore" }])
 //   -> Image (RGBA float); with `target`: that Target
 // The network as the lighting model of every covered pixel, reading the G-buffer attributes
 // named by net:inputs() and, for a conditioned network, each condition's value from `values`
@@ -139,7 +197,9 @@ LastRender& last_render() {
 // many times first (for timing; the image is the last); `weights = "storage"` reads the
 // parameters from a storage buffer even where a uniform buffer would hold them (gl only).
 // `target` (the G-buffer's size) receives the render in attachment 1 instead of a new Image: no
-// read-back (what a window shows).
+// read-back (what a window shows). Covered pixels with a NaN or infinite value are counted and
+// reported as net:forward reports outputs (`nonfinite`); gl drawing into a target reads nothing
+// back, so it counts nothing.
 // sn.render_info() says which backend drew it and why (one return value, so that
 // f(net:render(g)) composes).
 int w_render(lua_State* L) {
@@ -147,8 +207,10 @@ int w_render(lua_State* L) {
   const scene::GBuffer& g = check<scene::GBuffer>(L, 2, "GBuffer");
   nn::RenderOptions ro;
   int target_at = 0;  // stack index of the `target` option
+  NonFinite mode = NonFinite::warn;
   if (!lua_isnoneornil(L, 3)) {
-    Options o(L, 3, "net:render", {"backend", "frames", "weights", "values", "target"});
+    Options o(L, 3, "net:render", {"backend", "frames", "weights", "values", "target", "nonfinite"});
+    mode = NonFinite(o.choice("nonfinite", {"warn", "error", "ignore"}, 0));
     if (o.has("values")) {
       int vi = o.push("values");
       if (!lua_istable(L, vi)) throw Error(o.where("values") + ": { condition = number, ... } expected");
@@ -184,9 +246,22 @@ int w_render(lua_State* L) {
     r = nn::render_network(net, g, ro);
     push(L, std::make_shared<io::Image>(std::move(r.image)), "Image");
   }
-  last_render() = LastRender{nn::render_backend_name(r.backend), r.reason, r.nonfinite,
-                             !(target_at && r.backend == nn::RenderBackend::gl), r.backend == nn::RenderBackend::cpu,
-                             r.cpu_times};
+  const bool counted = !(target_at && r.backend == nn::RenderBackend::gl);
+  last_render() = LastRender{nn::render_backend_name(r.backend), r.reason, r.nonfinite, counted,
+                             r.backend == nn::RenderBackend::cpu, r.cpu_times};
+  if (counted && r.nonfinite) {
+    std::string first;  // where the first one is, when the image is on the host
+    if (!target_at) {
+      const io::Image& img = check<io::Image>(L, -1, "Image");
+      const float* p = img.pixels.data();
+      for (std::size_t i = 0; first.empty() && i < img.pixels.size(); i += 4)
+        if (p[i + 3] > 0.0f && !(std::isfinite(p[i]) && std::isfinite(p[i + 1]) && std::isfinite(p[i + 2])))
+          first = "pixel (" + std::to_string(i / 4 % std::size_t(img.width)) + ", " +
+                  std::to_string(i / 4 / std::size_t(img.width)) + ")";
+    }
+    report_nonfinite(net, "net:render", r.nonfinite, std::size_t(g.width) * std::size_t(g.height), "pixels", first,
+                     mode);
+  }
   return 1;
 }
 

@@ -1,13 +1,14 @@
 // The terminal a long script talks to: sn.isatty(), sn.terminal_width(), and a gentle Ctrl-C
-// (sn.catch_interrupt([on]) / sn.interrupted()). Without it SIGINT kills the process at once; a
-// sweep that catches it finishes the runs in flight, writes them, and stops; a second Ctrl-C
-// still stops at once.
+// (sn.catch_interrupt([on]) / sn.interrupted(); sn.train's stop, lua/interrupt.h). Without them
+// SIGINT kills the process at once; a sweep that catches it stops the training in flight at its
+// next step, keeps the runs finished before, and stops; a second Ctrl-C still stops at once.
 #include <csignal>
 #include <cstdio>
 #include <sys/ioctl.h>
 #include <unistd.h>
 
 #include "lua/binding.h"
+#include "lua/interrupt.h"
 #include "lua/module.h"
 
 namespace sn::lua {
@@ -15,15 +16,61 @@ namespace sn::lua {
 namespace {
 
 volatile std::sig_atomic_t g_interrupts = 0;
+// The running sn.train's stop flag, or nullptr. A pointer atomic is lock-free on every platform
+// we build on, so the handler may read it.
+std::atomic<std::atomic<bool>*> g_train_stop{nullptr};
+static_assert(std::atomic<std::atomic<bool>*>::is_always_lock_free && std::atomic<bool>::is_always_lock_free,
+              "the SIGINT handler needs lock-free atomics");
+
+void say(const char* msg, std::size_t n) {
+  ssize_t ignored = write(STDERR_FILENO, msg, n);
+  (void)ignored;
+}
 
 extern "C" void on_sigint(int) {
   g_interrupts = g_interrupts + 1;
   // The second Ctrl-C gets the default action back: the process ends now.
   std::signal(SIGINT, SIG_DFL);
-  static const char msg[] = "\ninterrupt: finishing the runs in flight, then stopping (Ctrl-C again to stop now)\n";
-  ssize_t ignored = write(STDERR_FILENO, msg, sizeof msg - 1);
-  (void)ignored;
+  if (std::atomic<bool>* stop = g_train_stop.load()) {
+    stop->store(true);
+    static const char msg[] = "\ninterrupt: stopping training at the next step (Ctrl-C again to stop now)\n";
+    say(msg, sizeof msg - 1);
+  } else {
+    static const char msg[] = "\ninterrupt: finishing the work in flight, then stopping (Ctrl-C again to stop now)\n";
+    say(msg, sizeof msg - 1);
+  }
 }
+
+void set_handler(void (*handler)(int)) {
+  struct sigaction sa {};
+  sa.sa_handler = handler;
+  sigemptyset(&sa.sa_mask);
+  sa.sa_flags = SA_RESTART;
+  sigaction(SIGINT, &sa, nullptr);
+}
+
+void (*current_handler())(int) {
+  struct sigaction sa {};
+  sigaction(SIGINT, nullptr, &sa);
+  return (sa.sa_flags & SA_SIGINFO) ? nullptr : sa.sa_handler;
+}
+
+}  // namespace
+
+TrainInterrupt::TrainInterrupt(std::atomic<bool>* stop) : previous_(g_train_stop.exchange(stop)) {
+  if (current_handler() == SIG_DFL) {
+    set_handler(on_sigint);
+    installed_ = true;
+  }
+}
+
+TrainInterrupt::~TrainInterrupt() {
+  g_train_stop.store(previous_);
+  // Still ours and not fired: the default action back, as before sn.train.
+  if (installed_ && current_handler() == on_sigint) set_handler(SIG_DFL);
+}
+
+namespace {
 
 int stream_fd(lua_State* L, int idx) {
   if (lua_isnoneornil(L, idx)) return STDOUT_FILENO;
@@ -54,14 +101,15 @@ int w_catch_interrupt(lua_State* L) {
   bool on = lua_isnoneornil(L, 1) ? true : lua_toboolean(L, 1) != 0;
   if (on) {
     g_interrupts = 0;
-    std::signal(SIGINT, on_sigint);
+    set_handler(on_sigint);
   } else {
-    std::signal(SIGINT, SIG_DFL);
+    set_handler(SIG_DFL);
   }
   return 0;
 }
 
-// sn.interrupted() -> true once Ctrl-C was pressed after sn.catch_interrupt()
+// sn.interrupted() -> true once a Ctrl-C was caught (by sn.catch_interrupt() or a running
+// sn.train) since the last sn.catch_interrupt()
 int w_interrupted(lua_State* L) {
   lua_pushboolean(L, g_interrupts > 0);
   return 1;

@@ -1,8 +1,10 @@
 // sn.train{...}: one training job over many networks (nn/train.h). Everything is checked before
 // any work; the result is one table per network, in the order of `nets`.
+#include <atomic>
 #include <cstdio>
 
 #include "lua/binding.h"
+#include "lua/interrupt.h"
 #include "lua/module.h"
 #include "data/dataset.h"
 #include "nn/train.h"
@@ -48,11 +50,20 @@ void push_result(lua_State* L, const nn::NetResult& r, const nn::JobResult& job)
   set_number(L, "wall_time", r.wall_time);
   set_number(L, "sample_steps_per_s", r.sample_steps_per_s);
   set_number(L, "steps", double(r.steps));
+  set_number(L, "initial_val_mse", r.initial_val_mse);
+  set_number(L, "epochs", r.epochs_done());
   if (r.diverged) {
-    lua_createtable(L, 0, 2);
+    lua_createtable(L, 0, 3);
     set_number(L, "epoch", r.diverged->epoch);
     set_number(L, "step", double(r.diverged->step));
+    set_string(L, "reason", nn::divergence_kind_name(r.diverged->kind));
     lua_setfield(L, -2, "diverged");
+  }
+  if (r.interrupted) {
+    lua_createtable(L, 0, 2);
+    set_number(L, "epoch", r.interrupted->epoch);
+    set_number(L, "step", double(r.interrupted->step));
+    lua_setfield(L, -2, "interrupted");
   }
   push_numbers(L, r.dead_units);
   lua_setfield(L, -2, "dead_units");
@@ -63,7 +74,10 @@ void push_result(lua_State* L, const nn::NetResult& r, const nn::JobResult& job)
 // sn.train{ nets = {net, ...} | net, data = dataset, epochs = 20, batch = 8,
 //           adam = { lr = 2.5e-4, beta1 = 0.8, beta2 = 0.9, eps = 1e-7 }, seed = 1,
 //           backend = "auto" | "cpu" | "gl", keep = "last" | "best", progress = function(e),
-//           loss = "l2" | "l1" | "relative_l2" | "huber" | { "huber", delta = 1 } }
+//           loss = "l2" | "l1" | "relative_l2" | "huber" | { "huber", delta = 1 },
+//           divergence_factor = 100 }
+// The first Ctrl-C, or progress returning "stop", ends the job at the next step boundary; the
+// results say `interrupted = { epoch, step }` (lua/interrupt.h, nn/train.h).
 nn::Loss read_loss(lua_State* L, int idx) {
   const char* where = "sn.train option 'loss'";
   if (lua_isnil(L, idx)) return nn::Loss{};
@@ -90,7 +104,8 @@ nn::Loss read_loss(lua_State* L, int idx) {
 }
 
 int w_train(lua_State* L) {
-  Options o(L, 1, "sn.train", {"nets", "data", "epochs", "batch", "adam", "seed", "backend", "keep", "progress", "loss"});
+  Options o(L, 1, "sn.train", {"nets", "data", "epochs", "batch", "adam", "seed", "backend", "keep", "progress", "loss",
+                                     "divergence_factor"});
   nn::TrainJob job;
   // Keep every network (and the dataset) referenced from this stack frame while training runs.
   std::vector<std::shared_ptr<nn::Mlp>> hold;
@@ -133,6 +148,7 @@ int w_train(lua_State* L) {
     c.eps = a.number("eps", c.eps);
   }
   lua_pop(L, 1);
+  c.divergence.factor = o.number("divergence_factor", c.divergence.factor);
 
   try {
     c.loss = read_loss(L, o.push("loss"));
@@ -150,13 +166,17 @@ int w_train(lua_State* L) {
   job.backend = backend;
   job.keep = o.choice("keep", {"last", "best"}, 0) == 0 ? nn::Keep::last : nn::Keep::best;
 
+  // One stop flag for Ctrl-C and progress's "stop" (the job reads it at every step boundary).
+  std::atomic<bool> stop{false};
+  job.stop = &stop;
   int progress = o.push("progress");
   if (!lua_isnil(L, progress)) {
     if (!lua_isfunction(L, progress)) throw Error("sn.train option 'progress': function expected, got " + type_name_at(L, progress));
-    // Runs on this thread between epochs; a Lua error inside stops the job (pcall, then a C++
-    // exception: a longjmp must not cross the trainer's frames).
+    // Runs on this thread between epochs. Returning "stop" sets the stop flag; a Lua error
+    // inside stops the job too, which keeps what was trained and then raises it (pcall, then a
+    // C++ exception: a longjmp must not cross the trainer's frames).
     const bool l2 = c.loss.kind == nn::LossKind::l2;
-    job.progress = [L, progress, l2](const nn::ProgressEvent& e) {
+    job.progress = [L, progress, l2, &stop](const nn::ProgressEvent& e) {
       lua_pushvalue(L, progress);
       lua_createtable(L, 0, 5);
       set_number(L, "net", e.net + 1);
@@ -165,11 +185,21 @@ int w_train(lua_State* L) {
       if (l2) set_number(L, "train_mse", e.train_loss);
       set_number(L, "val_loss", e.val_loss);
       set_number(L, "val_mse", e.val_mse);
-      if (lua_pcall(L, 1, 0, 0) != 0) {
+      if (lua_pcall(L, 1, 1, 0) != 0) {
         std::string msg = lua_isstring(L, -1) ? lua_tostring(L, -1) : "(error object is not a string)";
         lua_pop(L, 1);
         throw Error("sn.train: the progress function failed: " + msg);
       }
+      const bool is_stop = lua_type(L, -1) == LUA_TSTRING && std::string(lua_tostring(L, -1)) == "stop";
+      if (!is_stop && !lua_isnil(L, -1)) {
+        std::string got = type_name_at(L, -1);
+        if (lua_type(L, -1) == LUA_TSTRING) got.append(" '").append(lua_tostring(L, -1)).append("'");
+        lua_pop(L, 1);
+        throw Error("sn.train: the progress function returned " + got +
+                    "; return \"stop\" to end training, or nothing to go on");
+      }
+      lua_pop(L, 1);
+      if (is_stop) stop.store(true);
     };
   }
 
@@ -178,7 +208,11 @@ int w_train(lua_State* L) {
   } catch (const std::invalid_argument& e) {
     throw Error(std::string("sn.train: ") + e.what());
   }
-  nn::JobResult r = nn::train(job);
+  nn::JobResult r;
+  {
+    TrainInterrupt ctrl_c(&stop);
+    r = nn::train(job);
+  }
   lua_pop(L, 1);  // progress
 
   if (backend == "auto") {

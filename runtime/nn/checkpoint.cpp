@@ -19,6 +19,7 @@
 
 #include "io/atomic_write.h"
 #include "io/hash.h"
+#include "io/read_file.h"
 
 namespace sn::nn {
 
@@ -68,11 +69,27 @@ struct Reader {
   }
 };
 
+// The first non-finite value of `v`, named as scripts index it ("" when all are finite).
+std::string first_nonfinite(const MlpSpec& spec, const std::vector<float>& v) {
+  for (std::size_t j = 0; j < v.size(); ++j)
+    if (!std::isfinite(v[j]))
+      return spec.param_name(j) + " (parameter " + std::to_string(j + 1) + " of " + std::to_string(v.size()) + ") is " +
+             (std::isnan(v[j]) ? "NaN" : "infinite");
+  return "";
+}
+
 }  // namespace
 
 void save_checkpoint(const Mlp& net, const std::string& path) {
   net.spec.validate();
   if (net.params.size() != net.spec.param_count()) throw std::invalid_argument("save: parameter count does not match the spec");
+  // A diverged network is not a checkpoint: it would load as NaN renders with nothing said.
+  if (std::string bad = first_nonfinite(net.spec, net.params); !bad.empty())
+    throw std::runtime_error("cannot save checkpoint " + path + ": the network's " + bad +
+                             " (a diverged network; net:restore_best() or train it again)");
+  if (net.best_epoch > 0)
+    if (std::string bad = first_nonfinite(net.spec, net.best_params); !bad.empty())
+      throw std::runtime_error("cannot save checkpoint " + path + ": the best-epoch snapshot's " + bad);
   Writer p;
   p.put(uint32_t(net.spec.inputs));
   p.put(uint32_t(net.spec.outputs));
@@ -155,9 +172,8 @@ void save_checkpoint(const Mlp& net, const std::string& path) {
 }
 
 Mlp load_checkpoint(const std::string& path) {
-  std::ifstream f(path, std::ios::binary);
-  if (!f) throw std::runtime_error("cannot open checkpoint " + path + ": " + std::strerror(errno));
-  const std::string bytes((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  // Regular files only, within the read limit (io/read_file.h): /dev/zero would be read forever.
+  const std::string bytes = io::read_file(path, "checkpoint");
   if (bytes.size() < kHeader || std::memcmp(bytes.data(), kMagic, sizeof kMagic) != 0)
     throw std::runtime_error(path + ": not a shadenet network checkpoint (bad magic)");
   Reader h{bytes, sizeof kMagic, path};
@@ -202,11 +218,16 @@ Mlp load_checkpoint(const std::string& path) {
   r.need(count > payload.size() / sizeof(float) ? payload.size() + 1 : std::size_t(count) * sizeof(float), "parameters");
   net.params.resize(count);
   for (auto& v : net.params) v = r.get<float>("parameters");
+  // A valid checksum says the bytes are as written, not that the numbers are usable.
+  if (std::string bad = first_nonfinite(s, net.params); !bad.empty())
+    throw std::runtime_error(path + ": checkpoint refused: its " + bad);
   net.best_epoch = int(r.get<uint32_t>("best snapshot"));
   if (net.best_epoch > 0) {
     net.best_val_mse = r.get<double>("best snapshot");
     net.best_params.resize(count);
     for (auto& v : net.best_params) v = r.get<float>("best snapshot");
+    if (std::string bad = first_nonfinite(s, net.best_params); !bad.empty())
+      throw std::runtime_error(path + ": checkpoint refused: its best-epoch snapshot's " + bad);
   }
   std::map<std::string, std::string> defs;  // "NAME glsl" / "NAME grad" -> text
   while (r.pos != payload.size()) {

@@ -8,6 +8,7 @@
 
 #include <atomic>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <cstdlib>
 #include <cstring>
@@ -244,7 +245,11 @@ SN_INLINE v8 hidden_grad(const View& V, int l, int i) {
 struct LossArgs {
   LossKind kind;
   float delta;
+  float sample_limit = std::numeric_limits<float>::infinity();  // a sample's squared error above it: exploded
 };
+// step_impl's verdicts (nn/trainer.h's order: a non-finite loss, then a sample above the limit,
+// then a non-finite update).
+enum StepVerdict : int { kStepOk = 0, kStepNonfinite = 1, kStepExploded = 2 };
 SN_INLINE void loss_both(const LossArgs& L, const v8& e, const v8& t, v8& lv, v8& lg) {
   switch (L.kind) {
     case LossKind::l1:
@@ -281,7 +286,7 @@ SN_INLINE v8i lane_mask(int n) {
 }
 
 template <class Isa, int H>
-SN_INLINE bool step_impl(const View& V, const float* x, const float* y, const uint32_t* rows, int batch, const AdamStep& c,
+SN_INLINE int step_impl(const View& V, const float* x, const float* y, const uint32_t* rows, int batch, const AdamStep& c,
                const LossArgs& lf, double* loss_out) {
   const Layout& S = V.S;
   const float* p = V.p();
@@ -290,9 +295,13 @@ SN_INLINE bool step_impl(const View& V, const float* x, const float* y, const ui
   const int outputs = S.out[S.L - 1];
   const float scale = 2.0f / float(batch * outputs);  // l2's: d mean(e^2) / d y'
   const float mean = 1.0f / float(batch * outputs);
-  v8 sq = splat(0.0f);
+  // Each sample's loss (its outputs' sum) in float, the minibatch's sum in double, as the gl
+  // kernel does: a step is refused by the same rule on both (nn/trainer.h).
+  double loss_sum = 0;
+  bool finite = true, too_big = false;
   for (int first = 0; first < batch; first += kLanes) {
     const int n = batch - first < kLanes ? batch - first : kLanes;
+    v8 sq = splat(0.0f), se = splat(0.0f);
     gather_inputs(V, x, rows, std::size_t(first), n);
     forward_block<H, true>(V);
     // Output error: d = dloss/dy' * act'(y').
@@ -311,9 +320,16 @@ SN_INLINE bool step_impl(const View& V, const float* x, const float* y, const ui
         v8 lv, lg;
         loss_both(lf, diff, t, lv, lg);
         sq += lv;
+        se += diff * diff;
         g = mean * lg;
       }
       d[o] = S.output == int(Builtin::linear) ? g : g * V.dz(S.L)[o];
+    }
+    if (lf.kind == LossKind::l2) se = sq;
+    for (int k = 0; k < n; ++k) {
+      finite = finite && std::isfinite(sq[k]);
+      too_big = too_big || se[k] > lf.sample_limit;
+      loss_sum += double(sq[k]);
     }
     int cur = 0;
     for (int l = S.L - 1; l >= 0; --l) {
@@ -334,9 +350,10 @@ SN_INLINE bool step_impl(const View& V, const float* x, const float* y, const ui
       cur ^= 1;
     }
   }
-  const double loss = double(hsum(sq)) / (double(batch) * outputs);
+  const double loss = loss_sum / (double(batch) * outputs);
   *loss_out = loss;
-  if (!std::isfinite(loss)) return false;
+  if (!finite || !std::isfinite(loss)) return kStepNonfinite;
+  if (too_big) return kStepExploded;
   // Adam into the other parameter copy; the current one survives a non-finite result.
   const v8 b1 = splat(c.beta1), b2 = splat(c.beta2), ob1 = splat(1.0f - c.beta1), ob2 = splat(1.0f - c.beta2);
   const v8 lr = splat(c.lr * c.inv_c1), ic2 = splat(c.inv_c2), eps = splat(c.eps);
@@ -356,7 +373,7 @@ SN_INLINE bool step_impl(const View& V, const float* x, const float* y, const ui
     bad += w - w;
     pn[j] = w;
   }
-  return hsum(bad) == 0.0f;
+  return hsum(bad) == 0.0f ? kStepOk : kStepNonfinite;
 }
 
 template <int H>
@@ -453,7 +470,7 @@ SN_INLINE void counts_impl(const View& V, const float* x, std::size_t count,
 }
 
 // The entry points per instruction set; everything above inlines into them.
-using StepFn = bool (*)(const View&, const float*, const float*, const uint32_t*, int, const AdamStep&, const LossArgs&,
+using StepFn = int (*)(const View&, const float*, const float*, const uint32_t*, int, const AdamStep&, const LossArgs&,
                         double*);
 using LossFn = double (*)(const View&, const float*, const float*, std::size_t, const LossArgs&);
 using ForwardFn = void (*)(const View&, const float*, std::size_t, float*);
@@ -461,7 +478,7 @@ using CountsFn = void (*)(const View&, const float*, std::size_t, std::vector<st
 using LanesFn = void (*)(const View&, const float*, std::size_t, float*);
 
 template <int H>
-__attribute__((target("avx2,fma"))) bool step_avx2(const View& V, const float* x, const float* y,
+__attribute__((target("avx2,fma"))) int step_avx2(const View& V, const float* x, const float* y,
                                                    const uint32_t* rows, int batch, const AdamStep& c,
                                                    const LossArgs& lf, double* l) {
   return step_impl<Avx2, H>(V, x, y, rows, batch, c, lf, l);
@@ -493,7 +510,7 @@ void counts_sse2(const View& V, const float* x, std::size_t n, std::vector<std::
   counts_impl<H>(V, x, n, counts);
 }
 template <int H>
-bool step_sse2(const View& V, const float* x, const float* y, const uint32_t* rows, int batch, const AdamStep& c,
+int step_sse2(const View& V, const float* x, const float* y, const uint32_t* rows, int batch, const AdamStep& c,
                const LossArgs& lf, double* l) {
   return step_impl<Sse2, H>(V, x, y, rows, batch, c, lf, l);
 }
@@ -626,10 +643,14 @@ void CpuNet::get_params(float* flat) const { unpack(spec_, *layout_, arena_ + la
 void CpuNet::get_gradient(float* flat) const { unpack(spec_, *layout_, arena_ + layout_->o_g, flat); }
 
 bool CpuNet::step(const float* x, const float* y, const uint32_t* rows, int batch, const AdamStep& adam,
-                  double* loss) {
+                  double* loss, DivergenceKind* why) {
   const View V{*layout_, arena_, cur_};
-  if (!kernels(layout_->hidden).step(V, x, y, rows, batch, adam, LossArgs{loss_.kind, float(loss_.delta)}, loss))
+  const int verdict =
+      kernels(layout_->hidden).step(V, x, y, rows, batch, adam, LossArgs{loss_.kind, float(loss_.delta), sample_limit_}, loss);
+  if (verdict != kStepOk) {
+    if (why) *why = verdict == kStepExploded ? DivergenceKind::exploded : DivergenceKind::nonfinite;
     return false;
+  }
   cur_ ^= 1;
   return true;
 }

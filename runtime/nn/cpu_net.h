@@ -5,6 +5,7 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -52,10 +53,15 @@ class CpuNet {
   // The loss step() minimises (nn/loss.h; l2 until set).
   void set_loss(const Loss& loss) { loss_ = loss; }
 
+  // The divergence rule's bound on one sample's squared error (summed over outputs; nn/trainer.h).
+  void set_sample_limit(float limit) { sample_limit_ = limit; }
+
   // One Adam step on the minibatch of rows `rows[0..batch)` of x (width(0) wide) and y (outputs
-  // wide). Returns false, leaving the parameters as they were, when the loss or the new
-  // parameters are not finite. `loss` = the minibatch's loss before the update.
-  bool step(const float* x, const float* y, const uint32_t* rows, int batch, const AdamStep& adam, double* loss);
+  // wide). Returns false, leaving the parameters as they were, when a sample's loss is not
+  // finite, a sample's squared error is above the sample limit (why = exploded) or the new
+  // parameters are not finite (why = nonfinite). `loss` = the minibatch's loss before the update.
+  bool step(const float* x, const float* y, const uint32_t* rows, int batch, const AdamStep& adam, double* loss,
+            DivergenceKind* why = nullptr);
 
   // MSE over `count` contiguous rows; mean_loss: the set loss over them.
   double mse(const float* x, const float* y, std::size_t count);
@@ -80,6 +86,7 @@ class CpuNet {
   float* arena_ = nullptr;  // 64-byte aligned: params x2, m, v, grad, activations, scratch
   int cur_ = 0;             // which of the two parameter copies is current
   Loss loss_;
+  float sample_limit_ = std::numeric_limits<float>::infinity();
 };
 
 }  // namespace sn::nn

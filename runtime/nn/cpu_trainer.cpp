@@ -1,6 +1,7 @@
 #include "nn/cpu_trainer.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <string>
@@ -77,10 +78,6 @@ class CpuBackend : public Backend {
     const int count = int(nets.size());
     std::vector<std::unique_ptr<CpuNet>> work(static_cast<std::size_t>(count));
     std::vector<NetResult> results(static_cast<std::size_t>(count));
-    parallel_for(count, threads_, [&](int i) {
-      work[i] = std::make_unique<CpuNet>(nets[i]->spec, nets[i]->params.data());
-      work[i]->set_loss(cfg.loss);
-    });
     // Rows as each net's first layer reads them: the dataset's own, or encoded once per distinct
     // set of input encodings for the whole run.
     std::vector<const EncodedRows*> rows_of(static_cast<std::size_t>(count));
@@ -97,6 +94,14 @@ class CpuBackend : public Backend {
       }
       rows_of[i] = r;
     }
+    parallel_for(count, threads_, [&](int i) {
+      work[i] = std::make_unique<CpuNet>(nets[i]->spec, nets[i]->params.data());
+      work[i]->set_loss(cfg.loss);
+      const double given = cfg.initial_val_mse_of(std::size_t(i));
+      results[i].initial_val_mse =
+          std::isnan(given) ? work[i]->mse(rows_of[i]->val, data.val_y.data(), data.val_count()) : given;
+      work[i]->set_sample_limit(cfg.divergence.sample_limit(results[i].initial_val_mse, nets[i]->spec.outputs));
+    });
 
     const uint32_t n = uint32_t(data.train_count());
     const long long steps = n / uint32_t(cfg.batch);
@@ -104,6 +109,7 @@ class CpuBackend : public Backend {
     std::vector<AdamStep> adam(static_cast<std::size_t>(steps));
     long long t = 0;  // Adam's step counter, the same for every net of the run
     for (int e = 0; e < cfg.epochs; ++e) {
+      if (cfg.stop_requested()) break;
       EpochShuffle perm(cfg.seed, uint32_t(e), n);
       for (std::size_t k = 0; k < rows.size(); ++k) rows[k] = perm(uint32_t(k));
       for (long long s = 0; s < steps; ++s) adam[std::size_t(s)] = AdamStep::at(cfg, ++t);
@@ -115,10 +121,15 @@ class CpuBackend : public Backend {
         CpuNet& net = *work[i];
         double sum = 0;
         for (long long s = 0; s < steps; ++s) {
+          if (cfg.stop_requested()) {
+            r.interrupted = StopPoint{e + 1, s};
+            return;
+          }
           double loss;
+          DivergenceKind why = DivergenceKind::nonfinite;
           if (!net.step(rows_of[i]->train, data.train_y.data(), rows.data() + s * cfg.batch, cfg.batch,
-                        adam[std::size_t(s)], &loss)) {
-            r.diverged = Divergence{e + 1, s + 1};
+                        adam[std::size_t(s)], &loss, &why)) {
+            r.diverged = Divergence{e + 1, s + 1, why};
             return;
           }
           sum += loss;
@@ -129,7 +140,7 @@ class CpuBackend : public Backend {
             cfg.loss.kind == LossKind::l2 ? val : net.mean_loss(rows_of[i]->val, data.val_y.data(), data.val_count());
         std::vector<float> p(net.spec().param_count());
         net.get_params(p.data());
-        r.end_epoch(cfg.loss, sum / double(steps), val, val_loss, p.data(), p.size());
+        r.end_epoch(cfg, steps, sum / double(steps), val, val_loss, p.data(), p.size());
         finished[i] = 1;
       });
       if (progress)
@@ -137,6 +148,10 @@ class CpuBackend : public Backend {
           if (finished[i])
             progress({i, e + 1, results[i].train_loss.back(), results[i].val_mse.back(), results[i].val_loss.back()});
     }
+    // Stopped between epochs: every net still training ends after its last finished epoch.
+    if (cfg.stop_requested())
+      for (NetResult& r : results)
+        if (!r.diverged && !r.interrupted && r.epochs_done() < cfg.epochs) r.interrupted = StopPoint{r.epochs_done() + 1, 0};
     for (int i = 0; i < count; ++i) {
       results[i].final_params.resize(nets[i]->spec.param_count());
       work[i]->get_params(results[i].final_params.data());

@@ -3,6 +3,7 @@
 #include <epoxy/gl.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <map>
@@ -23,20 +24,30 @@ namespace sn::nn {
 
 namespace {
 
-// Mirrors NetControl in shaders/mlp_train.comp (std430).
+// Mirrors NetControl in shaders/include/mlp/train_io.glsl (std430).
 struct GlControl {
   int32_t limit = 0, done = 0, status = 0, remaining = 0;
   uint32_t first_row = 0;
   uint32_t t0 = 0;
+  float sample_limit = 0;
+  int32_t pad = 0;
   double loss_sum = 0;
 };
-static_assert(sizeof(GlControl) == 32, "GlControl must match the shader's std430 layout");
+static_assert(sizeof(GlControl) == 40, "GlControl must match the shader's std430 layout");
 constexpr std::size_t kControlWords = sizeof(GlControl) / 4;
 
-enum Status { kOk = 0, kStopped = 1, kLate = 2, kCut = 3 };
+enum Status { kOk = 0, kStopped = 1, kLate = 2, kCut = 3, kExploded = 4 };
 
 // A probe run's sentinel bound: far above any loop budget, so it counts what is left.
 constexpr int kProbeSentinel = 1 << 22;
+
+// A dispatch aims at this long, so that a stop (Ctrl-C, a progress function's "stop") is seen
+// within about this time even in a long epoch; chunking never changes a result (the kernel
+// carries the loss sum and Adam's t across dispatches). Without a loop limiter (a hardware GPU)
+// the first dispatch of an architecture holds kFirstChunk steps and later ones are sized from
+// the measured time per step.
+constexpr double kDispatchSeconds = 0.25;
+constexpr long long kFirstChunk = 64;
 
 struct NetRun {
   int index = 0;         // into the job's nets
@@ -45,6 +56,9 @@ struct NetRun {
   long long t = 0;       // Adam steps applied in this run
   double loss_sum = 0;   // this epoch's sum of minibatch squared errors
   long long stop_at = -1;  // >= 0: the step (0-based) whose update is not finite; stop before it
+  int epochs_done = 0;
+  float sample_limit = 0;  // the divergence rule's bound on a sample's squared error
+  DivergenceKind stop_kind = DivergenceKind::nonfinite;  // why stop_at
 };
 
 struct Group {
@@ -55,7 +69,8 @@ struct Group {
   std::unique_ptr<gl::Buffer> state, scratch, control;
   std::unique_ptr<gl::BufferTexture> state_texture;  // the per-network kernel reads state through it
   int sentinel = 0;  // loop iterations the kernel needs after its sentinel loop
-  long long chunk = 0;
+  long long chunk = 0;      // steps per dispatch now (timed, at most max_chunk)
+  long long max_chunk = 0;  // the loop budget's bound (or steps_per_dispatch when forced)
   GlGroupReport report;
 };
 
@@ -85,13 +100,34 @@ class Job {
   std::vector<NetResult> run(const Progress& progress, std::vector<GlGroupReport>& report) {
     upload_data();
     make_groups();
+    // The untrained nets' validation MSE: the job's (nn/train.h), else measured here.
+    for (Group& g : groups_) {
+      std::vector<double> mse;
+      for (const NetRun& r : g.runs) mse.push_back(cfg_.initial_val_mse_of(std::size_t(r.index)));
+      if (std::any_of(mse.begin(), mse.end(), [](double v) { return std::isnan(v); })) {
+        const std::vector<double> measured = validation_mse(g);
+        for (std::size_t k = 0; k < mse.size(); ++k)
+          if (std::isnan(mse[k])) mse[k] = measured[k];
+      }
+      for (std::size_t k = 0; k < g.runs.size(); ++k) {
+        results_[std::size_t(g.runs[k].index)].initial_val_mse = mse[k];
+        g.runs[k].sample_limit = cfg_.divergence.sample_limit(mse[k], g.spec.outputs);
+      }
+    }
     for (int e = 0; e < cfg_.epochs; ++e) {
+      if (cfg_.stop_requested()) break;
       upload_order(uint32_t(e));
       if (e == 0)
         for (Group& g : groups_) plan_chunks(g);
       for (Group& g : groups_) run_epoch(g, e);
       if (!finish_epoch(e, progress)) break;
     }
+    // Stopped: every net still training ends where it is (a partial epoch's steps are kept).
+    if (cfg_.stop_requested())
+      for (Group& g : groups_)
+        for (NetRun& r : g.runs)
+          if (r.active && r.epochs_done < cfg_.epochs)
+            results_[std::size_t(r.index)].interrupted = StopPoint{r.epochs_done + 1, r.step};
     for (Group& g : groups_) {
       for (NetRun& r : g.runs) {
         NetResult& res = results_[std::size_t(r.index)];
@@ -256,21 +292,29 @@ class Job {
     g.report.loop_budget = r1;
     g.report.loop_cost_per_step = r1 >= kProbeSentinel ? 0 : cost;
     if (r1 >= kProbeSentinel) {
-      g.chunk = steps_;  // no limiter: one dispatch per epoch
+      g.max_chunk = steps_;  // no limiter: up to one dispatch per epoch, as time allows
+      g.chunk = std::min(steps_, kFirstChunk);
     } else {
       const long long margin = 16 + r1 / 50;
       if (r1 < g.sentinel + margin || cost <= 0)
         throw std::runtime_error(g.spec.describe() + ": one training step needs more loop iterations than this GL " +
                                  "driver runs per shader invocation (" + gl::current().info().renderer +
                                  " stops at 65,535); train it with backend = \"cpu\"");
-      g.chunk = std::min(steps_, 1 + (r1 - g.sentinel - margin) / cost);
+      g.chunk = g.max_chunk = std::min(steps_, 1 + (r1 - g.sentinel - margin) / cost);
     }
-    if (opt_.steps_per_dispatch > 0) g.chunk = std::min(steps_, opt_.steps_per_dispatch);
+    if (opt_.steps_per_dispatch > 0) g.chunk = g.max_chunk = std::min(steps_, opt_.steps_per_dispatch);
+  }
+
+  // Sizes the next dispatches from the last one: `steps` took `seconds`.
+  void time_chunks(Group& g, long long steps, double seconds) {
+    if (opt_.steps_per_dispatch > 0 || steps < 1 || !(seconds > 0)) return;
+    const double per_step = seconds / double(steps);
+    g.chunk = std::clamp((long long)(kDispatchSeconds / per_step), 1LL, g.max_chunk);
   }
 
   void diverge(NetRun& r, int epoch) {
     r.active = false;
-    results_[std::size_t(r.index)].diverged = Divergence{epoch + 1, r.stop_at + 1};
+    results_[std::size_t(r.index)].diverged = Divergence{epoch + 1, r.stop_at + 1, r.stop_kind};
   }
 
   void run_epoch(Group& g, int e) {
@@ -287,10 +331,13 @@ class Job {
         ctl[k].first_row = uint32_t(r.step * cfg_.batch);
         ctl[k].loss_sum = r.loss_sum;
         ctl[k].t0 = uint32_t(r.t);
+        ctl[k].sample_limit = r.sample_limit;
         any = true;
       }
-      if (!any) return;
+      if (!any || cfg_.stop_requested()) return;
+      const auto t0 = std::chrono::steady_clock::now();
       dispatch(g, ctl, false, out);
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       ++g.report.dispatches;
       bool cut = false, cut_at_one = false;
       for (std::size_t k = 0; k < g.runs.size(); ++k) {
@@ -304,11 +351,13 @@ class Job {
                                      std::to_string(ctl[k].limit) + " steps and gave no reason");
             [[fallthrough]];
           case kStopped:
+          case kExploded:
             r.step += c.done;
             r.t += c.done;
             r.loss_sum = c.loss_sum;
-            if (c.status == kStopped) {
+            if (c.status != kOk) {
               r.stop_at = r.step;
+              r.stop_kind = c.status == kExploded ? DivergenceKind::exploded : DivergenceKind::nonfinite;
               diverge(r, e);
             }
             break;
@@ -324,12 +373,18 @@ class Job {
             throw std::logic_error("gl trainer: unknown kernel status " + std::to_string(c.status));
         }
       }
+      if (!cut) {
+        long long longest = 0;
+        for (const GlControl& c : ctl) longest = std::max<long long>(longest, c.limit);
+        time_chunks(g, longest, seconds);
+      }
       if (cut) {
         ++g.report.cut_dispatches;
         if (cut_at_one)
           throw std::runtime_error(g.spec.describe() + ": one training step needs more loop iterations than this GL " +
                                    "driver runs per shader invocation; train it with backend = \"cpu\"");
         g.chunk = std::max(1LL, g.chunk / 2);
+        g.max_chunk = g.chunk;
       }
     }
   }
@@ -342,30 +397,54 @@ class Job {
     return p;
   }
 
-  // Validation of every net that finished epoch e; returns false when none is left to train.
+  // Validation MSE of every net of the group (the run's loss too when `loss`).
+  std::vector<double> validation_mse(Group& g, std::vector<double>* loss = nullptr) {
+    const std::size_t val_rows = data_.val_count(), PQ = padded_chunks(g.spec);
+    std::vector<double> sums(g.runs.size(), 0.0);
+    if (!val_rows) return sums;
+    const GlParams params{g.state.get(), 0, 3 * PQ, int(g.runs.size())};
+    const double denom = double(val_rows) * g.spec.outputs;
+    sums = gl_squared_errors(g.spec, params, *buf_.val_x, *buf_.val_y, val_rows);
+    for (double& v : sums) v /= denom;
+    if (loss) {
+      *loss = gl_squared_errors(g.spec, params, *buf_.val_x, *buf_.val_y, val_rows, cfg_.loss);
+      for (double& v : *loss) v /= denom;
+    }
+    return sums;
+  }
+
+  // Validation of every net that finished epoch e (a stop may leave some part-way); returns
+  // false when none is left to train.
   bool finish_epoch(int e, const Progress& progress) {
     bool any_active = false;
-    const std::size_t val_rows = data_.val_count();
     for (Group& g : groups_) {
-      const std::size_t PQ = padded_chunks(g.spec);
-      std::vector<double> sums(g.runs.size(), 0.0), loss_sums;
-      const GlParams params{g.state.get(), 0, 3 * PQ, int(g.runs.size())};
-      if (val_rows) sums = gl_squared_errors(g.spec, params, *buf_.val_x, *buf_.val_y, val_rows);
+      bool any_done = false;
+      for (const NetRun& r : g.runs) any_done = any_done || (r.active && r.step == steps_);
+      if (!any_done) {
+        for (const NetRun& r : g.runs) any_active = any_active || r.active;
+        continue;
+      }
       // The run's own loss too, unless it is the MSE.
-      if (val_rows && cfg_.loss.kind != LossKind::l2)
-        loss_sums = gl_squared_errors(g.spec, params, *buf_.val_x, *buf_.val_y, val_rows, cfg_.loss);
+      std::vector<double> losses;
+      const std::vector<double> mse = validation_mse(g, cfg_.loss.kind != LossKind::l2 ? &losses : nullptr);
       for (std::size_t k = 0; k < g.runs.size(); ++k) {
         NetRun& r = g.runs[k];
         if (!r.active) continue;
-        any_active = true;
+        if (r.step != steps_) {
+          any_active = true;
+          continue;
+        }
         const double denom = double(steps_) * cfg_.batch * g.spec.outputs;
         const double train = r.loss_sum / denom;
-        const double val = val_rows ? sums[k] / (double(val_rows) * g.spec.outputs) : 0.0;
-        const double val_loss = loss_sums.empty() ? val : loss_sums[k] / (double(val_rows) * g.spec.outputs);
+        const double val = mse[k];
+        const double val_loss = losses.empty() ? val : losses[k];
         std::vector<float> p = download_params(g, k);
-        results_[std::size_t(r.index)].end_epoch(cfg_.loss, train, val, val_loss, p.data(), p.size());
+        NetResult& res = results_[std::size_t(r.index)];
+        if (!res.end_epoch(cfg_, steps_, train, val, val_loss, p.data(), p.size())) r.active = false;
         r.step = 0;
         r.loss_sum = 0;
+        r.epochs_done = e + 1;
+        any_active = any_active || r.active;
         if (progress) progress(ProgressEvent{r.index, e + 1, train, val, val_loss});
       }
     }

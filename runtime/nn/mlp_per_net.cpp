@@ -104,7 +104,8 @@ std::string output_deltas(const MlpSpec& s, int batch) {
   const std::size_t first = unit_chunk(s, s.layers());
   for (int q = 0; q < chunks4(s.outputs); ++q) {
     const std::string y = a(first + std::size_t(q));
-    out += "{ vec4 t = " + row_vec4("u_train_y", s.outputs, q) + "; vec4 e = " + y + " - t; loss += dot(mlp_loss(e, t), vec4(1.0)); ";
+    out += "{ vec4 t = " + row_vec4("u_train_y", s.outputs, q) + "; vec4 e = " + y + " - t; ";
+    out += "loss += dot(mlp_loss(e, t), vec4(1.0)); se += dot(e, e); ";
     out += "vec4 dq = (1.0 / " + i(std::size_t(batch * s.outputs)) + ".0) * mlp_loss_grad(e, t) * MLP_OUT_ACT_DERIV(" + y + ", " +
            d(first + std::size_t(q)) + "); ok = ok && mlp_finite(dq); " + d(first + std::size_t(q)) + " = dq; } ";
   }

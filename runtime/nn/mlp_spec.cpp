@@ -42,6 +42,16 @@ std::size_t MlpSpec::bias_offset(int layer) const {
 
 std::size_t MlpSpec::param_count() const { return weight_offset(layers()); }
 
+std::string MlpSpec::param_name(std::size_t j) const {
+  for (int l = 0; l < layers(); ++l) {
+    const std::size_t w = weight_offset(l), b = bias_offset(l), in = std::size_t(width(l));
+    const std::string layer = "layer " + std::to_string(l + 1);
+    if (j < b) return layer + " weight[" + std::to_string((j - w) / in + 1) + "][" + std::to_string((j - w) % in + 1) + "]";
+    if (j < weight_offset(l + 1)) return layer + " bias[" + std::to_string(j - b + 1) + "]";
+  }
+  return "parameter " + std::to_string(j + 1) + " (beyond the network's " + std::to_string(param_count()) + ")";
+}
+
 int MlpSpec::max_width() const {
   int m = std::max(width(0), outputs);
   for (int w : hidden) m = std::max(m, w);

@@ -38,6 +38,9 @@ struct MlpSpec {
   std::size_t weight_offset(int layer) const;  // layer 0-based
   std::size_t bias_offset(int layer) const;
   std::size_t param_count() const;
+  // Where flat parameter j lives, as scripts index it: "layer 2 weight[3][5]" (row = output
+  // unit, column = input), "layer 1 bias[4]" (all 1-based).
+  std::string param_name(std::size_t j) const;
   int max_width() const;
   // The value of `a`'s parameter (0 when it has none).
   double param(Activation a) const;

@@ -128,6 +128,8 @@ NetResult train(const MlpSpec& spec, const std::vector<float>& params, const dat
   const uint32_t n = uint32_t(data.train_count());
   const long long steps = n / cfg.batch;
   std::vector<const float*> xs(cfg.batch), ys(cfg.batch);
+  r.initial_val_mse = mse(spec, p, data.val_x.data(), data.val_y.data(), data.val_count());
+  const double sample_limit = cfg.divergence.sample_limit(r.initial_val_mse, spec.outputs);
   for (int e = 0; e < cfg.epochs; ++e) {
     EpochShuffle perm(cfg.seed, uint32_t(e), n);
     double sum = 0;
@@ -138,13 +140,29 @@ NetResult train(const MlpSpec& spec, const std::vector<float>& params, const dat
         ys[k] = data.train_y.data() + std::size_t(row) * data.outputs;
       }
       double loss = loss_grad(spec, p, xs, ys, &g, cfg.loss);
+      // The rule's bound on each sample's squared error (nn/trainer.h), after the loss's check.
+      if (std::isfinite(loss) && std::isfinite(sample_limit)) {
+        bool too_big = false;
+        std::vector<double> xi(spec.inputs);
+        for (int k = 0; k < cfg.batch && !too_big; ++k) {
+          for (int i = 0; i < spec.inputs; ++i) xi[i] = xs[k][i];
+          const auto out = forward(spec, p, xi.data());
+          double se = 0;
+          for (int o = 0; o < spec.outputs; ++o) se += (out[o] - ys[k][o]) * (out[o] - ys[k][o]);
+          too_big = se > sample_limit;
+        }
+        if (too_big) {
+          r.diverged = Divergence{e + 1, s + 1, DivergenceKind::exploded};
+          break;
+        }
+      }
       auto before = p;
       adam.step(p, g, cfg);
       bool finite = std::isfinite(loss);
       for (double v : p) finite = finite && std::isfinite(float(v));
       if (!finite) {
         p = before;
-        r.diverged = Divergence{e + 1, s + 1};
+        r.diverged = Divergence{e + 1, s + 1, DivergenceKind::nonfinite};
         break;
       }
       sum += loss;
@@ -156,7 +174,7 @@ NetResult train(const MlpSpec& spec, const std::vector<float>& params, const dat
     const double val_loss = cfg.loss.kind == LossKind::l2
                                 ? val
                                 : mean_loss(spec, p, data.val_x.data(), data.val_y.data(), data.val_count(), cfg.loss);
-    r.end_epoch(cfg.loss, sum / double(steps), val, val_loss, pf.data(), pf.size());
+    if (!r.end_epoch(cfg, steps, sum / double(steps), val, val_loss, pf.data(), pf.size())) break;
   }
   r.final_params.assign(p.begin(), p.end());
   return r;

@@ -1,12 +1,18 @@
 #include "nn/train.h"
 
+#include <algorithm>
+#include <atomic>
 #include <chrono>
+#include <exception>
+#include <limits>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
 
 #include "gl/context.h"
 #include "io/text.h"
+#include "nn/cpu_net.h"
+#include "nn/encoding.h"
 #include "nn/diagnostics.h"
 #include "nn/parallel.h"
 
@@ -29,6 +35,38 @@ void check_rows(const std::vector<float>& v, std::size_t width, const char* what
 }
 
 }  // namespace
+
+bool DivergenceRule::exploded(double val_mse, double best_before) const {
+  if (!std::isfinite(val_mse)) return true;
+  if (!(constant_mse >= 0)) return false;  // no constant predictor: backends called without the job
+  return val_mse > constant_mse && val_mse > factor * best_before;
+}
+
+float DivergenceRule::sample_limit(double initial_val_mse, int outputs) const {
+  const double inf = std::numeric_limits<double>::infinity();
+  if (!(constant_mse >= 0) || factor == inf) return std::numeric_limits<float>::infinity();
+  double reference = constant_mse;
+  if (initial_val_mse > reference) reference = initial_val_mse;  // NaN: ignored
+  // A zero reference (constant targets and a perfect start) bounds nothing.
+  if (!(reference > 0)) return std::numeric_limits<float>::infinity();
+  return float(std::min(kSampleFactor * double(outputs) * reference, double(std::numeric_limits<float>::max())));
+}
+
+double constant_predictor_mse(const data::Dataset& d) {
+  const std::size_t n = d.train_count(), m = d.val_count(), k = std::size_t(d.outputs);
+  if (!n || !m || !k) return -1;
+  std::vector<double> mean(k, 0.0);
+  for (std::size_t r = 0; r < n; ++r)
+    for (std::size_t o = 0; o < k; ++o) mean[o] += d.train_y[r * k + o];
+  for (double& v : mean) v /= double(n);
+  double sum = 0;
+  for (std::size_t r = 0; r < m; ++r)
+    for (std::size_t o = 0; o < k; ++o) {
+      const double e = d.val_y[r * k + o] - mean[o];
+      sum += e * e;
+    }
+  return sum / (double(m) * double(k));
+}
 
 void check_dataset(const data::Dataset& d) {
   if (d.inputs < 1 || d.outputs < 1)
@@ -57,6 +95,8 @@ void validate(const TrainJob& job) {
   if (!(c.beta1 >= 0 && c.beta1 < 1)) fail("adam beta1 must be in [0, 1), got " + io::number_text(c.beta1));
   if (!(c.beta2 >= 0 && c.beta2 < 1)) fail("adam beta2 must be in [0, 1), got " + io::number_text(c.beta2));
   if (!(c.eps > 0 && std::isfinite(c.eps))) fail("adam eps must be > 0, got " + io::number_text(c.eps));
+  if (!(c.divergence.factor >= 1))
+    fail("divergence_factor must be >= 1 (math.huge turns the rule off), got " + io::number_text(c.divergence.factor));
   if (d.train_count() < 1) fail("the dataset has no training rows");
   if (d.val_count() < 1) fail("the dataset has no validation rows (split must leave some, e.g. split = 0.8)");
   if (std::size_t(c.batch) > d.train_count())
@@ -75,7 +115,8 @@ void validate(const TrainJob& job) {
     }
     if (net.params.size() != net.spec.param_count()) fail(who + ": parameter count does not match its spec");
     for (std::size_t j = 0; j < net.params.size(); ++j)
-      if (!std::isfinite(net.params[j])) fail(who + ": parameter " + to_string(j + 1) + " is not finite");
+      if (!std::isfinite(net.params[j]))
+        fail(who + ": " + net.spec.param_name(j) + " (parameter " + to_string(j + 1) + ") is not finite");
     if (net.spec.inputs != d.inputs)
       fail(who + " reads " + to_string(net.spec.inputs) + " inputs but the dataset has " + to_string(d.inputs) +
            (d.input_names.empty() ? "" : " (" + names(d.input_names) + ")"));
@@ -141,16 +182,53 @@ JobResult train(const TrainJob& job) {
   out.device = backend->device();
   std::vector<const Mlp*> nets(job.nets.begin(), job.nets.end());
 
+  // One stop flag for every source: the caller's (Ctrl-C) and a progress function's error.
+  std::atomic<bool> own_stop{false};
+  std::atomic<bool>& stop = job.stop ? *job.stop : own_stop;
+  TrainConfig cfg = job.config;
+  cfg.stop = &stop;
+  cfg.divergence.constant_mse = constant_predictor_mse(*job.data);
+  // The untrained nets' validation MSE, where they have cpu code (a custom activation's net is
+  // measured by its backend): one number per net whichever backend trains it.
+  const data::Dataset& d = *job.data;
+  cfg.initial_val_mse.assign(nets.size(), std::numeric_limits<double>::quiet_NaN());
+  parallel_for(int(nets.size()), default_threads(), [&](int i) {
+    const MlpSpec& s = nets[std::size_t(i)]->spec;
+    if (activation_def(s.activation).simd < 0 || activation_def(s.output_activation).simd < 0) return;
+    CpuNet net(s, nets[std::size_t(i)]->params.data());
+    // The cpu kernels read what the first layer reads: encoded rows when the net encodes.
+    const std::vector<float> encoded =
+        s.encodings.empty() ? std::vector<float>() : encode_rows(s.encodings, s.inputs, d.val_x.data(), d.val_count());
+    const float* x = s.encodings.empty() ? d.val_x.data() : encoded.data();
+    cfg.initial_val_mse[std::size_t(i)] = net.mse(x, d.val_y.data(), d.val_count());
+  });
+  std::exception_ptr progress_error;
+  Progress progress;
+  if (job.progress)
+    progress = [&](const ProgressEvent& e) {
+      if (progress_error) return;
+      try {
+        job.progress(e);
+      } catch (...) {
+        progress_error = std::current_exception();
+        stop.store(true);
+      }
+    };
+
   const auto t0 = std::chrono::steady_clock::now();
-  out.nets = backend->train(nets, *job.data, job.config, job.progress);
+  out.nets = backend->train(nets, *job.data, cfg, progress);
   out.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (out.nets.size() != nets.size()) throw std::logic_error("backend " + out.backend + " returned wrong result count");
+  const long long steps_per_epoch = (long long)(job.data->train_count() / std::size_t(cfg.batch));
 
   for (std::size_t i = 0; i < nets.size(); ++i) {
     Mlp& net = *job.nets[i];
     NetResult& r = out.nets[i];
     if (r.final_params.size() != net.params.size())
       throw std::logic_error("backend " + out.backend + " returned a wrong parameter count");
+    // A stop at an epoch's start is the end of the epoch before.
+    if (r.interrupted && r.interrupted->step == 0 && r.interrupted->epoch > 1)
+      r.interrupted = StopPoint{r.interrupted->epoch - 1, steps_per_epoch};
     r.wall_time = out.wall_time;
     r.sample_steps_per_s = out.wall_time > 0 ? double(r.steps) * job.config.batch / out.wall_time : 0.0;
     net.params = r.final_params;
@@ -164,10 +242,11 @@ JobResult train(const TrainJob& job) {
     if (job.keep == Keep::best && r.best_epoch > 0) net.params = r.best_params;
     net.touch();
   }
-  const data::Dataset& d = *job.data;
   parallel_for(int(nets.size()), default_threads(), [&](int i) {
     out.nets[i].dead_units = dead_unit_fractions(*job.nets[i], d.val_x.data(), d.val_count());
   });
+  // The nets keep what was trained; then the progress function's error goes on to the caller.
+  if (progress_error) std::rethrow_exception(progress_error);
   return out;
 }
 

@@ -2,6 +2,7 @@
 // runs it, then commits the results to the networks (final or best weights, step counters,
 // version bump, input names) and adds the dead-unit diagnostics.
 #pragma once
+#include <atomic>
 #include <string>
 #include <vector>
 
@@ -11,7 +12,9 @@ namespace sn::nn {
 
 // Which weights a network keeps after the job: the final ones (default, what the curves end
 // on) or those of the epoch with the lowest validation MSE. Both stay reachable: the other is
-// Mlp::best_params (restore_best()).
+// Mlp::best_params (restore_best()). After a stop part-way through an epoch, last = the weights
+// after the last step applied, best = those of the finished epoch with the lowest validation MSE
+// (a partial epoch is never validated), or last when no epoch finished.
 enum class Keep { last, best };
 
 struct TrainJob {
@@ -21,6 +24,11 @@ struct TrainJob {
   std::string backend = "auto";  // "auto" | a registered backend ("cpu", "gl")
   Keep keep = Keep::last;
   Progress progress;
+  // The stop flag the backends read at every step boundary (nullptr: the job's own, which only
+  // a failing progress function sets). Whoever holds it may set it from any thread or a signal
+  // handler (sn.train: Ctrl-C, a progress function returning "stop"); each net then keeps what
+  // it trained and is flagged `interrupted`.
+  std::atomic<bool>* stop = nullptr;
 };
 
 struct JobResult {
@@ -30,6 +38,9 @@ struct JobResult {
   std::vector<NetResult> nets;
 };
 
+// The MSE over the validation rows of predicting each output's mean over the training rows (the
+// divergence rule's bound, nn/trainer.h); -1 without rows.
+double constant_predictor_mse(const data::Dataset& data);
 // Throws std::invalid_argument naming the net (1-based), field and valid range.
 void validate(const TrainJob& job);
 // Every input and target of the dataset is finite and the row counts add up; throws naming the

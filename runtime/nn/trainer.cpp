@@ -8,8 +8,14 @@
 
 namespace sn::nn {
 
-void NetResult::end_epoch(const Loss& l, double train, double val, double vloss, const float* params,
-                          std::size_t count) {
+const char* divergence_kind_name(DivergenceKind k) { return k == DivergenceKind::exploded ? "exploded" : "nonfinite"; }
+
+bool NetResult::end_epoch(const TrainConfig& cfg, long long steps_per_epoch, double train, double val, double vloss,
+                          const float* params, std::size_t count) {
+  const Loss& l = cfg.loss;
+  // The lowest validation MSE before this epoch, the untrained net's included (NaN ones skipped).
+  double best_before = initial_val_mse;
+  if (best_epoch > 0 && !(best_val_mse >= best_before)) best_before = best_val_mse;
   loss = l.describe();
   train_loss.push_back(train);
   if (l.kind == LossKind::l2) train_mse.push_back(train);
@@ -21,6 +27,9 @@ void NetResult::end_epoch(const Loss& l, double train, double val, double vloss,
     best_epoch = int(val_mse.size());
     best_params.assign(params, params + count);
   }
+  if (!cfg.divergence.exploded(val, best_before)) return true;
+  diverged = Divergence{int(val_mse.size()), steps_per_epoch, DivergenceKind::exploded};
+  return false;
 }
 
 namespace {

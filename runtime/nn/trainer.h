@@ -17,11 +17,25 @@
 //    val_mse[e] their MSE (always, so that runs with different losses compare). For l2,
 //    train_mse = train_loss; with another loss train_mse stays empty. The best epoch is the
 //    one of the lowest val_mse.
-//  - divergence: a step whose loss or new parameters are not finite is not applied; the net
-//    stops with its parameters from before that step and `diverged` = {epoch, step} (1-based).
+//  - divergence, one rule for every backend (docs/reliability.md):
+//      a step whose loss (per sample, in float; the batch's sum in double) or new parameters are
+//      not finite is not applied: the net stops with the parameters from before that step,
+//      `diverged` = {epoch, step (the step not applied), nonfinite}; a step in which a sample's
+//      squared error is above DivergenceRule::sample_limit is refused the same way, `exploded`
+//      (checked after the loss, before the update);
+//      after each epoch, NetResult::end_epoch applies DivergenceRule to the validation MSE: a
+//      net whose MSE is not finite, or is above `factor` times its best so far (the untrained
+//      net's included) and above the constant predictor's, stops with the parameters it has,
+//      `diverged` = {epoch, steps per epoch, exploded}.
+//  - stopping: when cfg.stop is set and becomes true (Ctrl-C, a progress function's "stop"),
+//    every net still training stops at its next step boundary, keeps what it has and records
+//    `interrupted` = {finished epochs + 1, steps applied in that epoch}; the job (nn/train.h)
+//    writes a stop at an epoch's start as the end of the epoch before.
 #pragma once
+#include <atomic>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -33,17 +47,62 @@
 
 namespace sn::nn {
 
+// The loss-explosion rule: after epoch e a net has exploded when its validation MSE is not
+// finite, or when it is above both `factor` x the lowest validation MSE before e (the untrained
+// net's, NetResult::initial_val_mse, included) and `constant_mse`, the MSE of predicting the
+// training targets' mean (data::Dataset; the job fills it in, nn/train.h). Either bound alone
+// misfires: a near-perfect net's validation MSE may jump 100x and still beat the mean; a net
+// that never beat the mean is not exploding while it improves. A negative constant_mse (backends
+// called directly, without the job) leaves only the non-finite check.
+//
+// Within an epoch the rule has a bound on each training sample: a step in which a sample's
+// squared error (summed over its outputs) is above kSampleFactor x outputs x the larger of
+// constant_mse and the untrained net's validation MSE is refused like a non-finite one, and the
+// net stops (`exploded`). Far beyond what training reaches (10^6 x the reference error), it
+// catches a blow-up before float overflow does: overflow turns a step into NaN at whichever step
+// the last bits of each backend's arithmetic decide, a squared error of 10^31 is seen alike.
+// factor = infinity turns both bounds off (only non-finite steps and MSEs stop a net).
+struct DivergenceRule {
+  static constexpr double kSampleFactor = 1e12;
+  double factor = 100;
+  double constant_mse = -1;
+  // Defined in nn/train.cpp, the job's rule.
+  bool exploded(double val_mse, double best_before) const;
+  float sample_limit(double initial_val_mse, int outputs) const;  // +inf: no bound
+};
+
 struct TrainConfig {
   int epochs = 20;
   int batch = 8;
   double lr = 2.5e-4, beta1 = 0.8, beta2 = 0.9, eps = 1e-7;  // the thesis' Adam settings
   uint32_t seed = 1;  // shuffle seed, shared by all nets of the job
   Loss loss;
+  DivergenceRule divergence;
+  // The job's stop flag (nullptr: never stops early). Backends read it at every step boundary.
+  const std::atomic<bool>* stop = nullptr;
+  bool stop_requested() const { return stop && stop->load(std::memory_order_relaxed); }
+  // Per net, the untrained weights' validation MSE as the job measured it (on the cpu, so that
+  // every backend starts the divergence rule from the same numbers); NaN or missing: the
+  // backend measures it.
+  std::vector<double> initial_val_mse;
+  double initial_val_mse_of(std::size_t net) const {
+    return net < initial_val_mse.size() ? initial_val_mse[net] : std::numeric_limits<double>::quiet_NaN();
+  }
 };
+
+enum class DivergenceKind { nonfinite, exploded };
+const char* divergence_kind_name(DivergenceKind k);  // "nonfinite", "exploded"
 
 struct Divergence {
   int epoch = 0;     // 1-based
-  long long step = 0;  // 1-based within that epoch
+  long long step = 0;  // 1-based within that epoch: nonfinite, the step not applied; exploded, the epoch's last
+  DivergenceKind kind = DivergenceKind::nonfinite;
+};
+
+// Where a stopped run ended: after step `step` (1-based; 0 = before the first) of epoch `epoch`.
+struct StopPoint {
+  int epoch = 0;
+  long long step = 0;
 };
 
 // One network's run. A backend fills the curves through end_epoch() and `diverged`; the job
@@ -58,13 +117,18 @@ struct NetResult {
   std::vector<float> final_params;  // parameters at the end (last finite ones when diverged)
   long long steps = 0;  // Adam steps applied
   std::optional<Divergence> diverged;
+  std::optional<StopPoint> interrupted;  // set when the job's stop flag ended this net's run early
+  int epochs_done() const { return int(val_mse.size()); }
+  double initial_val_mse = 0;  // validation MSE of the parameters the run started from
   double wall_time = 0;  // seconds for the whole job (all nets train together)
   double sample_steps_per_s = 0;  // this net's steps * batch / wall_time
   std::vector<double> dead_units;  // per hidden layer, see nn/diagnostics.h
 
   // Appends an epoch; keeps a copy of `params` when val_mse is a new minimum (first wins ties).
-  void end_epoch(const Loss& loss, double train_loss, double val_mse, double val_loss, const float* params,
-                 std::size_t count);
+  // Returns false, with `diverged` set, when cfg.divergence says the net exploded: the backend
+  // stops training it.
+  bool end_epoch(const TrainConfig& cfg, long long steps_per_epoch, double train_loss, double val_mse,
+                 double val_loss, const float* params, std::size_t count);
 };
 
 struct ProgressEvent {
@@ -73,7 +137,9 @@ struct ProgressEvent {
   double train_loss = 0, val_mse = 0, val_loss = 0;
 };
 // Called on the thread that called train(), after each finished epoch of each net (order across
-// nets unspecified). An exception thrown by it aborts the run; the nets keep their parameters.
+// nets unspecified). To end the run early it sets the job's stop flag (TrainJob::stop). An
+// exception thrown by it ends the run the same way (the job commits what was trained, then
+// rethrows it, nn/train.h).
 using Progress = std::function<void(const ProgressEvent&)>;
 
 class Backend {

@@ -5,6 +5,7 @@
 // Debian's libtinygltf.so carries the implementation (built with its default options), so the
 // header is only declarations here: no TINYGLTF_IMPLEMENTATION, no option macros that would
 // change the classes' layout.
+#include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 #include <unistd.h>
 
@@ -24,6 +25,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "io/atomic_write.h"
+#include "io/limits.h"
 #include "io/read_file.h"
 #include "scene/tangents.h"
 
@@ -38,6 +40,132 @@ struct FileError : std::runtime_error {
   FileError(const std::string& path, const std::string& reason)
       : std::runtime_error("mesh file '" + path + "': " + reason) {}
 };
+
+// tinygltf reads an optional unsigned property that is negative or not an integer as absent
+// ("byteOffset": -1 became 0 and read normals as positions; "bufferView": -1 became an all-zero
+// accessor), and an optional index that is not an integer likewise. The raw JSON is at hand, so
+// it is read once more (SAX: nothing stored) and every property of these the loader uses must be
+// a non-negative integer where it appears.
+class IntegerCheck : public nlohmann::json::json_sax_t {
+ public:
+  explicit IntegerCheck(const std::string& path) : path_(path) {}
+
+  bool null() override { return scalar("null"); }
+  bool boolean(bool v) override { return scalar(v ? "true" : "false"); }
+  bool number_integer(number_integer_t v) override { return v >= 0 ? fine() : scalar(std::to_string(v)); }
+  bool number_unsigned(number_unsigned_t) override { return fine(); }
+  bool number_float(number_float_t, const string_t& text) override { return scalar(text); }
+  bool string(string_t& v) override { return scalar("a string (\"" + v.substr(0, 40) + "\")"); }
+  bool binary(binary_t&) override { return scalar("binary"); }
+  bool start_object(std::size_t) override {
+    if (!scalar("an object")) return false;
+    stack_.push_back({true, ""});
+    return true;
+  }
+  bool key(string_t& k) override {
+    stack_.back().key = k;
+    return true;
+  }
+  bool end_object() override {
+    stack_.pop_back();
+    return true;
+  }
+  bool start_array(std::size_t) override {
+    if (!scalar("an array")) return false;
+    stack_.push_back({false, "", -1});
+    return true;
+  }
+  bool end_array() override {
+    stack_.pop_back();
+    return true;
+  }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override { return false; }
+
+  const std::string& problem() const { return problem_; }
+
+ private:
+  struct Frame {
+    bool object;
+    std::string key;  // objects: the current key
+    long index = -1;  // arrays: the current element
+  };
+
+  // A value is about to be read at the current position: advance an array's index.
+  void advance() {
+    if (!stack_.empty() && !stack_.back().object) ++stack_.back().index;
+  }
+  // A non-negative integer: right wherever one is required.
+  bool fine() {
+    advance();
+    return true;
+  }
+  // A value that is not a non-negative integer: fine unless the glTF property here must be one.
+  bool scalar(const std::string& what) {
+    advance();
+    if (!must_be_index()) return true;
+    problem_ = where() + " is " + what + "; glTF requires a non-negative integer there";
+    return false;
+  }
+
+  // The path's names, arrays' elements as "*".
+  std::vector<std::string> names() const {
+    std::vector<std::string> out;
+    for (const Frame& f : stack_) out.push_back(f.object ? f.key : "*");
+    return out;
+  }
+  std::string where() const {
+    std::string out;
+    for (const Frame& f : stack_)
+      out += f.object ? (out.empty() ? "" : ".") + f.key : "[" + std::to_string(f.index) + "]";
+    return out;
+  }
+  bool must_be_index() const {
+    const std::vector<std::string> p = names();
+    auto is = [&](std::initializer_list<const char*> pattern) {
+      if (p.size() != pattern.size()) return false;
+      std::size_t i = 0;
+      for (const char* q : pattern) {
+        if (std::strcmp(q, "?") != 0 && p[i] != q) return false;  // "?": any name
+        ++i;
+      }
+      return true;
+    };
+    auto last_in = [&](std::initializer_list<const char*> keys) {
+      for (const char* k : keys)
+        if (p.back() == k) return true;
+      return false;
+    };
+    if (p.empty()) return false;
+    if (is({"scene"})) return true;
+    if (is({"accessors", "*", "?"})) return last_in({"bufferView", "byteOffset", "count", "componentType"});
+    if (is({"accessors", "*", "sparse", "?"})) return last_in({"count"});
+    if (is({"accessors", "*", "sparse", "indices", "?"}) || is({"accessors", "*", "sparse", "values", "?"}))
+      return last_in({"bufferView", "byteOffset", "componentType"});
+    if (is({"bufferViews", "*", "?"})) return last_in({"buffer", "byteOffset", "byteLength", "byteStride"});
+    if (is({"buffers", "*", "?"})) return last_in({"byteLength"});
+    if (is({"meshes", "*", "primitives", "*", "?"})) return last_in({"indices", "material", "mode"});
+    if (is({"meshes", "*", "primitives", "*", "attributes", "?"})) return true;
+    if (is({"meshes", "*", "primitives", "*", "targets", "*", "?"})) return true;
+    if (is({"nodes", "*", "?"})) return last_in({"mesh", "camera", "skin"});
+    if (is({"nodes", "*", "children", "*"}) || is({"scenes", "*", "nodes", "*"})) return true;
+    if (is({"textures", "*", "?"})) return last_in({"source", "sampler"});
+    if (is({"images", "*", "?"})) return last_in({"bufferView"});
+    if (is({"materials", "*", "pbrMetallicRoughness", "baseColorTexture", "?"})) return last_in({"index", "texCoord"});
+    return false;
+  }
+
+  const std::string& path_;
+  std::vector<Frame> stack_;
+  std::string problem_;
+};
+
+// Throws naming the first property of `json` (the file's JSON text or a .glb's JSON chunk) that
+// glTF requires to be a non-negative integer and is not.
+void check_integers(const char* json, std::size_t size, const std::string& path) {
+  IntegerCheck check(path);
+  nlohmann::json::sax_parse(json, json + size, &check, nlohmann::json::input_format_t::json, false);
+  if (!check.problem().empty()) throw FileError(path, check.problem());
+}
 
 // tinygltf's reasons can quote kilobytes of the file (a cut base64 buffer); keep the start.
 std::string short_reason(std::string s) {
@@ -308,9 +436,9 @@ class GltfLoader {
     // listed 200,000 times grew the mesh to 23 GB.
     if (depth > kMaxNodeDepth)
       throw FileError(path_, "nests nodes more than " + std::to_string(kMaxNodeDepth) + " deep (the limit, scene/mesh.h)");
-    if (++node_visits_ > kMaxNodeVisits)
-      throw FileError(path_, "places nodes more than " + std::to_string(kMaxNodeVisits) +
-                                 " times (the limit, scene/mesh.h; a node listed many times?)");
+    if (++node_visits_ > limits_.node_placements)
+      throw FileError(path_, "places nodes more than " + std::to_string(limits_.node_placements) +
+                                 " times (a node listed many times?)" + io::raise_hint("node_placements"));
     if (!on_path_.insert(node).second)
       throw FileError(path_, "node " + std::to_string(node) + " is its own ancestor (a cycle in the node tree)");
     const tinygltf::Node& n = m_.nodes[size_t(node)];
@@ -391,6 +519,12 @@ class GltfLoader {
       for (size_t t = 0; t < tris.size(); t += 3) std::swap(tris[t + 1], tris[t + 2]);
 
     size_t base = mesh_.positions.size();
+    if (base + count > limits_.mesh_vertices)
+      throw FileError(path_, "has more than " + std::to_string(limits_.mesh_vertices) + " vertices (at " + what +
+                                 ", after its nodes' placements)" + io::raise_hint("mesh_vertices"));
+    if (mesh_.indices.size() + tris.size() > limits_.mesh_indices)
+      throw FileError(path_, "has more than " + std::to_string(limits_.mesh_indices) + " indices (at " + what +
+                                 ", after its nodes' placements)" + io::raise_hint("mesh_indices"));
     if (base + count > size_t(UINT32_MAX)) throw FileError(path_, "has more than 2^32 vertices");
     std::vector<glm::vec3> world_pos(count);
     for (size_t i = 0; i < count; ++i) {
@@ -461,6 +595,7 @@ class GltfLoader {
   int primitives_seen_ = 0, primitives_used_ = 0, primitives_with_uvs_ = 0, primitives_with_tangents_ = 0;
   std::vector<glm::vec4> file_tangents_;
   std::size_t node_visits_ = 0;
+  const io::Limits limits_ = io::limits();
 };
 
 // PNG bytes of `img` (8 bits per channel, values clamped to [0,1]) for embedding in a .glb.
@@ -537,6 +672,16 @@ Mesh load_mesh(const std::string& path) {
   if (!ok)
     throw FileError(path, std::string("is not a valid ") + (binary ? "binary glTF" : "glTF") + " file (" +
                               (err.empty() ? "tinygltf gave no reason" : "tinygltf: " + short_reason(err)) + ")");
+  // The JSON tinygltf accepted: a .glb's first chunk (header 12 bytes, chunk length and type 8),
+  // whose bounds tinygltf has checked; a .gltf whole.
+  if (binary) {
+    uint32_t json_size = 0;
+    std::memcpy(&json_size, bytes.data() + 12, 4);
+    if (bytes.size() >= 20 && json_size <= bytes.size() - 20)
+      check_integers(reinterpret_cast<const char*>(bytes.data()) + 20, json_size, path);
+  } else {
+    check_integers(text.data(), text.size(), path);
+  }
   Mesh mesh = GltfLoader(model, path).load();
   validate(mesh);
   return mesh;

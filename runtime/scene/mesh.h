@@ -51,10 +51,11 @@ struct Mesh {
   mutable std::shared_ptr<GpuMesh> gpu;
 };
 
-// What a glTF scene may be: nodes nested at most this deep, and placed at most this many times
-// in all (a node under several parents counts once per place).
+// What a glTF scene may be: nodes nested at most this deep (the walk recurses; no real file
+// comes near), placed at most io::limits().node_placements times in all (a node under several
+// parents counts once per place), with at most mesh_vertices vertices and mesh_indices indices
+// after placement (io/limits.h; sn.limits{...} raises them).
 constexpr int kMaxNodeDepth = 256;
-constexpr std::size_t kMaxNodeVisits = std::size_t(1) << 16;
 
 // Loads a .gltf or .glb file (told apart by content, not extension): walks the default scene's
 // node tree, applies each node's transform (matrix or TRS) to positions and, through its

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "io/limits.h"
 #include "io/read_file.h"
 #include "io/text.h"
 #include "shading/builtin_models.h"
@@ -93,7 +94,8 @@ bool LightingModel::reads(const std::string& attribute) const {
 
 std::string LightingModel::glsl_text() const {
   if (glsl_path.empty()) return glsl_source;
-  return io::read_file(glsl_path, "the glsl file of lighting model '" + name + "'", std::uint64_t(1) << 24);
+  return io::read_file(glsl_path, "the glsl file of lighting model '" + name + "'", io::limits().shader_bytes,
+                       "shader_bytes");
 }
 
 void validate_model(const LightingModel& m) {

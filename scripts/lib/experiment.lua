@@ -533,18 +533,22 @@ function E:train_group(group, tick)
   local res = {}
   for i, r in ipairs(group) do
     local o = out[first[i]]
+    -- Ctrl-C stopped sn.train: a run any of whose copies stopped part-way is not a result (the
+    -- sweep leaves it for the next run of the command).
+    local stopped = nil
+    for k = first[i], first[i] + (r.config.copies or 1) - 1 do stopped = stopped or out[k].interrupted end
     local p = nil
     if r.config.keep_params then p = nets[first[i]]:params() end
-    local unseen = stats.finite(o.best_val_mse) and self:unseen_error(nets[first[i]], c.data) or nil
+    local unseen = not stopped and stats.finite(o.best_val_mse) and self:unseen_error(nets[first[i]], c.data) or nil
     res[i] = {
       unseen_mse = unseen and unseen.mse, unseen_ssim = unseen and unseen.ssim,
       best_val_mse = o.best_val_mse, best_epoch = o.best_epoch,
       val_mse = o.val_mse, train_mse = o.train_mse,
       wall_time = o.wall_time, job_nets = #nets, steps = o.steps, sample_steps_per_s = o.sample_steps_per_s,
       diverged = o.diverged, dead_units = o.dead_units, backend = o.backend, device = o.device,
-      params = p,
+      params = p, interrupted = stopped,
     }
-    if not stats.finite(o.best_val_mse) then
+    if not stopped and not stats.finite(o.best_val_mse) then
       io.stderr:write(string.format("%s: run %s has no finite validation MSE (diverged at epoch %s)\n", self.name,
                                     r.id, o.diverged and tostring(o.diverged.epoch) or "?"))
     end

@@ -92,7 +92,9 @@ end
 --            score = function(result) -> number (lower is better; for the progress line),
 --            describe = function(run) -> short text (for the progress line) }
 -- Returns finished, interrupted: the number of finished runs of the slice, and true when
--- Ctrl-C stopped the sweep early (every run finished before it is kept).
+-- Ctrl-C stopped the sweep early (every run finished before it is kept). Ctrl-C stops sn.train
+-- at its next step: a result flagged `interrupted` is a run stopped part-way, not written, so
+-- the next run of the same command trains it again from the start.
 function Sweep:run(o)
   local slice = self:slice()
   local pending = self:pending()
@@ -134,7 +136,7 @@ function Sweep:run(o)
 
   sn.catch_interrupt()
   progress:update(done, best_text)
-  local interrupted = false
+  local interrupted, stopped_part_way = false, 0
   for _, group in ipairs(groups) do
     local t0 = sn.clock()
     -- tick(f): the group is fraction f done (for the ETA while a long group trains).
@@ -144,15 +146,21 @@ function Sweep:run(o)
     assert(type(out) == "table" and #out == #group,
            string.format("sweep: train returned %s results for %d runs", type(out) == "table" and #out or type(out), #group))
     local seconds = sn.clock() - t0
+    local stopped = 0
     for k, r in ipairs(group) do
-      local rec = { id = r.id, config = r.config, result = out[k], group_size = #group,
-                    group_seconds = seconds, finished = os.date("!%Y-%m-%dT%H:%M:%SZ") }
-      results.write_json(self:file(r), rec)
-      done = done + 1
-      consider(r, out[k])
+      if type(out[k]) == "table" and out[k].interrupted then
+        stopped = stopped + 1
+      else
+        local rec = { id = r.id, config = r.config, result = out[k], group_size = #group,
+                      group_seconds = seconds, finished = os.date("!%Y-%m-%dT%H:%M:%SZ") }
+        results.write_json(self:file(r), rec)
+        done = done + 1
+        consider(r, out[k])
+      end
     end
     progress:update(done, best_text)
-    if sn.interrupted() then
+    stopped_part_way = stopped_part_way + stopped
+    if sn.interrupted() or stopped > 0 then
       interrupted = true
       break
     end
@@ -161,8 +169,9 @@ function Sweep:run(o)
   sn.catch_interrupt(false)
   progress:finish()
   if interrupted then
-    print(string.format("%s: stopped by Ctrl-C; %d of %d runs finished and kept in %s (run the same command to resume)",
-                        self.label, done, #slice, self.runs_dir))
+    print(string.format("%s: stopped by Ctrl-C; %d of %d runs finished and kept in %s%s (run the same command to resume)",
+                        self.label, done, #slice, self.runs_dir,
+                        stopped_part_way > 0 and string.format("; %d stopped part-way will train again", stopped_part_way) or ""))
   end
   return done, interrupted
 end

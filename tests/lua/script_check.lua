@@ -123,27 +123,44 @@ function C.run_results(dir)
 end
 
 -- Runs a script in a child shadenet with a Ctrl-C sent to itself after its first training
--- group: a deterministic stand-in for a person pressing Ctrl-C mid-sweep.
-function C.run_interrupted(script, args)
+-- group: a deterministic stand-in for a person pressing Ctrl-C mid-sweep. With `in_training`
+-- = n, the Ctrl-C comes inside the n-th sn.train call instead, after its first epoch (sn.train
+-- then stops at its next step).
+function C.run_interrupted(script, args, in_training)
   local wrapper = os.tmpname() .. ".lua"
   results.write_file(wrapper, string.format([[
 package.path = "scripts/?.lua;" .. package.path
+local sn = require "shadenet"
 local exp = require "lib.experiment"
 local ffi = require "ffi"
 ffi.cdef "int getpid(void); int kill(int pid, int sig);"
+local in_training = %s
 local train_group = exp.Experiment.train_group
 local sent = false
+local function ctrl_c()
+  sent = true
+  ffi.C.kill(ffi.C.getpid(), 2)  -- SIGINT to this process, as a terminal's Ctrl-C sends
+end
 exp.Experiment.train_group = function(self, group, tick)
   local out = train_group(self, group, tick)
-  if not sent then
-    sent = true
-    ffi.C.kill(ffi.C.getpid(), 2)  -- SIGINT to this process, as a terminal's Ctrl-C sends
-  end
+  if not sent and not in_training then ctrl_c() end
   return out
+end
+local train, calls = sn.train, 0
+sn.train = function(o)
+  calls = calls + 1
+  if calls == in_training then
+    local progress = o.progress
+    o.progress = function(e)
+      if not sent then ctrl_c() end
+      if progress then return progress(e) end
+    end
+  end
+  return train(o)
 end
 arg[0] = %q
 dofile(%q)
-]], script, script))
+]], tostring(in_training), script, script))
   local code, out = C.run(wrapper, args)
   os.remove(wrapper)
   return code, out

@@ -140,7 +140,7 @@ for _, backend in ipairs { "gl", "cpu" } do
     net:render(g, { backend = backend, target = sn.target { width = 5, height = 5 } })
   end)
 end
-fails("'backend' and 'target' are a network's", function() cloth:render(sn.lighting.phong {}, { backend = "cpu" }) end)
+fails("'backend', 'target' and 'nonfinite' are a network's", function() cloth:render(sn.lighting.phong {}, { backend = "cpu" }) end)
 
 -- A G-buffer renders again into a reused target: an earlier G-buffer still held keeps its own
 -- picture, and the network drawn from each matches its own view.

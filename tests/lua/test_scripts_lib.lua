@@ -122,6 +122,16 @@ local finished, interrupted = isweep:run { chunk = 2, train = function(group)
 end }
 assert(interrupted == true and finished == 2, "Ctrl-C keeps the group in flight and stops: " .. tostring(finished))
 assert(#isweep:pending() == 4, "4 runs left for the next run")
+-- Ctrl-C inside sn.train stops it part-way: runs flagged `interrupted` are not written, the sweep
+-- stops, and the next run trains them again.
+local psweep = Sweep.new { dir = tmp .. "/part", runs = irun, label = "t" }
+local pfinished, pstopped = psweep:run { chunk = 2, train = function(group)
+  local out = train(group)
+  out[2].interrupted = { epoch = 3, step = 17 }
+  return out
+end }
+assert(pstopped == true and pfinished == 1, "a run stopped part-way is not kept: " .. tostring(pfinished))
+assert(#psweep:pending() == 5 and psweep:pending()[1].id == "i2", "the stopped run trains again")
 
 -- ---- progress ----
 local sink = { text = "" }

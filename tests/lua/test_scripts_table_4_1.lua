@@ -65,6 +65,18 @@ out = C.ok(script, { "--quick", "--out", I })
 assert(out:find("resuming, 36 of 72"), "the re-run resumes:\n" .. out)
 assert(C.read(I .. "/table.csv") == C.read(A .. "/table.csv"), "interrupted + resumed = uninterrupted")
 
+-- Ctrl-C inside the second group's training: sn.train stops at its next step, the runs it
+-- stopped part-way are not recorded, and the re-run trains them again from the start.
+local T = root .. "/in_training"
+code, iout = C.run_interrupted(script, { "--quick", "--out", T }, 2)
+assert(code == 130, "interrupted in training: exit 130, got " .. tostring(code) .. ":\n" .. iout)
+assert(iout:find("interrupt: stopping training at the next step", 1, true) and
+       iout:find("stopped by Ctrl%-C; 36 of 72 runs finished and kept in [^\n]*; 36 stopped part%-way will train again"),
+       "interrupt message:\n" .. iout)
+out = C.ok(script, { "--quick", "--out", T })
+assert(out:find("resuming, 36 of 72"), "the re-run resumes:\n" .. out)
+assert(C.read(T .. "/table.csv") == C.read(A .. "/table.csv"), "stopped in training + resumed = uninterrupted")
+
 -- An unknown option lists the valid ones.
 code, out = C.run(script, { "--quik" })
 assert(code ~= 0 and out:find("unknown option '%-%-quik' %(valid: %-%-quick, %-%-shard i/n, %-%-out DIR"), out)

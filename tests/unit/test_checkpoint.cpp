@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <cmath>
 #include <cstring>
 #include <iterator>
 
@@ -119,8 +120,67 @@ TEST(Checkpoint, DamagedFilesAreClearErrors) {
 
   write_all(bad, "hello, not a network");
   EXPECT_NE(load_error(bad).find("not a shadenet network checkpoint"), std::string::npos);
-  EXPECT_NE(load_error(scratch("missing.snmlp")).find("cannot open checkpoint"), std::string::npos);
+  EXPECT_NE(load_error(scratch("missing.snmlp")).find("cannot read checkpoint"), std::string::npos);
   EXPECT_EQ(load_error(path), "(loaded)");
+}
+
+// A checkpoint with a NaN or infinite parameter is refused when saved (nothing is written, an old
+// file stays) and when loaded, even with a valid checksum; the error names the file and where
+// the first bad parameter lives. A non-regular file is not read at all.
+TEST(Checkpoint, NonFiniteParametersAreRefusedOnSaveAndLoad) {
+  Mlp net = sample_net();
+  const auto path = scratch("finite.snmlp");
+  save_checkpoint(net, path.string());
+  const std::string good = read_all(path);
+  // Layer 2's weight row 4, column 3: flat index weight_offset(1) + 3 * 13 + 2.
+  const std::size_t j = net.spec.weight_offset(1) + 3 * 13 + 2;
+  EXPECT_EQ(net.spec.param_name(j), "layer 2 weight[4][3]");
+  EXPECT_EQ(net.spec.param_name(net.spec.bias_offset(0) + 1), "layer 1 bias[2]");
+  Mlp bad = net;
+  bad.params[j] = std::nanf("");
+  try {
+    save_checkpoint(bad, path.string());
+    ADD_FAILURE() << "saved a NaN";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find(path.string()), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("layer 2 weight[4][3] (parameter " + std::to_string(j + 1) + " of"),
+              std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("is NaN"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(read_all(path), good);  // the old checkpoint is untouched
+  bad = net;
+  bad.best_params[5] = INFINITY;
+  EXPECT_THROW(save_checkpoint(bad, path.string()), std::runtime_error);
+
+  // The same bytes with the parameter patched to +inf and the checksum made valid again.
+  auto patched = [&](std::size_t index, float value, bool best) {
+    Mlp marked = net;
+    const float mark = 1234.5678f;
+    (best ? marked.best_params : marked.params)[index] = mark;
+    if (!best) marked.best_params[index] = net.best_params[index];
+    save_checkpoint(marked, path.string());
+    std::string bytes = read_all(path);
+    char m[4], v[4];
+    std::memcpy(m, &mark, 4);
+    std::memcpy(v, &value, 4);
+    const std::size_t at = bytes.find(std::string(m, 4));
+    EXPECT_NE(at, std::string::npos);
+    bytes.replace(at, 4, std::string(v, 4));
+    const uint64_t sum = io::fnv1a(bytes.substr(24));
+    std::memcpy(bytes.data() + 16, &sum, 8);
+    const auto out = scratch("nonfinite.snmlp");
+    write_all(out, bytes);
+    return out.string();
+  };
+  std::string file = patched(j, INFINITY, false);
+  std::string err = load_error(file);
+  EXPECT_NE(err.find(file), std::string::npos) << err;
+  EXPECT_NE(err.find("layer 2 weight[4][3]"), std::string::npos) << err;
+  EXPECT_NE(err.find("is infinite"), std::string::npos) << err;
+  file = patched(2, std::nanf(""), true);
+  err = load_error(file);
+  EXPECT_NE(err.find("best-epoch snapshot's layer 1 weight[1][3] (parameter 3 of"), std::string::npos) << err;
+  EXPECT_NE(load_error("/dev/zero").find("not a regular file"), std::string::npos) << load_error("/dev/zero");
 }
 
 // A checkpoint written before the activation registry (tests/data/checkpoint_v1.snmlp, saved by

@@ -5,6 +5,7 @@
 // workgroup, and the storage-buffer fallbacks.
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 #include <random>
 
@@ -12,6 +13,7 @@
 #include "nn/cpu_trainer.h"
 #include "nn/gl_trainer.h"
 #include "nn/oracle.h"
+#include "nn/train.h"
 
 using namespace sn::nn;
 using sn::data::Dataset;
@@ -391,6 +393,67 @@ TEST_P(GlKernel, NonFiniteUpdateLeavesTheLastFiniteParameters) {
   EXPECT_EQ(r.final_params, net.params);
   EXPECT_EQ(r.steps, 0);
   EXPECT_GE(gl.report()[0].divergence_reruns, 1);
+}
+
+// The divergence rule (nn/trainer.h) flags the same epoch and step on the cpu backend, both gl
+// kernels and the oracle: lr = 1e15 puts a sample's squared error near 1e31 at step 2 (before
+// float overflow, which the backends' last bits would reach at different steps); lr = 1e3
+// explodes the validation MSE by epoch 1's end.
+TEST_P(GlKernel, ExplosionIsFlaggedAtTheSameStepAsOnTheCpu) {
+  sn::gl::current();
+  MlpSpec spec = spec_of({12, 12});
+  Mlp net(spec, Init::xavier, 4);
+  Dataset data = phong_like(400, 100, 8);
+  for (double lr : {1e15, 1e3}) {
+    TrainConfig cfg;
+    cfg.epochs = 3;
+    cfg.lr = lr;
+    cfg.divergence.constant_mse = constant_predictor_mse(data);
+    GlTrainer gl = trainer();
+    auto g = gl.train({&net}, data, cfg, nullptr)[0];
+    expect_kernel(gl);
+    auto c = make_cpu_backend(1)->train({&net}, data, cfg, nullptr)[0];
+    auto o = oracle::train(spec, net.params, data, cfg);
+    for (const NetResult* r : {&g, &c, &o}) {
+      ASSERT_TRUE(r->diverged.has_value()) << lr;
+      EXPECT_EQ(r->diverged->kind, DivergenceKind::exploded) << lr;
+      EXPECT_EQ(r->diverged->epoch, 1) << lr;
+      EXPECT_EQ(r->diverged->step, lr > 1e10 ? 2 : 50) << lr;
+      for (float v : r->final_params) ASSERT_TRUE(std::isfinite(v));
+    }
+    EXPECT_EQ(g.steps, c.steps);
+    if (lr > 1e10)  // one step applied: the same parameters to float's last bits
+      for (std::size_t i = 0; i < c.final_params.size(); ++i)
+        ASSERT_NEAR(g.final_params[i], c.final_params[i], 1e-5 * std::abs(c.final_params[i])) << i;
+  }
+}
+
+// A stop flag set before training starts: nothing trains, every net says where it stopped.
+TEST_P(GlKernel, StopFlagEndsTheRunAtAStepBoundary) {
+  sn::gl::current();
+  Mlp a(spec_of({8, 8}), Init::xavier, 1), b(spec_of({6, 6, 6}), Init::xavier, 2);
+  Dataset data = phong_like(160, 40, 9);
+  std::atomic<bool> stop{false};
+  TrainConfig cfg;
+  cfg.epochs = 4;
+  cfg.stop = &stop;
+  GlTrainer gl = trainer();
+  int events = 0;
+  auto r = gl.train({&a, &b}, data, cfg, [&](const ProgressEvent& e) {
+    if (e.epoch == 2 && ++events == 2) stop.store(true);  // after both nets' epoch 2
+  });
+  for (const NetResult& n : r) {
+    ASSERT_TRUE(n.interrupted.has_value());
+    EXPECT_EQ(n.interrupted->epoch, 3);  // raw: epoch 3 had not begun (the job writes it 2/20)
+    EXPECT_EQ(n.interrupted->step, 0);
+    EXPECT_EQ(n.steps, 2 * 20);
+    EXPECT_EQ(n.val_mse.size(), 2u);
+  }
+  auto c = make_cpu_backend(1)->train({&a}, data, cfg, nullptr)[0];  // the flag is still set
+  ASSERT_TRUE(c.interrupted.has_value());
+  EXPECT_EQ(c.interrupted->epoch, 1);
+  EXPECT_EQ(c.steps, 0);
+  EXPECT_EQ(c.final_params, a.params);
 }
 
 TEST_P(GlKernel, ArchitecturesTrainAsSeparateGroupsLikeAlone) {

@@ -8,6 +8,7 @@
 
 #include "nn/init.h"
 #include "nn/oracle.h"
+#include "nn/train.h"
 #include "nn_spec_of.h"
 #include "nn/shuffle.h"
 
@@ -92,17 +93,80 @@ TEST(Oracle, AdamStepFollowsTheFormula) {
 
 TEST(NetResult, BestEpochIsTheFirstMinimumAndNeverNaN) {
   NetResult r;
+  TrainConfig cfg;
   float p[2] = {1, 2};
-  r.end_epoch(Loss{}, 0.5, std::nan(""), std::nan(""), p, 2);
-  r.end_epoch(Loss{}, 0.4, 0.3, 0.3, p, 2);
+  EXPECT_FALSE(r.end_epoch(cfg, 10, 0.5, std::nan(""), std::nan(""), p, 2));  // a NaN MSE: exploded
+  ASSERT_TRUE(r.diverged.has_value());
+  EXPECT_EQ(r.diverged->kind, DivergenceKind::exploded);
+  EXPECT_EQ(r.diverged->epoch, 1);
+  EXPECT_EQ(r.diverged->step, 10);
+  r.end_epoch(cfg, 10, 0.4, 0.3, 0.3, p, 2);
   p[0] = 7;
-  r.end_epoch(Loss{}, 0.3, 0.2, 0.2, p, 2);
-  r.end_epoch(Loss{}, 0.2, 0.2, 0.2, p + 1, 1);  // a tie: the earlier epoch stays
-  r.end_epoch(Loss{}, 0.1, 0.25, 0.25, p, 2);
+  r.end_epoch(cfg, 10, 0.3, 0.2, 0.2, p, 2);
+  r.end_epoch(cfg, 10, 0.2, 0.2, 0.2, p + 1, 1);  // a tie: the earlier epoch stays
+  r.end_epoch(cfg, 10, 0.1, 0.25, 0.25, p, 2);
   EXPECT_EQ(r.best_epoch, 3);
   EXPECT_EQ(r.best_val_mse, 0.2);
   EXPECT_EQ(r.best_params, (std::vector<float>{7, 2}));
   EXPECT_EQ(r.val_mse.size(), 5u);
+}
+
+// The loss-explosion rule (nn/trainer.h): above factor x the best so far (the untrained net's
+// included) and above the constant predictor's MSE; either alone is not enough.
+TEST(DivergenceRule, NeedsBothTheFactorAndTheConstantPredictor) {
+  DivergenceRule rule;
+  rule.constant_mse = 0.1;
+  EXPECT_FALSE(rule.exploded(0.05, 0.0001));  // 500x its best, still better than the mean
+  EXPECT_FALSE(rule.exploded(5.0, 0.2));       // worse than the mean, 25x its best
+  EXPECT_TRUE(rule.exploded(25.0, 0.2));       // both
+  EXPECT_TRUE(rule.exploded(std::nan(""), 0.2));
+  EXPECT_TRUE(rule.exploded(INFINITY, 0.2));
+  rule.factor = INFINITY;  // off: only a non-finite MSE
+  EXPECT_FALSE(rule.exploded(1e30, 0.2));
+  EXPECT_TRUE(rule.exploded(std::nan(""), 0.2));
+  EXPECT_EQ(rule.sample_limit(0.5, 3), INFINITY);
+  DivergenceRule none;  // no constant predictor (a backend called without the job)
+  EXPECT_FALSE(none.exploded(1e30, 1e-6));
+  EXPECT_EQ(none.sample_limit(0.5, 3), INFINITY);
+  // The sample bound: 1e12 x outputs x the larger of the two references.
+  rule.factor = 100;
+  EXPECT_FLOAT_EQ(rule.sample_limit(0.5, 3), float(1e12 * 3 * 0.5));
+  EXPECT_FLOAT_EQ(rule.sample_limit(0.01, 3), float(1e12 * 3 * 0.1));
+  EXPECT_FLOAT_EQ(rule.sample_limit(std::nan(""), 1), float(1e12 * 0.1));
+  rule.constant_mse = 0;
+  EXPECT_EQ(rule.sample_limit(0, 3), INFINITY);  // constant targets, a perfect start: no bound
+}
+
+// The untrained net's MSE counts as the best before epoch 1: a slow start far above the mean is
+// not an explosion.
+TEST(NetResult, ExplosionIsMeasuredFromTheUntrainedNet) {
+  TrainConfig cfg;
+  cfg.divergence.constant_mse = 1.0;
+  float p[1] = {0};
+  NetResult slow;
+  slow.initial_val_mse = 10000;
+  EXPECT_TRUE(slow.end_epoch(cfg, 5, 1, 500, 500, p, 1));
+  EXPECT_FALSE(slow.diverged.has_value());
+  NetResult blow;
+  blow.initial_val_mse = 0.5;
+  EXPECT_TRUE(blow.end_epoch(cfg, 5, 1, 0.3, 0.3, p, 1));
+  EXPECT_TRUE(blow.end_epoch(cfg, 5, 1, 20, 20, p, 1));  // 67x its best: not yet
+  EXPECT_FALSE(blow.end_epoch(cfg, 5, 1, 31, 31, p, 1));
+  ASSERT_TRUE(blow.diverged.has_value());
+  EXPECT_EQ(blow.diverged->epoch, 3);
+  EXPECT_EQ(blow.diverged->step, 5);
+  EXPECT_EQ(blow.diverged->kind, DivergenceKind::exploded);
+}
+
+TEST(DivergenceRule, ConstantPredictorIsTheValidationMSEAroundTheTrainingMean) {
+  sn::data::Dataset d;
+  d.inputs = 1;
+  d.outputs = 2;
+  d.train_x = {0, 0, 0, 0};
+  d.train_y = {1, 10, 3, 10, 2, 10, 2, 10};  // means 2 and 10
+  d.val_x = {0, 0};
+  d.val_y = {4, 10, 2, 12};
+  EXPECT_DOUBLE_EQ(constant_predictor_mse(d), (4.0 + 0 + 0 + 4) / 4);
 }
 
 TEST(Shuffle, IsAPermutationForEverySize) {

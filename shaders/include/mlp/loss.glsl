@@ -6,6 +6,14 @@
 #define MLP_LOSS_RELATIVE_L2 2
 #define MLP_LOSS_HUBER 3
 
+// A sample's squared error for the divergence rule's bound: its l2 loss is that already (the
+// separate sum then goes unused and the compiler drops it).
+#if MLP_LOSS == MLP_LOSS_L2
+#define MLP_SQUARED_ERROR(loss, se) (loss)
+#else
+#define MLP_SQUARED_ERROR(loss, se) (se)
+#endif
+
 vec4 mlp_loss(vec4 e, vec4 t) {
 #if MLP_LOSS == MLP_LOSS_L1
   return abs(e);
