@@ -71,9 +71,12 @@ function Scene.render(scene, what, options)
     end
     where.attributes = attributes
     local g = scene:gbuffer(where)
-    local img = what:render(g, { values = options.values, backend = options.backend, target = options.target,
-                                 nonfinite = options.nonfinite })
+    -- Through pcall: the G-buffer goes back to the pool whatever happens, and an error (C
+    -- functions called by pcall carry no position) is raised at the caller's line.
+    local ok, img = pcall(what.render, what, g, { values = options.values, backend = options.backend,
+                                                   target = options.target, nonfinite = options.nonfinite })
     g:release()
+    if not ok then error(img, 2) end
     return img
   end
   error("scene:render: a lighting model (sn.lighting.*) or a network (sn.mlp) expected, got " .. kind, 2)

@@ -94,9 +94,11 @@ sn.live.show { network = flat("network", { 0.6, 0.3, 0.2, 1 }), truth = flat("tr
 local s = H.start { dir = dir .. "/session", script = dir .. "/main.lua", window = false }
 s:wait_frame(1)
 s:settle()
+-- Both probes on one console line, so no frame can come between them (each line that runs may
+-- be followed by a redraw).
 s:send('local t, n, e = sn.live.probe(3, 2) print(("PROBE %.3f %.3f %.3f | %.3f | %.4f | %d %d"):format('
-       .. 'n[1], n[2], n[3], t[3], e.mean, calls.network, calls.truth))')
-s:send('sn.live.probe(6, 4) print(("AGAIN %d %d"):format(calls.network, calls.truth))')
+       .. 'n[1], n[2], n[3], t[3], e.mean, calls.network, calls.truth)) '
+       .. 'sn.live.probe(6, 4) print(("AGAIN %d %d"):format(calls.network, calls.truth))')
 local line = s:wait_log("PROBE ([^\n]+)")
 local again = s:wait_log("AGAIN ([^\n]+)")
 local frames = tonumber(s:log():match("SETTLE 1 (%d+)")) + 1
