@@ -1,22 +1,15 @@
 #include "nn/activation.h"
 
-#include <cctype>
-#include <cstdint>
 #include <deque>
 #include <stdexcept>
+
+#include "nn/registry_name.h"
 
 namespace sn::nn {
 
 std::vector<ActivationDef> builtin_activations();  // nn/activation_builtin.cpp, in Builtin order
 
 namespace {
-
-bool valid_identifier(const std::string& s) {
-  if (s.empty() || s.size() > 40 || !(std::islower(uint8_t(s[0])) || s[0] == '_')) return false;
-  for (char c : s)
-    if (!(std::islower(uint8_t(c)) || std::isdigit(uint8_t(c)) || c == '_')) return false;
-  return true;
-}
 
 // A deque: handles and references stay valid as definitions are added.
 using Defs = std::deque<ActivationDef>;
@@ -33,8 +26,8 @@ int lookup(const Defs& defs, const std::string& name) {
 // The one way into the registry, for built-ins and user definitions alike.
 int add(Defs& defs, ActivationDef def, bool builtin) {
   for (const auto& a : def.aliases)
-    if (!valid_identifier(a)) throw std::invalid_argument("activation alias '" + a + "': use lower-case letters, digits and _");
-  if (!valid_identifier(def.name))
+    if (!valid_registry_name(a)) throw std::invalid_argument("activation alias '" + a + "': use lower-case letters, digits and _");
+  if (!valid_registry_name(def.name))
     throw std::invalid_argument("activation name '" + def.name + "': use lower-case letters, digits and _ (at most 40)");
   if (def.glsl.empty() || def.grad.empty())
     throw std::invalid_argument("activation '" + def.name + "' needs both its GLSL and the GLSL of its derivative");

@@ -1,25 +1,18 @@
 #include "nn/encoding.h"
 
-#include <cctype>
 #include <cmath>
-#include <cstdint>
 #include <cstdio>
 #include <deque>
 #include <set>
 #include <stdexcept>
+
+#include "nn/registry_name.h"
 
 namespace sn::nn {
 
 std::vector<EncodingDef> builtin_encodings();  // nn/encoding_builtin.cpp, in BuiltinEncoding order
 
 namespace {
-
-bool valid_identifier(const std::string& s) {
-  if (s.empty() || s.size() > 40 || !(std::islower(uint8_t(s[0])) || s[0] == '_')) return false;
-  for (char c : s)
-    if (!(std::islower(uint8_t(c)) || std::isdigit(uint8_t(c)) || c == '_')) return false;
-  return true;
-}
 
 // A deque: handles and references stay valid as definitions are added.
 using Defs = std::deque<EncodingDef>;
@@ -32,7 +25,7 @@ int lookup(const Defs& defs, const std::string& name) {
 
 // The one way into the registry, for built-ins and user definitions alike.
 int add(Defs& defs, EncodingDef def, bool builtin) {
-  if (!valid_identifier(def.name))
+  if (!valid_registry_name(def.name))
     throw std::invalid_argument("encoding name '" + def.name + "': use lower-case letters, digits and _ (at most 40)");
   if (def.glsl.empty() || !def.f || !def.out_width)
     throw std::invalid_argument("encoding '" + def.name + "' needs its GLSL, its twin and its output width");
