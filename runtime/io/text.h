@@ -1,7 +1,8 @@
-// Numbers as text, one way each: "%g" for messages people read, "%a" (exact) for cache keys.
+// Text for messages and keys. Numbers as text, one way each: "%g" for messages people read, "%a" (exact) for cache keys.
 #pragma once
 #include <cstdio>
 #include <string>
+#include <vector>
 
 namespace sn::io {
 
@@ -16,6 +17,13 @@ inline std::string exact_text(double v) {
   char b[40];
   std::snprintf(b, sizeof b, "%a", v);
   return b;
+}
+
+// "a, b, c": the lists of valid choices in messages.
+inline std::string join(const std::vector<std::string>& items, const char* sep = ", ") {
+  std::string s;
+  for (std::size_t i = 0; i < items.size(); ++i) s += (i ? sep : "") + items[i];
+  return s;
 }
 
 }  // namespace sn::io

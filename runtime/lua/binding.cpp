@@ -139,12 +139,6 @@ std::vector<double> check_numbers(lua_State* L, int idx, const char* what, int n
   return v;
 }
 
-std::string join(const std::vector<std::string>& items, const char* sep) {
-  std::string s;
-  for (const auto& i : items) s += (s.empty() ? "" : sep) + i;
-  return s;
-}
-
 int check_choice(const std::string& value, std::initializer_list<const char*> valid, const char* what) {
   int i = 0;
   std::vector<std::string> names;

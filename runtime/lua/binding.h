@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "io/text.h"
+
 namespace sn::lua {
 
 // lua_absindex is Lua 5.2; LuaJIT speaks 5.1.
@@ -109,7 +111,7 @@ std::string check_string(lua_State* L, int idx, const char* what);
 std::vector<double> check_numbers(lua_State* L, int idx, const char* what, int n = -1);
 // Picks `value` from `valid`; throws "unknown WHAT 'value' (valid: a, b, c)".
 int check_choice(const std::string& value, std::initializer_list<const char*> valid, const char* what);
-std::string join(const std::vector<std::string>& items, const char* sep = ", ");
+using io::join;  // io/text.h
 // Pushes {"a", "b", ...}, a Lua array of the strings.
 void push_strings(lua_State* L, const std::vector<std::string>& items);
 

@@ -3,6 +3,7 @@
 #include <deque>
 #include <stdexcept>
 
+#include "io/text.h"
 #include "nn/registry_name.h"
 
 namespace sn::nn {
@@ -57,12 +58,6 @@ Defs& registry() {
   return defs;
 }
 
-std::string joined(const std::vector<std::string>& names) {
-  std::string s;
-  for (const auto& n : names) s += (s.empty() ? "" : ", ") + n;
-  return s;
-}
-
 }  // namespace
 
 const char* activation_param_name(ActivationParam p) {
@@ -110,7 +105,7 @@ Activation parse_activation(const std::string& name, Position position, const st
   const ActivationDef* d = known ? &activation_def(a) : nullptr;
   if (d && (position == Position::hidden ? d->hidden : d->output)) return a;
   const char* where = position == Position::hidden ? "hidden layers" : "the output layer";
-  const std::string valid = " (valid: " + joined(activation_names(position)) + ")";
+  const std::string valid = " (valid: " + io::join(activation_names(position)) + ")";
   if (d) throw std::invalid_argument(option + " '" + name + "' cannot be used for " + where + valid);
   throw std::invalid_argument("unknown " + option + " '" + name + "'" + valid);
 }

@@ -6,6 +6,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "io/text.h"
 #include "nn/registry_name.h"
 
 namespace sn::nn {
@@ -51,12 +52,6 @@ Defs& registry() {
     return d;
   }();
   return defs;
-}
-
-std::string joined(const std::vector<std::string>& names) {
-  std::string s;
-  for (const auto& n : names) s += (s.empty() ? "" : ", ") + n;
-  return s;
 }
 
 std::string g(double v) {
@@ -135,7 +130,7 @@ bool find_encoding(const std::string& name, Encoding* out) {
 Encoding parse_encoding(const std::string& name) {
   Encoding e;
   if (find_encoding(name, &e)) return e;
-  throw std::invalid_argument("unknown encoding '" + name + "' (valid: " + joined(encoding_names()) + ")");
+  throw std::invalid_argument("unknown encoding '" + name + "' (valid: " + io::join(encoding_names()) + ")");
 }
 
 InputEncoding default_encoding(Encoding kind, const std::string& input, int offset, int width) {
