@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <stdexcept>
 #include <unistd.h>
@@ -51,12 +52,32 @@ Image read_from(std::unique_ptr<OIIO::ImageInput> in, const std::string& what) {
   in->close();
   return img;
 }
+
+
+// A DDS header that declares depth (DDSD_DEPTH) > 1 is a volume whatever its caps say: without
+// the volume cap OpenImageIO reports one slice and then reads all of them (a 253-byte file kept
+// it busy for minutes; found by tests/fuzz). Read from the raw header before OpenImageIO opens it.
+void refuse_dds_volume(const std::string& path, const std::string& what) {
+  unsigned char h[28] = {};
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f) return;  // OpenImageIO names the problem
+  const std::size_t got = std::fread(h, 1, sizeof h, f);
+  std::fclose(f);
+  auto u32 = [&](int at) { return uint32_t(h[at]) | uint32_t(h[at + 1]) << 8 | uint32_t(h[at + 2]) << 16 | uint32_t(h[at + 3]) << 24; };
+  if (got < sizeof h || std::memcmp(h, "DDS ", 4) != 0) return;
+  const uint32_t flags = u32(8), height = u32(12), width = u32(16), depth = u32(24);
+  if ((flags & 0x800000u) && depth > 1)
+    throw std::runtime_error(what + ": a volume image (" + std::to_string(width) + "x" + std::to_string(height) + "x" +
+                             std::to_string(depth) + "); shadenet reads 2-D images");
+}
 }  // namespace
 
 Image load_image(const std::string& path) {
   if (!fs::exists(path)) throw std::runtime_error("image file '" + path + "' does not exist");
   if (!fs::is_regular_file(path)) throw std::runtime_error("image file '" + path + "' is not a regular file");
-  return read_from(OIIO::ImageInput::open(path), "image file '" + path + "'");
+  const std::string what = "image file '" + path + "'";
+  refuse_dds_volume(path, what);
+  return read_from(OIIO::ImageInput::open(path), what);
 }
 
 Image decode_image(const std::vector<unsigned char>& bytes, const std::string& what) {
