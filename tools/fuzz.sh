@@ -9,6 +9,8 @@
 # build-fuzz/logs/TARGET.log. A crash, hang (30 s) or memory blow-up (8 GiB) saves the input under
 # build-fuzz/crashes/TARGET/ and makes the script fail: once fixed, commit that file under
 # tests/fuzz/crashes/TARGET/, where every build replays it as the test fuzz.TARGET.
+# SHADENET_FUZZ_SEED=N fixes libFuzzer's random seed (CI does, so a failure there reproduces);
+# unset, each run explores differently.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
@@ -29,7 +31,7 @@ for t in "${targets[@]}"; do
   echo "== fuzz_$t: ${seconds} s =="
   # Leaks are not what this looks for (OpenImageIO and LuaJIT keep process-wide caches).
   if ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-     "build-fuzz/tests/fuzz/fuzz_$t" -max_total_time="$seconds" -timeout=30 -rss_limit_mb=8192 \
+     "build-fuzz/tests/fuzz/fuzz_$t" -seed="${SHADENET_FUZZ_SEED:-0}" -max_total_time="$seconds" -timeout=30 -rss_limit_mb=8192 \
        -close_fd_mask=3 -print_final_stats=1 -artifact_prefix="$crashes/" "${inputs[@]}" >"$log" 2>&1; then
     grep -E "^#[0-9]+[[:space:]]+DONE|stat::number_of_executed_units|stat::peak_rss_mb" "$log" || tail -3 "$log"
   else
