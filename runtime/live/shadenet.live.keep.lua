@@ -80,9 +80,7 @@ end
 function sn.forget(name)
   if name == nil then S.kept = {} return end
   if S.kept[name] == nil then
-    local names = {}
-    for n in pairs(S.kept) do names[#names + 1] = n end
-    table.sort(names)
+    local names = sn.kept()
     error(("sn.forget: nothing kept under '%s' (kept: %s)"):format(tostring(name),
       #names > 0 and table.concat(names, ", ") or "none"), 2)
   end
