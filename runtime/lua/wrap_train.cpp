@@ -74,6 +74,7 @@ void push_result(lua_State* L, const nn::NetResult& r, const nn::JobResult& job)
 // sn.train{ nets = {net, ...} | net, data = dataset, epochs = 20, batch = 8,
 //           adam = { lr = 2.5e-4, beta1 = 0.8, beta2 = 0.9, eps = 1e-7 }, seed = 1,
 //           backend = "auto" | "cpu" | "gl", keep = "last" | "best", progress = function(e),
+//           tick = function(t), tick_seconds = 0.1,
 //           loss = "l2" | "l1" | "relative_l2" | "huber" | { "huber", delta = 1 },
 //           divergence_factor = 100 }
 // The first Ctrl-C, or progress returning "stop", ends the job at the next step boundary; the
@@ -104,8 +105,8 @@ nn::Loss read_loss(lua_State* L, int idx) {
 }
 
 int w_train(lua_State* L) {
-  Options o(L, 1, "sn.train", {"nets", "data", "epochs", "batch", "adam", "seed", "backend", "keep", "progress", "loss",
-                                     "divergence_factor"});
+  Options o(L, 1, "sn.train", {"nets", "data", "epochs", "batch", "adam", "seed", "backend", "keep", "progress", "tick",
+                                     "tick_seconds", "loss", "divergence_factor"});
   nn::TrainJob job;
   // Keep every network (and the dataset) referenced from this stack frame while training runs.
   std::vector<std::shared_ptr<nn::Mlp>> hold;
@@ -169,38 +170,69 @@ int w_train(lua_State* L) {
   // One stop flag for Ctrl-C and progress's "stop" (the job reads it at every step boundary).
   std::atomic<bool> stop{false};
   job.stop = &stop;
-  int progress = o.push("progress");
-  if (!lua_isnil(L, progress)) {
-    if (!lua_isfunction(L, progress)) throw Error("sn.train option 'progress': function expected, got " + type_name_at(L, progress));
-    // Runs on this thread between epochs. Returning "stop" sets the stop flag; a Lua error
-    // inside stops the job too, which keeps what was trained and then raises it (pcall, then a
-    // C++ exception: a longjmp must not cross the trainer's frames).
-    const bool l2 = c.loss.kind == nn::LossKind::l2;
-    job.progress = [L, progress, l2, &stop](const nn::ProgressEvent& e) {
-      lua_pushvalue(L, progress);
-      lua_createtable(L, 0, 5);
-      set_number(L, "net", e.net + 1);
-      set_number(L, "epoch", e.epoch);
-      set_number(L, "train_loss", e.train_loss);
-      if (l2) set_number(L, "train_mse", e.train_loss);
-      set_number(L, "val_loss", e.val_loss);
-      set_number(L, "val_mse", e.val_mse);
-      if (lua_pcall(L, 1, 1, 0) != 0) {
-        std::string msg = lua_isstring(L, -1) ? lua_tostring(L, -1) : "(error object is not a string)";
-        lua_pop(L, 1);
-        throw Error("sn.train: the progress function failed: " + msg);
-      }
-      const bool is_stop = lua_type(L, -1) == LUA_TSTRING && std::string(lua_tostring(L, -1)) == "stop";
-      if (!is_stop && !lua_isnil(L, -1)) {
-        std::string got = type_name_at(L, -1);
-        if (lua_type(L, -1) == LUA_TSTRING) got.append(" '").append(lua_tostring(L, -1)).append("'");
-        lua_pop(L, 1);
-        throw Error("sn.train: the progress function returned " + got +
-                    "; return \"stop\" to end training, or nothing to go on");
-      }
+  // The progress and tick functions run on this thread (between epochs; about every
+  // tick_seconds during them). Returning "stop" sets the stop flag; a Lua error inside stops the
+  // job too, which keeps what was trained and then raises it (pcall, then a C++ exception: a
+  // longjmp must not cross the trainer's frames).
+  auto hook = [L, &stop](int fn, const char* what, auto push_event) {
+    lua_pushvalue(L, fn);
+    push_event();
+    if (lua_pcall(L, 1, 1, 0) != 0) {
+      std::string msg = lua_isstring(L, -1) ? lua_tostring(L, -1) : "(error object is not a string)";
       lua_pop(L, 1);
-      if (is_stop) stop.store(true);
+      throw Error(std::string("sn.train: the ") + what + " function failed: " + msg);
+    }
+    const bool is_stop = lua_type(L, -1) == LUA_TSTRING && std::string(lua_tostring(L, -1)) == "stop";
+    if (!is_stop && !lua_isnil(L, -1)) {
+      std::string got = type_name_at(L, -1);
+      if (lua_type(L, -1) == LUA_TSTRING) got.append(" '").append(lua_tostring(L, -1)).append("'");
+      lua_pop(L, 1);
+      throw Error(std::string("sn.train: the ") + what + " function returned " + got +
+                  "; return \"stop\" to end training, or nothing to go on");
+    }
+    lua_pop(L, 1);
+    if (is_stop) stop.store(true);
+  };
+  auto function_option = [&](const char* name) {
+    int idx = o.push(name);  // a function stays on the stack for the job's duration
+    if (lua_isnil(L, idx)) {
+      lua_pop(L, 1);
+      return 0;
+    }
+    if (!lua_isfunction(L, idx))
+      throw Error(std::string("sn.train option '") + name + "': function expected, got " + type_name_at(L, idx));
+    return idx;
+  };
+  if (int progress = function_option("progress")) {
+    const bool l2 = c.loss.kind == nn::LossKind::l2;
+    job.progress = [L, progress, l2, hook](const nn::ProgressEvent& e) {
+      hook(progress, "progress", [&] {
+        lua_createtable(L, 0, 5);
+        set_number(L, "net", e.net + 1);
+        set_number(L, "epoch", e.epoch);
+        set_number(L, "train_loss", e.train_loss);
+        if (l2) set_number(L, "train_mse", e.train_loss);
+        set_number(L, "val_loss", e.val_loss);
+        set_number(L, "val_mse", e.val_mse);
+      });
     };
+  }
+  if (int tick = function_option("tick")) {
+    c.tick_seconds = o.number("tick_seconds", c.tick_seconds);
+    c.tick = [L, tick, hook](const nn::TickEvent& e) {
+      hook(tick, "tick", [&] {
+        lua_createtable(L, 0, 5);
+        set_number(L, "epoch", e.epoch);
+        set_number(L, "epochs", e.epochs);
+        set_number(L, "step", double(e.step));
+        set_number(L, "steps", double(e.steps));
+        // Of the whole job: epochs before this one count in full.
+        set_number(L, "fraction", (double(e.epoch - 1) * double(e.steps) + double(e.step)) /
+                                      (double(e.epochs) * double(std::max(1LL, e.steps))));
+      });
+    };
+  } else if (o.has("tick_seconds")) {
+    throw Error("sn.train option 'tick_seconds' needs a tick function (option 'tick')");
   }
 
   try {
@@ -213,7 +245,7 @@ int w_train(lua_State* L) {
     TrainInterrupt ctrl_c(&stop);
     r = nn::train(job);
   }
-  lua_pop(L, 1);  // progress
+  lua_settop(L, 1);  // the progress and tick functions
 
   if (backend == "auto") {
     static bool said = false;  // once per process: a sweep calls sn.train many times

@@ -1,6 +1,7 @@
 #include "nn/cpu_trainer.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -108,6 +109,7 @@ class CpuBackend : public Backend {
     std::vector<uint32_t> rows(static_cast<std::size_t>(steps * cfg.batch));
     std::vector<AdamStep> adam(static_cast<std::size_t>(steps));
     long long t = 0;  // Adam's step counter, the same for every net of the run
+    WatchBeat beat(cfg.tick ? cfg.tick_seconds : 1.0);  // the tick's, across epochs
     for (int e = 0; e < cfg.epochs; ++e) {
       if (cfg.stop_requested()) break;
       EpochShuffle perm(cfg.seed, uint32_t(e), n);
@@ -115,7 +117,10 @@ class CpuBackend : public Backend {
       for (long long s = 0; s < steps; ++s) adam[std::size_t(s)] = AdamStep::at(cfg, ++t);
 
       std::vector<char> finished(static_cast<std::size_t>(count), 0);
-      parallel_for(count, threads_, [&](int i) {
+      // Steps each net has applied in this epoch, for the tick (-1: not training this epoch).
+      std::vector<std::atomic<long long>> applied(static_cast<std::size_t>(count));
+      for (int i = 0; i < count; ++i) applied[i] = results[i].diverged ? -1 : 0;
+      auto train_epoch = [&](int i) {
         NetResult& r = results[i];
         if (r.diverged) return;
         CpuNet& net = *work[i];
@@ -123,6 +128,7 @@ class CpuBackend : public Backend {
         for (long long s = 0; s < steps; ++s) {
           if (cfg.stop_requested()) {
             r.interrupted = StopPoint{e + 1, s};
+            applied[i] = steps;
             return;
           }
           double loss;
@@ -130,10 +136,12 @@ class CpuBackend : public Backend {
           if (!net.step(rows_of[i]->train, data.train_y.data(), rows.data() + s * cfg.batch, cfg.batch,
                         adam[std::size_t(s)], &loss, &why)) {
             r.diverged = Divergence{e + 1, s + 1, why};
+            applied[i] = steps;
             return;
           }
           sum += loss;
           ++r.steps;
+          applied[i].store(s + 1, std::memory_order_relaxed);
         }
         const double val = net.mse(rows_of[i]->val, data.val_y.data(), data.val_count());
         const double val_loss =
@@ -142,7 +150,18 @@ class CpuBackend : public Backend {
         net.get_params(p.data());
         r.end_epoch(cfg, steps, sum / double(steps), val, val_loss, p.data(), p.size());
         finished[i] = 1;
-      });
+      };
+      if (cfg.tick) {
+        // The nets train on threads of their own; this thread ticks.
+        parallel_for_watched(count, threads_, beat, train_epoch, [&] {
+          long long sum = 0, nets = 0;
+          for (const auto& a : applied)
+            if (long long v = a.load(std::memory_order_relaxed); v >= 0) sum += v, ++nets;
+          cfg.tick(TickEvent{e + 1, cfg.epochs, nets ? sum / nets : steps, steps});
+        });
+      } else {
+        parallel_for(count, threads_, train_epoch);
+      }
       if (progress)
         for (int i = 0; i < count; ++i)
           if (finished[i])

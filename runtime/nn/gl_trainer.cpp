@@ -309,7 +309,9 @@ class Job {
   void time_chunks(Group& g, long long steps, double seconds) {
     if (opt_.steps_per_dispatch > 0 || steps < 1 || !(seconds > 0)) return;
     const double per_step = seconds / double(steps);
-    g.chunk = std::clamp((long long)(kDispatchSeconds / per_step), 1LL, g.max_chunk);
+    // With a tick, short enough for the caller to tick between dispatches on time.
+    const double target = cfg_.tick ? std::min(kDispatchSeconds, cfg_.tick_seconds) : kDispatchSeconds;
+    g.chunk = std::clamp((long long)(target / per_step), 1LL, g.max_chunk);
   }
 
   void diverge(NetRun& r, int epoch) {
@@ -337,8 +339,13 @@ class Job {
       if (!any || cfg_.stop_requested()) return;
       const auto t0 = std::chrono::steady_clock::now();
       dispatch(g, ctl, false, out);
-      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      const auto t1 = std::chrono::steady_clock::now();
+      const double seconds = std::chrono::duration<double>(t1 - t0).count();
       ++g.report.dispatches;
+      if (cfg_.tick && std::chrono::duration<double>(t1 - last_tick_).count() >= cfg_.tick_seconds) {
+        last_tick_ = t1;
+        tick(e);
+      }
       bool cut = false, cut_at_one = false;
       for (std::size_t k = 0; k < g.runs.size(); ++k) {
         if (ctl[k].limit <= 0) continue;
@@ -387,6 +394,15 @@ class Job {
         g.max_chunk = g.chunk;
       }
     }
+  }
+
+  // Every dispatch binds what it uses, so whatever the tick draws in between cannot disturb it.
+  void tick(int e) {
+    long long sum = 0, nets = 0;
+    for (const Group& g : groups_)
+      for (const NetRun& r : g.runs)
+        if (r.epochs_done == e) sum += r.active ? r.step : steps_, ++nets;
+    cfg_.tick(TickEvent{e + 1, cfg_.epochs, nets ? sum / nets : steps_, steps_});
   }
 
   std::vector<float> download_params(const Group& g, std::size_t k) {
@@ -460,6 +476,7 @@ class Job {
   DataBuffers buf_;
   std::vector<Group> groups_;
   std::vector<NetResult> results_;
+  std::chrono::steady_clock::time_point last_tick_ = std::chrono::steady_clock::now();
 };
 
 }  // namespace

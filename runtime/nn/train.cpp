@@ -97,6 +97,8 @@ void validate(const TrainJob& job) {
   if (!(c.eps > 0 && std::isfinite(c.eps))) fail("adam eps must be > 0, got " + io::number_text(c.eps));
   if (!(c.divergence.factor >= 1))
     fail("divergence_factor must be >= 1 (math.huge turns the rule off), got " + io::number_text(c.divergence.factor));
+  if (c.tick && !(c.tick_seconds > 0 && c.tick_seconds <= 3600))
+    fail("tick_seconds must be in (0, 3600], got " + io::number_text(c.tick_seconds));
   if (d.train_count() < 1) fail("the dataset has no training rows");
   if (d.val_count() < 1) fail("the dataset has no validation rows (split must leave some, e.g. split = 0.8)");
   if (std::size_t(c.batch) > d.train_count())
@@ -202,18 +204,22 @@ JobResult train(const TrainJob& job) {
     const float* x = s.encodings.empty() ? d.val_x.data() : encoded.data();
     cfg.initial_val_mse[std::size_t(i)] = net.mse(x, d.val_y.data(), d.val_count());
   });
-  std::exception_ptr progress_error;
-  Progress progress;
-  if (job.progress)
-    progress = [&](const ProgressEvent& e) {
-      if (progress_error) return;
+  // The first exception of the progress or tick function stops the job.
+  std::exception_ptr hook_error;
+  auto guarded = [&](auto hook) {
+    return [&hook_error, &stop, hook](const auto& event) {
+      if (hook_error) return;
       try {
-        job.progress(e);
+        hook(event);
       } catch (...) {
-        progress_error = std::current_exception();
+        hook_error = std::current_exception();
         stop.store(true);
       }
     };
+  };
+  Progress progress;
+  if (job.progress) progress = guarded(job.progress);
+  if (cfg.tick) cfg.tick = guarded(job.config.tick);
 
   const auto t0 = std::chrono::steady_clock::now();
   out.nets = backend->train(nets, *job.data, cfg, progress);
@@ -245,8 +251,8 @@ JobResult train(const TrainJob& job) {
   parallel_for(int(nets.size()), default_threads(), [&](int i) {
     out.nets[i].dead_units = dead_unit_fractions(*job.nets[i], d.val_x.data(), d.val_count());
   });
-  // The nets keep what was trained; then the progress function's error goes on to the caller.
-  if (progress_error) std::rethrow_exception(progress_error);
+  // The nets keep what was trained; then the progress or tick function's error goes on to the caller.
+  if (hook_error) std::rethrow_exception(hook_error);
   return out;
 }
 

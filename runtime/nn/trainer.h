@@ -71,6 +71,15 @@ struct DivergenceRule {
   float sample_limit(double initial_val_mse, int outputs) const;  // +inf: no bound
 };
 
+// Where a run is, for a tick (TrainConfig::tick): epoch `epoch` (1-based) of `epochs` is under
+// way and its nets have applied `step` of its `steps` steps (the mean over the nets that began
+// the epoch; one that stopped counts as done).
+struct TickEvent {
+  int epoch = 0, epochs = 0;
+  long long step = 0, steps = 0;
+};
+using Tick = std::function<void(const TickEvent&)>;
+
 struct TrainConfig {
   int epochs = 20;
   int batch = 8;
@@ -81,6 +90,11 @@ struct TrainConfig {
   // The job's stop flag (nullptr: never stops early). Backends read it at every step boundary.
   const std::atomic<bool>* stop = nullptr;
   bool stop_requested() const { return stop && stop->load(std::memory_order_relaxed); }
+  // Called on the thread that called train() about every tick_seconds while epochs run (not
+  // only between them): a window keeps drawing during an epoch of any length. It may set the
+  // stop flag; it never changes what is computed. Empty: the backends work as without it.
+  Tick tick;
+  double tick_seconds = 0.1;
   // Per net, the untrained weights' validation MSE as the job measured it (on the cpu, so that
   // every backend starts the divergence rule from the same numbers); NaN or missing: the
   // backend measures it.
