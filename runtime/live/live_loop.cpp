@@ -497,8 +497,8 @@ int Loop::tick_thunk(lua_State* L) {
   return 1;
 }
 
-// Between epochs or recorded frames: at most every 50 ms (at least 10 pictures a second while
-// the work reports at least that often), show the last picture with the progress bar and read
+// During training (sn.train's tick) or between recorded frames: at most every 40 ms (at least
+// 10 pictures a second while the work ticks at least that often), show the last picture with the progress bar and read
 // the window's events; true when the user cancelled (or closed the window).
 bool Loop::tick(const std::string& text, double fraction) {
   hud_.set_progress(text, fraction);
@@ -509,7 +509,7 @@ bool Loop::tick(const std::string& text, double fraction) {
     if (!shown_path_.empty() && since >= 1) present();
     return false;
   }
-  if (since < 0.05) return false;
+  if (since < 0.04) return false;  // work that ticks every 50 ms is shown at each tick
   last_tick_ = now;
   ctx_.poll(0);  // input callbacks run; the view they change is drawn after the work
   bool cancel = input_.take_cancel();

@@ -1,6 +1,6 @@
--- Long work inside a live session (training, recording) keeps the window alive: after each
--- epoch and before each recorded frame it calls the loop's tick, which shows the last good
--- picture with a progress bar (at most every 50 ms), reads the keys and says when the user
+-- Long work inside a live session (training, recording) keeps the window alive: during training
+-- and before each recorded frame it calls the loop's tick, which shows the last good
+-- picture with a progress bar (sn.train ticks every 50 ms), reads the keys and says when the user
 -- cancelled (Esc). Outside the live loop nothing changes.
 local sn = require "shadenet.core"
 local S = require "shadenet.live.state"
@@ -15,26 +15,41 @@ function busy.tick(text, fraction)
   if tick(text, fraction or 0) then error("cancelled by the user (Esc)", 0) end
 end
 
--- sn.train with the job's progress in the window (epoch, validation MSE, ETA), then the
--- script's own progress function if it gave one.
+-- sn.train with the job's progress in the window (epoch, step, validation MSE, ETA) about
+-- every 50 ms, within epochs too, then the script's own progress and tick functions if it gave
+-- them. Esc stops the training at its next step and fails the run, so the last good state stays.
 local plain_train = sn.train
 function sn.train(o)
   if not (S.active and live._tick) or type(o) ~= "table" then return plain_train(o) end
   local copy = {}
   for k, v in pairs(o) do copy[k] = v end
   local nets = type(o.nets) == "table" and #o.nets or 1
-  local epochs = type(o.epochs) == "number" and o.epochs or nil
-  local t0, user, done = sn.clock(), o.progress, 0
+  local t0, user_progress, user_tick = sn.clock(), o.progress, o.tick
+  local val_mse, cancelled = "", false
   copy.progress = function(e)
-    if user then user(e) end
-    done = done + 1
-    local fraction = epochs and done / (epochs * nets)
-    local eta = fraction and (sn.clock() - t0) * (1 - fraction) / fraction
-    busy.tick(("training%s: epoch %d%s  val MSE %.3g%s  (Esc cancels)"):format(
-      nets > 1 and (" net %d/%d"):format(e.net, nets) or "", e.epoch, epochs and "/" .. epochs or "",
-      e.val_mse, eta and ("  ETA %.1f s"):format(eta) or ""), fraction or 0)
+    val_mse = nets > 1 and "" or ("  val MSE %.3g"):format(e.val_mse)
+    if user_progress then return user_progress(e) end
   end
-  return plain_train(copy)  -- a tail call: errors still name the script's line
+  copy.tick = function(t)
+    local eta = t.fraction > 0 and (sn.clock() - t0) * (1 - t.fraction) / t.fraction
+    local text = ("training%s: epoch %d/%d, step %d/%d%s%s  (Esc cancels)"):format(
+      nets > 1 and (" %d nets"):format(nets) or "", t.epoch, t.epochs, t.step, t.steps, val_mse,
+      eta and ("  ETA %.1f s"):format(eta) or "")
+    if live._tick(text, t.fraction) then
+      cancelled = t
+      return "stop"
+    end
+    if user_tick then return user_tick(t) end
+  end
+  copy.tick_seconds = math.min(0.05, type(o.tick_seconds) == "number" and o.tick_seconds or 0.05)
+  -- Errors name the script's line (level 2), not this wrapper's.
+  local ok, results = pcall(plain_train, copy)
+  if not ok then error(results, 2) end
+  if cancelled then
+    error(("sn.train: cancelled by the user (Esc) in epoch %d of %d; the last good state stays"):format(
+      cancelled.epoch, cancelled.epochs), 2)
+  end
+  return results
 end
 
 return busy
