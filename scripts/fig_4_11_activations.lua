@@ -60,7 +60,9 @@ for _, a in ipairs(acts) do
     end
     x[e], y[e] = e, stats.median(vals) or 0 / 0
   end
-  series[#series + 1] = { name = a.label, x = x, y = y }
+  -- The thesis' four solid, the added activations dashed, the "out" variants dotted.
+  local thesis_four = a.id == "tanh" or a.id == "sigmoid" or a.id == "relu" or a.id:match("^leaky%d+$")
+  series[#series + 1] = { name = a.label, x = x, y = y, dash = a.output_activation and 3 or (not thesis_four and 2 or nil) }
   local ids = {}
   for seed = 1, seeds do ids[seed] = string.format("%s-s%02d", a.id, seed) end
   local best = exp.median_of(records, ids, "best_val_mse")
@@ -87,7 +89,8 @@ series[#series + 1] = { name = "all-zeros output", x = { 1, epochs }, y = { base
 series[#series + 1] = { name = "constant predictor", x = { 1, epochs }, y = { base.constant, base.constant }, color = "#bbbbbb" }
 E:plot("plots/fig_4_11_activations.png", {
   title = string.format("Figure 4.11 — GGX, 8 x 8, lr 0.00003: validation MSE by activation (median of %d seeds)", seeds),
-  xlabel = "epoch", ylabel = "validation MSE", logy = true, logx = epochs >= 100, series = series })
+  xlabel = "epoch", ylabel = "validation MSE", logy = true, logx = epochs >= 100, series = series,
+  width = 1100, key = "outside right top" })
 
 E.R:table {
   title = "Figure 4.11 — activations: best and final validation MSE, and dead units",
