@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <stdexcept>
+#include <string>
 
 #include "io/text.h"
 
@@ -30,6 +32,21 @@ int guarded(lua_State* L, int (*f)(lua_State*)) {
   g_running = outer;
   // Outside the catch: every C++ destructor has run before the longjmp.
   return failed ? lua_error(L) : results;
+}
+
+std::string caller_line(lua_State* L) {
+  luaL_where(L, 1);
+  std::string where = lua_tostring(L, -1);
+  lua_pop(L, 1);
+  if (where.size() > 2 && where.compare(where.size() - 2, 2, ": ") == 0) where.pop_back(), where.back() = ' ';
+  return where;
+}
+
+void pcall_or_throw(lua_State* L, int nargs, int nresults, const std::string& what) {
+  if (lua_pcall(L, nargs, nresults, 0) == 0) return;
+  std::string msg = lua_isstring(L, -1) ? lua_tostring(L, -1) : "(error object is not a string)";
+  lua_pop(L, 1);
+  throw std::runtime_error(what + " failed: " + msg);
 }
 
 void define_type(lua_State* L, const char* type, const luaL_Reg* methods, lua_CFunction tostring_fn,

@@ -102,6 +102,12 @@ void define_box_type(lua_State* L, const char* type, const luaL_Reg* methods, lu
   lua_pop(L, 2);
 }
 
+// The script line calling the running C function and a space, "file.lua:12 " (empty when not
+// known: called through pcall).
+std::string caller_line(lua_State* L);
+// lua_pcall; an error becomes std::runtime_error("WHAT failed: message"), popped.
+void pcall_or_throw(lua_State* L, int nargs, int nresults, const std::string& what);
+
 // ---- plain values ----
 double check_number(lua_State* L, int idx, const char* what);
 long long check_integer(lua_State* L, int idx, const char* what);  // within +-2^53

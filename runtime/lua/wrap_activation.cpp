@@ -17,11 +17,7 @@ std::function<double(double, double)> lua_twin(lua_State* defined_on, int ref, c
     lua_State* L = running_state(defined_on);
     lua_rawgeti(L, LUA_REGISTRYINDEX, ref);
     lua_pushnumber(L, z);
-    if (lua_pcall(L, 1, 1, 0) != 0) {
-      std::string msg = lua_isstring(L, -1) ? lua_tostring(L, -1) : "(error object is not a string)";
-      lua_pop(L, 1);
-      throw std::runtime_error(what + " failed: " + msg);
-    }
+    pcall_or_throw(L, 1, 1, what);
     if (lua_type(L, -1) != LUA_TNUMBER) {
       std::string t = luaL_typename(L, -1);
       lua_pop(L, 1);
@@ -46,11 +42,7 @@ int w_define(lua_State* L) {
   d.name = o.string("name");
   d.glsl = o.string("glsl");
   d.grad = o.string("grad");
-  luaL_where(L, 1);
-  std::string where = lua_tostring(L, -1);
-  lua_pop(L, 1);
-  if (where.size() > 2 && where.compare(where.size() - 2, 2, ": ") == 0) where.resize(where.size() - 2);
-  d.origin = where + " activation " + d.name;
+  d.origin = caller_line(L) + "activation " + d.name;
   d.f = lua_twin(L, function_ref(L, o, "lua"), "activation '" + d.name + "': lua");
   d.df = lua_twin(L, function_ref(L, o, "lua_grad"), "activation '" + d.name + "': lua_grad");
   try {

@@ -1,10 +1,15 @@
 // sn.encoding: the input encodings of nn/encoding.h as scripts write them in sn.mlp{ encoding =
-// {...} }, and the names of those registered.
+// {...} }, a user's own (sn.encoding.define: GLSL + a Lua twin), and the names registered.
 #include <algorithm>
+#include <functional>
+#include <map>
 #include <string>
+#include <tuple>
+#include <vector>
 
 #include "lua/encoding_binding.h"
 #include "lua/module.h"
+#include "nn/encoding_define.h"
 #include "scene/gbuffer.h"
 
 namespace sn::lua {
@@ -92,6 +97,142 @@ nn::InputEncoding check_one(lua_State* L, int idx, const std::string& input, int
   return e;
 }
 
+// The twin of a user's encoding: lua(x, n, include_input, range) -> { outputs } for the w
+// components x[1..w], called on the Lua thread of the binding running now (the encoding is
+// marked caller_thread, so nothing calls it from another thread).
+std::function<void(const nn::InputEncoding&, const double*, double*)> lua_row_twin(lua_State* defined_on, int ref,
+                                                                                  const std::string& name) {
+  return [defined_on, ref, name](const nn::InputEncoding& e, const double* x, double* out) {
+    lua_State* L = running_state(defined_on);
+    const int outputs = e.out_width();
+    const std::string what = "encoding '" + name + "': lua";
+    lua_rawgeti(L, LUA_REGISTRYINDEX, ref);
+    lua_createtable(L, e.width, 0);
+    for (int c = 0; c < e.width; ++c) {
+      lua_pushnumber(L, x[c]);
+      lua_rawseti(L, -2, c + 1);
+    }
+    lua_pushinteger(L, e.n);
+    lua_pushboolean(L, e.include_input);
+    lua_createtable(L, 2, 0);
+    lua_pushnumber(L, e.lo);
+    lua_rawseti(L, -2, 1);
+    lua_pushnumber(L, e.hi);
+    lua_rawseti(L, -2, 2);
+    pcall_or_throw(L, 4, 1, what);
+    const int got = lua_istable(L, -1) ? int(lua_objlen(L, -1)) : -1;
+    if (got != outputs) {
+      const std::string t = got < 0 ? std::string("a ") + luaL_typename(L, -1) : std::to_string(got) + " numbers";
+      lua_pop(L, 1);
+      throw std::invalid_argument(what + " returned " + t + "; outputs says " + std::to_string(outputs) + " for an input of " +
+                                  std::to_string(e.width));
+    }
+    for (int j = 0; j < outputs; ++j) {
+      lua_rawgeti(L, -1, j + 1);
+      if (lua_type(L, -1) != LUA_TNUMBER) {
+        const std::string t = luaL_typename(L, -1);
+        lua_pop(L, 2);
+        throw std::invalid_argument(what + " returned a " + t + " as output " + std::to_string(j + 1) + ", not a number");
+      }
+      out[j] = lua_tonumber(L, -1);
+      lua_pop(L, 1);
+    }
+    lua_pop(L, 1);
+  };
+}
+
+// sn.encoding.define{ name, glsl = "body: output j of x", lua = function(x, n, include_input, range),
+//                     outputs = n | function(w, n, include_input), count = { "bands", min, max, default },
+//                     include_input = default, range = true, input_width = w }
+int w_define(lua_State* L) {
+  Options o(L, 1, "sn.encoding.define",
+            {"name", "glsl", "lua", "outputs", "count", "include_input", "range", "input_width"});
+  nn::EncodingDef d;
+  d.name = o.string("name");
+  d.glsl = o.string("glsl");
+  d.origin = caller_line(L) + "encoding " + d.name;
+  d.caller_thread = true;
+  d.input_width = o.int32("input_width", 0);
+  if (d.input_width < 0 || d.input_width > 4) throw Error(o.where("input_width") + ": 1..4 (or none: any width)");
+  d.has_include_input = o.has("include_input");
+  d.include_input_default = o.boolean("include_input", false);
+  d.has_range = o.boolean("range", false);
+  const int count = o.push("count");
+  if (!lua_isnil(L, count)) {
+    const std::string where = o.where("count");
+    if (!lua_istable(L, count))
+      throw Error(where + ": { name, min = .., max = .., default = .. } expected, got " + type_name_at(L, count));
+    d.count_min = 1;
+    d.count_max = d.count_default = -1;
+    lua_pushnil(L);
+    while (lua_next(L, count)) {
+      const std::string key = lua_type(L, -2) == LUA_TSTRING ? lua_tostring(L, -2) : "";
+      const bool first = lua_type(L, -2) == LUA_TNUMBER && lua_tonumber(L, -2) == 1;
+      if (first && lua_type(L, -1) == LUA_TSTRING) d.count = lua_tostring(L, -1);
+      else if (key == "min") d.count_min = check_int32(L, -1, (where + " min").c_str());
+      else if (key == "max") d.count_max = check_int32(L, -1, (where + " max").c_str());
+      else if (key == "default") d.count_default = check_int32(L, -1, (where + " default").c_str());
+      else throw Error(where + ": valid entries are [1] = the option's name (\"bands\"), min, max and default");
+      lua_pop(L, 1);
+    }
+    if (d.count_max < 0) throw Error(where + ": max is required");
+    if (d.count_default < 0) d.count_default = d.count_min;
+    if (d.count == "include_input" || d.count == "range" || d.count.empty())
+      throw Error(o.where("count") + ": '" + d.count + "' cannot name the count");
+    if (!(d.count_min >= 1 && d.count_min <= d.count_default && d.count_default <= d.count_max && d.count_max <= 64))
+      throw Error(o.where("count") + ": needs 1 <= min <= default <= max <= 64, got min " + std::to_string(d.count_min) +
+                  ", default " + std::to_string(d.count_default) + ", max " + std::to_string(d.count_max));
+  }
+  lua_pop(L, 1);
+  // The output count of every case the encoding accepts, taken once here: widths are read on any
+  // thread, where Lua cannot run.
+  std::map<std::tuple<int, int, bool>, int> widths;
+  const int outputs = o.push("outputs");
+  const bool fixed = lua_type(L, outputs) == LUA_TNUMBER;
+  if (!fixed && !lua_isfunction(L, outputs))
+    throw Error(o.where("outputs") + ": a number or function(w, n, include_input) expected, got " +
+                type_name_at(L, outputs));
+  for (int w = 1; w <= 4; ++w) {
+    if (d.input_width && w != d.input_width) continue;
+    for (int n = d.count.empty() ? 0 : d.count_min; n <= (d.count.empty() ? 0 : d.count_max); ++n)
+      for (bool keep : {false, true}) {
+        if (keep && !d.has_include_input) continue;
+        int v;
+        if (fixed) {
+          v = check_int32(L, outputs, o.where("outputs").c_str());
+        } else {
+          lua_pushvalue(L, outputs);
+          lua_pushinteger(L, w);
+          lua_pushinteger(L, n);
+          lua_pushboolean(L, keep);
+          pcall_or_throw(L, 3, 1, "sn.encoding.define option 'outputs'");
+          v = lua_type(L, -1) == LUA_TNUMBER ? check_int32(L, -1, o.where("outputs").c_str()) : -1;
+          lua_pop(L, 1);
+        }
+        widths[{w, n, keep}] = v;
+      }
+  }
+  lua_pop(L, 1);
+  d.out_width = [widths](int w, int n, bool keep) {
+    const auto it = widths.find({w, n, keep});
+    return it == widths.end() ? 0 : it->second;
+  };
+  const int fn = o.push("lua");
+  if (!lua_isfunction(L, fn)) throw Error(o.where("lua") + ": function expected, got " + type_name_at(L, fn));
+  d.f_row = lua_row_twin(L, luaL_ref(L, LUA_REGISTRYINDEX), d.name);
+  d.f = [row = d.f_row](const nn::InputEncoding& e, const double* x, int j) {
+    std::vector<double> out(static_cast<std::size_t>(e.out_width()));
+    row(e, x, out.data());
+    return out[std::size_t(j)];
+  };
+  try {
+    nn::define_encoding(std::move(d));
+  } catch (const std::exception& e) {
+    throw Error(std::string("sn.encoding.define: ") + e.what());
+  }
+  return 0;
+}
+
 // sn.encoding.names() -> the encodings sn.mlp accepts
 int w_names(lua_State* L) {
   push_strings(L, nn::encoding_names());
@@ -154,7 +295,7 @@ void push_encodings(lua_State* L, const std::vector<nn::InputEncoding>& encoding
 }
 
 void open_encoding(lua_State* L) {
-  static const luaL_Reg fns[] = {SN_FN("names", w_names), {nullptr, nullptr}};
+  static const luaL_Reg fns[] = {SN_FN("define", w_define), SN_FN("names", w_names), {nullptr, nullptr}};
   lua_newtable(L);
   luaL_register(L, nullptr, fns);
   lua_setfield(L, -2, "encoding");

@@ -19,6 +19,7 @@
 
 #include "io/atomic_write.h"
 #include "io/hash.h"
+#include "io/text.h"
 #include "io/read_file.h"
 
 namespace sn::nn {
@@ -152,6 +153,14 @@ void save_checkpoint(const Mlp& net, const std::string& path) {
     entries.emplace_back("activation " + d.name + " glsl", d.glsl);
     entries.emplace_back("activation " + d.name + " grad", d.grad);
   }
+  // A user's encoding too: its GLSL.
+  for (const auto& e : net.spec.encodings) {
+    const EncodingDef& d = encoding_def(e.kind);
+    const std::string key = "encoding " + d.name + " glsl";
+    if (is_builtin(e.kind) || std::any_of(entries.begin(), entries.end(), [&](const auto& kv) { return kv.first == key; }))
+      continue;
+    entries.emplace_back(key, d.glsl);
+  }
   if (!entries.empty()) {
     p.str("entries");
     p.put(uint32_t(entries.size()));
@@ -230,6 +239,8 @@ Mlp load_checkpoint(const std::string& path) {
       throw std::runtime_error(path + ": checkpoint refused: its best-epoch snapshot's " + bad);
   }
   std::map<std::string, std::string> defs;  // "NAME glsl" / "NAME grad" -> text
+  std::map<std::string, std::string> encoding_defs;  // "NAME glsl" -> a user's encoding's text
+  std::vector<std::string> encoding_kinds;  // per s.encodings entry
   while (r.pos != payload.size()) {
     const std::string tag = r.str("sections");
     if (tag == "conditions") {
@@ -261,13 +272,7 @@ Mlp load_checkpoint(const std::string& path) {
         e.include_input = r.get<uint8_t>("encodings") != 0;
         e.lo = r.get<double>("encodings");
         e.hi = r.get<double>("encodings");
-        if (!find_encoding(kind, &e.kind))
-          throw std::runtime_error(path + ": the network encodes input '" + e.input + "' with '" + kind +
-                                   "', which this build does not know (valid: " + [] {
-                                     std::string v;
-                                     for (const auto& name : encoding_names()) v += (v.empty() ? "" : ", ") + name;
-                                     return v;
-                                   }() + ")");
+        encoding_kinds.push_back(kind);  // resolved after the entries, which may define it
         s.encodings.push_back(e);
       }
     } else if (tag == "entries") {
@@ -280,6 +285,7 @@ Mlp load_checkpoint(const std::string& path) {
         if (key == "omega" && number) s.omega = v;
         else if (key == "alpha" && number) s.alpha = v;
         else if (key.rfind("activation ", 0) == 0) defs[key.substr(11)] = value;
+        else if (key.rfind("encoding ", 0) == 0) encoding_defs[key.substr(9)] = value;
         else throw std::runtime_error(path + ": checkpoint entry '" + key + "' = '" + value + "' is not one this build reads");
       }
     } else {
@@ -287,6 +293,24 @@ Mlp load_checkpoint(const std::string& path) {
     }
   }
   if (r.pos != payload.size()) throw std::runtime_error(path + ": checkpoint has unread bytes after the network");
+  // Encodings by name; a user's one must be defined, as the checkpoint recorded it.
+  for (std::size_t k = 0; k < s.encodings.size(); ++k) {
+    InputEncoding& e = s.encodings[k];
+    const std::string& kind = encoding_kinds[k];
+    const auto glsl = encoding_defs.find(kind + " glsl");
+    const bool recorded = glsl != encoding_defs.end();
+    if (!find_encoding(kind, &e.kind)) {
+      if (recorded)
+        throw std::runtime_error(path + ": the network encodes input '" + e.input + "' with '" + kind +
+                                 "', which is not defined; define it before sn.load with sn.encoding.define{ name = \"" +
+                                 kind + "\", glsl = \"" + glsl->second + "\", lua = ..., outputs = ... }");
+      throw std::runtime_error(path + ": the network encodes input '" + e.input + "' with '" + kind +
+                               "', which this build does not know (valid: " + io::join(encoding_names()) + ")");
+    }
+    if (recorded && encoding_def(e.kind).glsl != glsl->second)
+      throw std::runtime_error(path + ": encoding '" + kind + "' is defined differently from the network's (glsl = \"" +
+                               glsl->second + "\")");
+  }
   try {
     s.validate();  // the encodings, before they size anything
   } catch (const std::invalid_argument& e) {

@@ -96,7 +96,8 @@ std::size_t cpu_render(const Mlp& net, const scene::GBuffer& g, const RenderInpu
   const std::vector<InputEncoding>& encodings = net.spec.encodings;
   const shading::ColorSpace color = net.spec.color;
   const int bands = (bh + kBandRows - 1) / kBandRows;
-  const int threads = std::max(1, std::min(default_threads(), bands));
+  // A user's encoding (a Lua function) runs on this thread alone.
+  const int threads = single_threaded(encodings) ? 1 : std::max(1, std::min(default_threads(), bands));
   std::atomic<int> next{0};
   std::atomic<std::size_t> nonfinite{0};
   std::vector<const float*> src(na);

@@ -52,7 +52,8 @@ std::unique_ptr<EncodedRows> encode_data(const std::vector<InputEncoding>& encs,
   // In blocks of rows over the machine's threads (sin, cos, erfc per value add up).
   constexpr std::size_t kBlock = 4096;
   const std::size_t nt = (d.train_count() + kBlock - 1) / kBlock, nv = (d.val_count() + kBlock - 1) / kBlock;
-  parallel_for(int(nt + nv), threads, [&](int b) {
+  // A user's encoding (a Lua function) runs on this thread alone.
+  parallel_for(int(nt + nv), single_threaded(encs) ? 1 : threads, [&](int b) {
     const bool train = std::size_t(b) < nt;
     const std::size_t first = (train ? std::size_t(b) : std::size_t(b) - nt) * kBlock;
     const std::size_t count = std::min(kBlock, (train ? d.train_count() : d.val_count()) - first);

@@ -106,6 +106,23 @@ std::string InputEncoding::describe() const {
 
 Encoding register_encoding(EncodingDef def) { return Encoding(add(registry(), std::move(def), false)); }
 
+void unregister_encoding(Encoding e, const EncodingDef* previous) {
+  Defs& defs = registry();
+  if (is_builtin(e) || e.id < 0 || std::size_t(e.id) >= defs.size())
+    throw std::logic_error("unregister_encoding: not a user definition");
+  if (previous) defs[std::size_t(e.id)] = *previous;
+  else if (std::size_t(e.id) + 1 == defs.size()) defs.pop_back();
+  else throw std::logic_error("unregister_encoding: only the last definition can be removed");
+}
+
+bool is_builtin(Encoding e) { return e.id >= 0 && e.id < int(BuiltinEncoding::count); }
+
+bool single_threaded(const std::vector<InputEncoding>& encodings) {
+  for (const auto& e : encodings)
+    if (encoding_def(e.kind).caller_thread) return true;
+  return false;
+}
+
 const EncodingDef& encoding_def(Encoding e) {
   const Defs& defs = registry();
   if (e.id < 0 || std::size_t(e.id) >= defs.size()) throw std::out_of_range("no encoding with id " + std::to_string(e.id));

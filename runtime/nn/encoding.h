@@ -74,13 +74,20 @@ struct EncodingDef {
   // backend encodes whole datasets with it: oneblob shares each bin edge's CDF between two bins).
   std::function<void(const InputEncoding& e, const double* x, double* out)> f_row;
   std::string origin;  // where errors in the GLSL point: "built-in encoding frequency"
+  // The twins may run only on the thread that called into shadenet (a user's Lua function): rows
+  // of such an encoding are encoded on that thread alone (single_threaded()).
+  bool caller_thread = false;
 };
 
 // Registers a definition (its name must be new, or name an earlier user definition, which it
 // replaces); returns its handle. Throws for a bad name or a clash with a built-in.
 Encoding register_encoding(EncodingDef def);
+// Undoes the last register_encoding of a user definition that failed its checks
+// (nn/encoding_define.h): puts `previous` back, or removes the entry when there was none.
+void unregister_encoding(Encoding e, const EncodingDef* previous);
 const EncodingDef& encoding_def(Encoding e);
 const char* encoding_name(Encoding e);
+bool is_builtin(Encoding e);  // shipped with shadenet (not a user's definition)
 // Every registered name, in registry order.
 std::vector<std::string> encoding_names();
 bool find_encoding(const std::string& name, Encoding* out);
@@ -96,6 +103,10 @@ InputEncoding default_encoding(Encoding kind, const std::string& input, int offs
 // wrong: a count out of range, sh on an input that is not 3 wide, a range that is not finite
 // and increasing, an input wider than 4.
 void check(const InputEncoding& e);
+
+// True when some encoding's twin must run on the calling thread (EncodingDef::caller_thread):
+// rows are then encoded by that thread alone.
+bool single_threaded(const std::vector<InputEncoding>& encodings);
 
 // The encoded width of `inputs` raw inputs under `encodings` (disjoint groups).
 int encoded_width(const std::vector<InputEncoding>& encodings, int inputs);

@@ -39,6 +39,10 @@ RenderBackend choose_render_backend(const Mlp& net, const RenderOptions& o, std:
     return say(std::string("activation '") + activation_name(without) + "' has no cpu code (a GLSL definition)",
                RenderBackend::gl);
   if (storage) return say("weights = \"storage\" asks for the fragment shader", RenderBackend::gl);
+  for (const InputEncoding& e : net.spec.encodings)
+    if (encoding_def(e.kind).caller_thread)
+      return say(std::string("encoding '") + encoding_name(e.kind) + "' is a Lua definition (its cpu twin runs on one thread)",
+                 RenderBackend::gl);
   const gl::ContextInfo& info = gl::current().info();
   if (info.software)
     return say("software renderer (" + info.renderer + "): the native cpu kernels are faster", RenderBackend::cpu);

@@ -194,7 +194,11 @@ JobResult train(const TrainJob& job) {
   // measured by its backend): one number per net whichever backend trains it.
   const data::Dataset& d = *job.data;
   cfg.initial_val_mse.assign(nets.size(), std::numeric_limits<double>::quiet_NaN());
-  parallel_for(int(nets.size()), default_threads(), [&](int i) {
+  // A user's encoding (a Lua function) encodes rows on this thread only.
+  int threads = default_threads();
+  for (const Mlp* n : nets)
+    if (single_threaded(n->spec.encodings)) threads = 1;
+  parallel_for(int(nets.size()), threads, [&](int i) {
     const MlpSpec& s = nets[std::size_t(i)]->spec;
     if (activation_def(s.activation).simd < 0 || activation_def(s.output_activation).simd < 0) return;
     CpuNet net(s, nets[std::size_t(i)]->params.data());
@@ -248,7 +252,7 @@ JobResult train(const TrainJob& job) {
     if (job.keep == Keep::best && r.best_epoch > 0) net.params = r.best_params;
     net.touch();
   }
-  parallel_for(int(nets.size()), default_threads(), [&](int i) {
+  parallel_for(int(nets.size()), threads, [&](int i) {
     out.nets[i].dead_units = dead_unit_fractions(*job.nets[i], d.val_x.data(), d.val_count());
   });
   // The nets keep what was trained; then the progress or tick function's error goes on to the caller.

@@ -37,6 +37,9 @@ local function sh(x, y, z, degree)
   return out
 end
 
+-- References of encodings a test defines with sn.encoding.define: name -> function(e, x).
+M.user = {}
+
 -- One input group's components x (a list) under encoding e = { name, bands/bins/degree,
 -- include_input, range } (net:spec().encoding[input]).
 function M.encode_group(e, x)
@@ -71,6 +74,8 @@ function M.encode_group(e, x)
   elseif kind == "sh" then
     assert(#x == 3, "sh needs 3 components")
     for _, v in ipairs(sh(x[1], x[2], x[3], e.degree)) do put(v) end
+  elseif M.user[kind] then
+    for _, v in ipairs(M.user[kind](e, x)) do put(v) end
   else
     error("encoding_reference: no reference for encoding " .. tostring(kind))
   end

@@ -1,11 +1,41 @@
--- Input encodings (sn.mlp{ encoding = {...} }) against the Lua reference of each one
--- (tests/lua/encoding_reference.lua): what the first layer reads (net:encode, the double twins),
+-- Input encodings (sn.mlp{ encoding = {...} }), the built-ins and a user's (sn.encoding.define),
+-- against the Lua reference of each one (tests/lua/encoding_reference.lua): what the first layer reads (net:encode, the double twins),
 -- net:forward in a compute shader, the fragment shader of net:render, and two training steps on
 -- the cpu and the gl backend against a Lua reference that takes its gradients by central
 -- differences of the reference forward pass; checkpoints; net:spec() and tostring.
 local sn = require "shadenet"
 local encoding = require "encoding_reference"
 local forward = require("reference_forward").forward
+
+-- A user's encoding, defined in GLSL and Lua (sn.encoding.define), checked like the built-ins:
+-- the powers x, x^2, .. x^n of each component. Its reference is written apart from its twin.
+sn.encoding.define {
+  name = "polynomial",
+  count = { "degree", min = 1, max = 6, default = 3 },
+  outputs = function(w, n) return w * n end,
+  glsl = [[int c = j / n, k = j - c * n;
+  float p = x[c];
+  for (int i = 0; i < k; ++i) p *= x[c];
+  return p;]],
+  lua = function(x, n)
+    local out = {}
+    for _, v in ipairs(x) do
+      local p = v
+      for _ = 1, n do
+        out[#out + 1] = p
+        p = p * v
+      end
+    end
+    return out
+  end,
+}
+encoding.user.polynomial = function(e, x)
+  local out = {}
+  for c = 1, #x do
+    for k = 1, e.degree do out[#out + 1] = x[c] ^ k end
+  end
+  return out
+end
 
 local cases = {
   { uv = { "frequency", bands = 4 } },
@@ -15,6 +45,7 @@ local cases = {
   { normal = { "sh", degree = 1 }, view = { "sh", degree = 3 } },
   { uv = "triangle_wave" },
   { uv = { "triangle_wave", bands = 5, include_input = true }, view = "identity" },
+  { uv = { "polynomial", degree = 4 }, normal = "polynomial" },
 }
 
 -- Rows of (unit normal, unit view, uv) and a target with detail in uv. Inputs rounded to float,
@@ -131,7 +162,7 @@ assert(s.inputs == 8 and s.encoded_inputs == 53 and net.layers[1].inputs == 53)
 assert(s.encoding.uv[1] == "frequency" and s.encoding.uv.bands == 8 and s.encoding.uv.include_input == true)
 assert(s.encoding.normal[1] == "sh" and s.encoding.normal.degree == 4 and s.encoding.view == nil)
 assert(table.concat(net:inputs(), " ") == "normal view uv")
-assert(table.concat(sn.encoding.names(), " ") == "identity frequency oneblob sh triangle_wave")
+assert(table.concat(sn.encoding.names(), " ") == "identity frequency oneblob sh triangle_wave polynomial")
 -- the same network from a count and input_names
 local again = sn.mlp { inputs = 8, input_names = { "normal", "view", "uv" }, hidden = { 32, 32 },
                        encoding = { uv = { "frequency", bands = 8 }, normal = "sh" } }

@@ -1,0 +1,56 @@
+-- What a user's encoding (sn.encoding.define) costs the cpu backend: its Lua twin encodes the
+-- dataset's rows once per training run, on the script's thread only. One 8x8 network, one epoch
+-- of 64,000 sampled rows (normal and view, both encoded with 4 bands), with the built-in
+-- frequency encoding, with a Lua copy of it, and without encodings; the difference to the
+-- latter is the encoding's cost.
+--
+--   shadenet bench/encoding_twin.lua [repeats]      best of `repeats` (default 3), wall and CPU time
+local sn = require "shadenet"
+local repeats = tonumber(arg[1] or "3")
+
+local PI = math.pi
+sn.encoding.define {
+  name = "lua_frequency", count = { "bands", min = 1, max = 16, default = 6 }, include_input = true,
+  outputs = function(w, n, keep) return (keep and w or 0) + 2 * n * w end,
+  glsl = [[if (keep) { if (j < w) return x[j]; j -= w; }
+  int c = j / (2 * n), k = (j / 2) % n;
+  float t = x[c] * float(1 << k);
+  t -= 2.0 * floor(0.5 * t + 0.5);
+  return (j & 1) == 0 ? sin(SN_ENC_PI * t) : cos(SN_ENC_PI * t);]],
+  lua = function(x, n, keep)
+    local out = {}
+    if keep then for c = 1, #x do out[#out + 1] = x[c] end end
+    for c = 1, #x do
+      for k = 0, n - 1 do
+        local t = PI * (x[c] * 2 ^ k)
+        out[#out + 1], out[#out + 2] = math.sin(t), math.cos(t)
+      end
+    end
+    return out
+  end,
+}
+
+local rows = 64000
+local data = sn.dataset.sample { target = sn.lighting.phong {}, n = rows, seed = 1 }
+local function run(kind)
+  local enc = kind and { normal = { kind, bands = 4 }, view = { kind, bands = 4 } } or nil
+  local wall, cpu = math.huge, math.huge
+  for _ = 1, repeats do
+    local net = sn.mlp { inputs = { "normal", "view" }, hidden = { 8, 8 }, encoding = enc, seed = 1 }
+    local t0, c0 = sn.clock(), os.clock()
+    sn.train { nets = net, data = data, epochs = 1, backend = "cpu" }
+    wall, cpu = math.min(wall, sn.clock() - t0), math.min(cpu, os.clock() - c0)
+  end
+  return wall, cpu
+end
+
+local f = io.open("/proc/loadavg")
+print("load: " .. (f and f:read("*l") or "?"))
+if f then f:close() end
+local w0, c0 = run(nil)
+print(("%-14s %8s %8s %14s"):format("encoding", "wall s", "cpu s", "us/row (wall)"))
+print(("%-14s %8.3f %8.3f %14s"):format("none", w0, c0, "-"))
+for _, k in ipairs { "frequency", "lua_frequency" } do
+  local w, c = run(k)
+  print(("%-14s %8.3f %8.3f %14.2f"):format(k, w, c, (w - w0) / rows * 1e6))
+end

@@ -1,0 +1,173 @@
+-- sn.encoding.define: a user's encoding goes through the registry the built-ins use. A copy of
+-- the built-in frequency encoding, defined from Lua, must give exactly what the built-in gives:
+-- the same encoded rows, the same training on the cpu and the gl backend, the same pictures on
+-- both render backends. Then: several such nets in one cpu job (their Lua twin runs on one
+-- thread), checkpoints by definition, redefinition (live mode), and the checks that refuse a
+-- broken definition before it is registered. (A new encoding against its own reference, through
+-- training, checkpoints and the fragment shader: tests/lua/test_mlp_encoding.lua.)
+local sn = require "shadenet"
+local C = require "script_check"
+
+local PI = math.pi
+sn.encoding.define {
+  name = "my_frequency",
+  count = { "bands", min = 1, max = 16, default = 6 },
+  include_input = true,
+  outputs = function(w, n, keep) return (keep and w or 0) + 2 * n * w end,
+  -- the built-in's GLSL, word for word (runtime/nn/encoding_builtin.cpp)
+  glsl = [[if (keep) { if (j < w) return x[j]; j -= w; }
+  int c = j / (2 * n), k = (j / 2) % n;
+  float t = x[c] * float(1 << k);
+  t -= 2.0 * floor(0.5 * t + 0.5);  // exact: sin(pi t) has period 2 in t
+  return (j & 1) == 0 ? sin(SN_ENC_PI * t) : cos(SN_ENC_PI * t);]],
+  lua = function(x, n, keep)
+    local out = {}
+    if keep then for c = 1, #x do out[#out + 1] = x[c] end end
+    for c = 1, #x do
+      for k = 0, n - 1 do
+        local t = PI * (x[c] * 2 ^ k)
+        out[#out + 1] = math.sin(t)
+        out[#out + 1] = math.cos(t)
+      end
+    end
+    return out
+  end,
+}
+assert(table.concat(sn.encoding.names(), " "):find("triangle_wave my_frequency", 1, true))
+
+local function make(kind, seed)
+  return sn.mlp { inputs = { "normal", "view", "uv" }, hidden = { 16, 16 }, seed = seed,
+                  encoding = { uv = { kind, bands = 5 }, view = { kind, bands = 2, include_input = false } } }
+end
+local function same(a, b, what)
+  local pa, pb = a:params(), b:params()
+  assert(#pa == #pb, what)
+  for i = 1, #pa do assert(pa[i] == pb[i], ("%s: parameter %d: %.9g vs %.9g"):format(what, i, pa[i], pb[i])) end
+end
+local builtin, mine = make("frequency", 3), make("my_frequency", 3)
+assert(tostring(mine) == tostring(builtin):gsub("frequency", "my_frequency"), tostring(mine))
+same(mine, builtin, "the same initial weights")
+local x = { 0.48, 0.6, 0.64, 0.36, 0.48, 0.8, 0.731, 0.0625 }
+local eb, em = builtin:encode(x), mine:encode(x)
+assert(#em == #eb and #em == 37)
+for i = 1, #eb do assert(em[i] == eb[i], ("encoded input %d: %.17g vs %.17g"):format(i, em[i], eb[i])) end
+
+-- Training: the same steps, bit for bit, on either backend.
+local scene = sn.scene { mesh = "meshes/test_blob.glb", size = { 64, 48 }, views = { count = 2, elevation = 20 } }
+local data = scene:dataset { inputs = { "normal", "view", "uv" }, target = sn.lighting.phong {}, samples = 3000, seed = 2 }
+for _, backend in ipairs(sn.backends()) do
+  local a, b = make("frequency", 5), make("my_frequency", 5)
+  local ra = sn.train { nets = a, data = data, epochs = 2, backend = backend, adam = { lr = 3e-3 } }[1]
+  local rb = sn.train { nets = b, data = data, epochs = 2, backend = backend, adam = { lr = 3e-3 } }[1]
+  assert(rb.val_mse[2] == ra.val_mse[2] and rb.val_mse[2] < ra.val_mse[1] * 1.5, backend .. ": the same curve")
+  same(b, a, backend .. ": trained weights")
+  print(("%s: my_frequency trains exactly as frequency (val MSE %.4g)"):format(backend, rb.val_mse[2]))
+end
+
+-- Several nets with a user's encoding in one cpu job: each as it trains alone.
+local together = { make("my_frequency", 7), make("my_frequency", 8), make("frequency", 9) }
+local alone = { together[1]:clone(), together[2]:clone(), together[3]:clone() }
+sn.train { nets = together, data = data, epochs = 1, backend = "cpu" }
+for i = 1, 3 do
+  sn.train { nets = alone[i], data = data, epochs = 1, backend = "cpu" }
+  same(together[i], alone[i], "net " .. i .. " of a job")
+end
+
+-- Rendering: auto picks the fragment shader (the Lua twin would run one pixel at a time);
+-- backend = "cpu" runs it anyway; both agree with the built-in's picture.
+local g = scene:gbuffer { view = 1, attributes = { "normal", "view", "uv" } }
+local ref = together[3]
+local mine_r = make("my_frequency", 9)
+mine_r:set_params(ref:params())
+local want = ref:render(g, { backend = "gl" })
+for _, backend in ipairs { "auto", "cpu" } do
+  local img = mine_r:render(g, { backend = backend })
+  local info = sn.render_info()
+  if backend == "auto" then
+    assert(info.backend == "gl" and info.reason:find("encoding 'my_frequency' is a Lua definition", 1, true), info.reason)
+  end
+  local w, h = img:size()
+  local worst, covered = 0, 0
+  for py = 1, h do
+    for px = 1, w do
+      local p, q = img:get(px, py), want:get(px, py)
+      if q[4] > 0 then
+        covered = covered + 1
+        for c = 1, 3 do worst = math.max(worst, math.abs(p[c] - q[c])) end
+      end
+    end
+  end
+  assert(covered > 300 and worst < 1e-5, ("%s render: %d pixels, worst %g"):format(backend, covered, worst))
+  print(("render %s (%s): within %.1g of the built-in's"):format(backend, info.backend, worst))
+end
+
+-- Checkpoints carry the definition's GLSL: loading needs the name defined, the same way.
+local tmp = C.tmpdir("encdef")
+local path = tmp .. "/mine.snmlp"
+mine:save(path)
+assert(tostring(sn.load(path)) == tostring(mine))
+local child = tmp .. "/child.lua"
+local f = assert(io.open(child, "w"))
+f:write('local sn = require "shadenet"\nsn.load(' .. ("%q"):format(path) .. ')\n')
+f:close()
+local code, out = C.run(child)
+assert(code ~= 0 and out:find("the network encodes input 'view' with 'my_frequency', which is not defined; define it " ..
+                                "before sn.load with sn.encoding.define{ name = \"my_frequency\", glsl = \"if (keep)", 1, true), out)
+
+-- Defining a name again replaces it (a script re-run in live mode); a checkpoint saved under
+-- the earlier definition then says so.
+local function powers(signed)
+  sn.encoding.define {
+    name = "powers", count = { "degree", max = 4, default = 2 },
+    outputs = function(w, n) return w * n end,
+    glsl = signed and "int c = j / n; float p = x[c]; for (int i = c * n; i < j; ++i) p *= x[c]; return p;"
+                   or "int c = j / n; float p = abs(x[c]); for (int i = c * n; i < j; ++i) p *= abs(x[c]); return p;",
+    lua = function(x, n)
+      local out = {}
+      for c = 1, #x do
+        for k = 1, n do out[#out + 1] = (signed and x[c] or math.abs(x[c])) ^ k end
+      end
+      return out
+    end,
+  }
+end
+powers(false)
+local p1 = sn.mlp { inputs = { "uv" }, hidden = { 4 }, encoding = { uv = "powers" } }
+assert(p1:encode({ -0.5, 0.25 })[1] == 0.5)
+p1:save(tmp .. "/p1.snmlp")
+powers(true)
+assert(sn.mlp { inputs = { "uv" }, hidden = { 4 }, encoding = { uv = "powers" } }:encode({ -0.5, 0.25 })[1] == -0.5)
+local ok, err = pcall(sn.load, tmp .. "/p1.snmlp")
+assert(not ok and err:find("encoding 'powers' is defined differently from the network's (glsl = \"int c = j / n; float p = abs",
+                           1, true), err)
+
+-- A definition that fails its checks is not registered, and an earlier one of its name stays.
+local function refused(def, pattern)
+  local names = table.concat(sn.encoding.names(), " ")
+  local ok, e = pcall(sn.encoding.define, def)
+  assert(not ok and e:find(pattern, 1, true), tostring(e))
+  assert(table.concat(sn.encoding.names(), " ") == names, "the registry is unchanged")
+end
+local function def(o)
+  local d = { name = "broken", outputs = 1, glsl = "return x[0];", lua = function(x) return { x[1] } end }
+  for k, v in pairs(o) do d[k] = v end
+  return d
+end
+-- (the script line in front when not called through pcall: tests/errors/encoding_glsl_error.lua)
+refused(def { glsl = "return cosine(x[0]);" }, "its GLSL does not compile:\nGLSL compile error in shaders/encoding_check.comp:\nencoding broken:1: error: no function with name 'cosine'")
+refused(def { glsl = "return 2.0 * x[0];" }, "its GLSL gives")
+refused(def { lua = function(x) return { x[1], x[1] } end }, "lua returned 2 numbers; outputs says 1 for an input of 1")
+refused(def { lua = function(x) return { 0 / 0 } end }, "as output 1 for an input of 1 component")
+refused(def { lua = function() error("boom") end }, "encoding 'broken': lua failed: ")
+refused(def { outputs = 0 }, "outputs for an input of 1 component is 0; it must be 1..256")
+refused(def { name = "frequency" }, "encoding 'frequency' is built in; choose another name")
+refused(def { name = "Bad Name" }, "use lower-case letters, digits and _")
+refused(def { count = { "bands", min = 3, max = 2 } }, "needs 1 <= min <= default <= max <= 64")
+refused(def { input_width = 5 }, "option 'input_width': 1..4")
+refused(def { name = "powers", glsl = "return nope;" }, "encoding 'powers': its GLSL does not compile")
+assert(sn.mlp { inputs = { "uv" }, hidden = { 4 }, encoding = { uv = "powers" } }:encode({ -0.5, 0.25 })[1] == -0.5,
+       "the earlier definition of powers stays")
+ok, err = pcall(sn.mlp, { inputs = { "uv" }, hidden = { 4 }, encoding = { uv = { "powers", degree = 9 } } })
+assert(not ok and err:find("degree must be 1..4, got 9", 1, true), err)
+C.rm(tmp)
+print("encoding define: ok")
