@@ -16,7 +16,15 @@
 -- the process CPU time of the job (all threads), "steps/cpu-s" the sample-steps per second of
 -- CPU time; "load" the 1-minute load average before the job: other work on the machine slows
 -- the wall-clock figures, hardly the CPU-time ones.
+--
+-- The roofline (cpu backend): "FLOP/step" counted from the kernel per sample-step
+-- (bench/roofline.lua), "GFLOP/s" achieved (total steps/s x FLOP/step), and that as a share of
+-- this machine's measured FP32 FMA peak (build/fma_peak) over the cores the job can use (one
+-- per network, at most the machine's threads): "%avx2" against the AVX2 peak the kernel runs
+-- at, "%avx512" against the AVX-512 one.
 local sn = require "shadenet"
+package.path = (arg[0]:match("^(.*)/[^/]*$") or ".") .. "/?.lua;" .. package.path
+local roofline = require "roofline"
 
 local want = arg[1] or "all"
 local counts = {}
@@ -104,8 +112,16 @@ end
 
 local ntrain = data:counts()
 print(("dataset: %d samples (%d training), %d epoch(s), batch 8"):format(rows, ntrain, epochs))
-print(("%-7s %-6s %-11s %-15s %6s %5s %14s %12s %8s %8s %14s %6s %9s"):format("backend", "arch", "activation",
-  "encoding", "inputs", "nets", "total steps/s", "per net", "wall s", "cpu s", "steps/cpu-s", "load", "peak MiB"))
+local peak, no_peak = roofline.measure_peak()
+if peak then
+  print(("FMA peak (build/fma_peak), GFLOP/s per core: avx2 %.1f, avx512 %s; %d threads"):format(peak.avx2.core,
+    peak.avx512 and ("%.1f"):format(peak.avx512.core) or "-", peak.threads))
+else
+  print("no roofline fractions: " .. no_peak)
+end
+print(("%-7s %-6s %-11s %-15s %6s %5s %14s %12s %8s %8s %14s %6s %9s %9s %8s %6s %7s"):format("backend", "arch",
+  "activation", "encoding", "inputs", "nets", "total steps/s", "per net", "wall s", "cpu s", "steps/cpu-s", "load",
+  "peak MiB", "FLOP/step", "GFLOP/s", "%avx2", "%avx512"))
 for _, backend in ipairs(backends) do
   for _, job in ipairs(jobs) do
     local a, act, enc = job[1], job[2], job[3]
@@ -125,9 +141,23 @@ for _, backend in ipairs(backends) do
       local steps = 0
       for _, r in ipairs(runs) do steps = steps + r.steps * 8 end
       local wall = runs[1].wall_time
-      print(("%-7s %-6s %-11s %-15s %6d %5d %14.0f %12.0f %8.2f %8.2f %14.0f %6s %9.1f"):format(backend,
+      local roof = { "-", "-", "-", "-" }
+      if backend == "cpu" then
+        local widths = { nets[1]:spec().encoded_inputs }
+        for _, w in ipairs(hidden) do widths[#widths + 1] = w end
+        widths[#widths + 1] = 3
+        local flop = roofline.flop_per_sample_step(widths, act)
+        local gflops = steps / wall * flop / 1e9
+        roof = { ("%.0f"):format(flop), ("%.2f"):format(gflops), "-", "-" }
+        if peak then
+          local cores = math.min(count, peak.threads)
+          roof[3] = ("%.1f"):format(100 * gflops / (peak.avx2.core * cores))
+          if peak.avx512 then roof[4] = ("%.1f"):format(100 * gflops / (peak.avx512.core * cores)) end
+        end
+      end
+      print(("%-7s %-6s %-11s %-15s %6d %5d %14.0f %12.0f %8.2f %8.2f %14.0f %6s %9.1f %9s %8s %6s %7s"):format(backend,
         a[1] .. "x" .. a[2], act, enc.label, nets[1]:spec().encoded_inputs, count, steps / wall, steps / wall / count,
-        wall, cpu, steps / cpu, load, status("VmHWM") / 1024))
+        wall, cpu, steps / cpu, load, status("VmHWM") / 1024, roof[1], roof[2], roof[3], roof[4]))
       nets, runs = nil, nil
       collectgarbage()
     end

@@ -1,0 +1,63 @@
+-- The roofline columns of bench/train_throughput.lua: how many FLOP one sample-step of the cpu
+-- backend executes, and this machine's measured FMA peak (build/fma_peak) to hold them against.
+--
+-- FLOP are counted from the kernel as it runs (runtime/nn/cpu_net.cpp; a multiply-add is 2, a
+-- division or square root 1, compares and selects 0), per sample of a minibatch of 8 (one
+-- 8-lane block), for widths w[0] (the encoded inputs) .. w[L] (the outputs), l2 loss, linear
+-- output:
+--   forward     sum over layers of 2 w[l] w[l+1], and f(z) on every hidden unit
+--   loss        4 per output (error, its square, the scaled gradient)
+--   gradient    sum of 2 w[l+1] inpad[l] (inpad = w rounded up to 8: the outer products run
+--               over the padded inputs), plus 1 per bias
+--   backward    sum over l >= 1 of 2 w[l+1] w[l], plus per hidden unit 1 (times f'(z)) and
+--               the cost of f'(z) where it is taken from f(z)
+--   Adam        15 per padded parameter (the kernel updates every float of the padded copy),
+--               shared by the 8 samples
+-- For 8x8 tanh (6 -> 8x8 -> 3) that is 5,931 FLOP, 3,056 of them in the three matrix products.
+local R = {}
+
+-- Per hidden unit: FLOP of f(z) in a training forward pass, and of f'(z) from f(z) in the
+-- backward pass (0 where the forward pass keeps f'(z)), counted from runtime/nn/cpu_activation.h
+-- (its exp 21, fast_tanh 21, sin-cos 24, log1p 17).
+R.activation_flop = {
+  tanh = { 21, 2 }, sigmoid = { 24, 2 }, relu = { 0, 0 }, leaky_relu = { 1, 0 }, sine = { 26, 0 },
+  softplus = { 41, 0 }, squareplus = { 7, 3 }, elu = { 23, 1 }, gelu = { 38, 0 }, swish = { 28, 0 },
+  exponential = { 21, 0 },
+}
+
+local function round_up(n, m) return math.ceil(n / m) * m end
+
+-- FLOP per sample-step and the share of the three matrix products.
+function R.flop_per_sample_step(widths, activation)
+  local cost = R.activation_flop[activation] or error("roofline: no FLOP count for activation '" .. activation .. "'")
+  local L = #widths - 1
+  local flop, matmul, params = 4 * widths[L + 1], 0, 0
+  for l = 0, L - 1 do
+    local i, o = widths[l + 1], widths[l + 2]
+    local inpad = round_up(i, 8)
+    matmul = matmul + 2 * i * o + 2 * o * inpad + (l > 0 and 2 * o * i or 0)
+    flop = flop + o  -- the bias gradient
+    if l > 0 then flop = flop + i * (cost[1] + 1 + cost[2]) end  -- f(z) forward, f'(z) backward
+    params = params + round_up(o * inpad + round_up(o, 8), 16)
+  end
+  return flop + matmul + 15 * params / 8, matmul
+end
+
+-- { avx2 = { core = GFLOP/s, all = GFLOP/s }, avx512 = {...}, threads = n } from build/fma_peak
+-- beside the shadenet binary; nil and the reason when it cannot run.
+function R.measure_peak()
+  local dir = (arg and arg[-1] or "build/shadenet"):match("^(.*)/[^/]*$") or "."
+  local exe = dir .. "/fma_peak"
+  local p = io.popen(("%q 2>&1"):format(exe))
+  local text = p and p:read("*a") or ""
+  if p then p:close() end
+  local peak = {}
+  for isa, core, all, threads in text:gmatch("(%w+) per_core_gflops=([%d.]+) all_cores_gflops=([%d.]+) threads=(%d+)") do
+    peak[isa] = { core = tonumber(core), all = tonumber(all) }
+    peak.threads = tonumber(threads)
+  end
+  if not peak.threads then return nil, exe .. " gave no figures (build it: cmake --build build --target fma_peak): " .. text end
+  return peak
+end
+
+return R
