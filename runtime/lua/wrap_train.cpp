@@ -67,6 +67,7 @@ void push_result(lua_State* L, const nn::NetResult& r, const nn::JobResult& job)
   }
   push_numbers(L, r.dead_units);
   lua_setfield(L, -2, "dead_units");
+  if (r.stuck_outputs >= 0) set_number(L, "stuck_outputs", r.stuck_outputs);
   set_string(L, "backend", job.backend);
   set_string(L, "device", job.device);
 }

@@ -1,5 +1,7 @@
 #include "nn/diagnostics.h"
 
+#include <cstring>
+
 #include "nn/cpu_net.h"
 
 namespace sn::nn {
@@ -19,6 +21,24 @@ std::vector<double> dead_unit_fractions(const Mlp& net, const float* x, std::siz
     fractions.push_back(layer.empty() ? 0.0 : double(dead) / double(layer.size()));
   }
   return fractions;
+}
+
+int stuck_outputs(const Mlp& net, const float* x, std::size_t count) {
+  if (!count || activation_def(net.spec.activation).simd < 0 || activation_def(net.spec.output_activation).simd < 0)
+    return -1;
+  CpuNet work(net.spec, net.params.data());
+  std::vector<float> encoded;
+  if (!net.spec.encodings.empty()) encoded = encode_rows(net.spec.encodings, net.spec.inputs, x, count);
+  const std::size_t outputs = std::size_t(net.spec.outputs);
+  std::vector<float> y(count * outputs);
+  work.forward(encoded.empty() ? x : encoded.data(), count, y.data());
+  int stuck = 0;
+  for (std::size_t o = 0; o < outputs; ++o) {
+    bool same = true;
+    for (std::size_t r = 1; r < count && same; ++r) same = std::memcmp(&y[r * outputs + o], &y[o], sizeof(float)) == 0;
+    stuck += same;
+  }
+  return stuck;
 }
 
 }  // namespace sn::nn

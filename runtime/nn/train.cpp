@@ -254,6 +254,7 @@ JobResult train(const TrainJob& job) {
   }
   parallel_for(int(nets.size()), threads, [&](int i) {
     out.nets[i].dead_units = dead_unit_fractions(*job.nets[i], d.val_x.data(), d.val_count());
+    out.nets[i].stuck_outputs = stuck_outputs(*job.nets[i], d.val_x.data(), d.val_count());
   });
   // The nets keep what was trained; then the progress or tick function's error goes on to the caller.
   if (hook_error) std::rethrow_exception(hook_error);

@@ -137,6 +137,7 @@ struct NetResult {
   double wall_time = 0;  // seconds for the whole job (all nets train together)
   double sample_steps_per_s = 0;  // this net's steps * batch / wall_time
   std::vector<double> dead_units;  // per hidden layer, see nn/diagnostics.h
+  int stuck_outputs = -1;          // output channels constant over the validation rows (-1: not measured)
 
   // Appends an epoch; keeps a copy of `params` when val_mse is a new minimum (first wins ties).
   // Returns false, with `diverged` set, when cfg.divergence says the net exploded: the backend

@@ -545,7 +545,8 @@ function E:train_group(group, tick)
       best_val_mse = o.best_val_mse, best_epoch = o.best_epoch,
       val_mse = o.val_mse, train_mse = o.train_mse,
       wall_time = o.wall_time, job_nets = #nets, steps = o.steps, sample_steps_per_s = o.sample_steps_per_s,
-      diverged = o.diverged, dead_units = o.dead_units, backend = o.backend, device = o.device,
+      diverged = o.diverged, dead_units = o.dead_units, stuck_outputs = o.stuck_outputs, backend = o.backend,
+      device = o.device,
       params = p, interrupted = stopped,
     }
     if not stopped and not stats.finite(o.best_val_mse) then

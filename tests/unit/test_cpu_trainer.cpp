@@ -337,6 +337,22 @@ TEST(Diagnostics, DeadReluAndSaturatedTanhUnits) {
   EXPECT_EQ(sat, (std::vector<double>{0.25, 1.0}));
 }
 
+// Output channels constant over the rows: all three behind a dead layer, one ReLU output
+// pinned at 0 by its bias, none in a live network.
+TEST(Diagnostics, StuckOutputChannels) {
+  Dataset d = smooth_dataset(300);
+  Mlp dead(spec_of(6, {8}, 3, Activation::relu), Init::he, 1);
+  for (int o = 0; o < 8; ++o) dead.biases(0)[o] = -100.0f;
+  EXPECT_EQ(stuck_outputs(dead, d.val_x.data(), d.val_count()), 3);
+  MlpSpec s = spec_of(6, {8}, 3, Activation::relu);
+  s.output_activation = Activation::relu;
+  Mlp pinned(s, Init::he, 1);
+  EXPECT_EQ(stuck_outputs(pinned, d.val_x.data(), d.val_count()), 0);
+  pinned.biases(1)[1] = -100.0f;  // output 2 below 0 on every row: ReLU gives exactly 0
+  EXPECT_EQ(stuck_outputs(pinned, d.val_x.data(), d.val_count()), 1);
+  EXPECT_EQ(stuck_outputs(pinned, d.val_x.data(), 0), -1);
+}
+
 std::string job_error(TrainJob job) {
   try {
     validate(job);
