@@ -109,6 +109,7 @@ int main(int argc, char** argv) {
   }
   int status = 0;
   sn::live::LiveOptions live{opt.script, opt.script_args, true, false};
+  if (opt.size_given) live.width = opt.width, live.height = opt.height;
   if (opt.watch) {
     status = sn::live::run_live(L, live);
   } else {

@@ -9,7 +9,8 @@ std::string usage() {
          "Runs a Lua experiment script (require \"shadenet\"); its arguments are in the global `arg`.\n"
          "options:\n"
          "  --window           open a GLFW window instead of running headless (EGL)\n"
-         "  --size WxH         window size (default 960x720)\n"
+         "  --size WxH         window size (default 960x720); headless --watch: the view's size\n"
+         "                     (default: sn.live.show's size, else 640x480)\n"
          "  --watch            live mode: re-run the script when it, a module it requires or a shader\n"
          "                     it uses is saved (sn.keep values survive); Lua lines on stdin run in\n"
          "                     the script's state (see docs/live-mode.md)\n"
@@ -37,6 +38,7 @@ Options parse_options(int argc, char** argv) {
       std::string v = argv[++i];
       if (sscanf(v.c_str(), "%dx%d", &o.width, &o.height) != 2 || o.width < 1 || o.height < 1)
         throw std::invalid_argument("--size: expected WIDTHxHEIGHT, got '" + v + "'");
+      o.size_given = true;
     } else
       throw std::invalid_argument("unknown option '" + a + "' (valid: --window, --watch, --size, --help, --version)");
   }

@@ -7,7 +7,8 @@ namespace sn::app {
 
 struct Options {
   bool help = false, version = false, window = false, watch = false;
-  int width = 960, height = 720;  // window size
+  int width = 960, height = 720;  // window size; headless --watch: the view's size when given
+  bool size_given = false;        // --size was on the command line
   std::string program;  // argv[0]
   std::string script;
   std::vector<std::string> script_args;

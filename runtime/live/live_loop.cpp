@@ -130,6 +130,11 @@ class Loop {
   void redraw();
   void present();
   bool tick(const std::string& text, double fraction);
+  // What the view is drawn at: the window's framebuffer, or headless the --size given (0 x 0:
+  // the script's size, sn.live.show{ size = ... }, else 640 x 480).
+  std::pair<int, int> view_size() const {
+    return ctx_.windowed() ? ctx_.framebuffer_size() : std::pair<int, int>{o_.width, o_.height};
+  }
   static int tick_thunk(lua_State* L);
   void end_busy();
   void update_probe();
@@ -432,7 +437,7 @@ void Loop::redraw() {
     title_ = "shadenet — nothing to show: call sn.live.show{...}";
     return set_status();
   }
-  auto [w, h] = ctx_.framebuffer_size();
+  auto [w, h] = view_size();
   if (ctx_.windowed() && (w < 1 || h < 1)) return;  // minimised
   const ViewState& v = input_.view();
   lua_createtable(L_, 0, 8);
@@ -569,7 +574,8 @@ void Loop::present() {
     frame = &lua::check<gl::RenderTarget>(L_, -1, "Target");
     lua_pop(L_, 1);  // the registry keeps it alive
   }
-  auto [w, h] = ctx_.windowed() ? ctx_.framebuffer_size() : std::pair<int, int>{640, 480};
+  auto [w, h] = view_size();
+  if (!ctx_.windowed() && w < 1) w = 640, h = 480;  // headless without --size
   if (w < 1 || h < 1) return;  // minimised
   const ViewState& v = input_.view();
   hud_.set_view(frame ? mode_name(v.mode) : "", view_error_scale_, frame_ms_, ctx_.windowed());

@@ -22,6 +22,7 @@ struct LiveOptions {
   std::vector<std::string> args;
   bool watch = true;                 // reload on saves and read the console; false: view only
   bool already_ran = false;          // the script ran once already (view-only mode)
+  int width = 0, height = 0;         // headless: the view's size (--size; 0: the script's, else 640x480)
 };
 
 // Runs until the window is closed, Esc/Q, sn.live.quit(), end of a terminal's stdin or the

@@ -45,8 +45,8 @@ for _, p in ipairs(files) do
 end
 for _, p in ipairs(files) do
   if p:find("%.png$") then
-    local w = sn.image.load(p):size()
-    assert(w == 640, p .. " is a whole screenshot")
+    local w, h = sn.image.load(p):size()
+    assert(w == 160 and h == 120, p .. " is a whole screenshot at the --size given (headless): " .. w .. "x" .. h)
   else
     assert(sn.fs.exists(p .. "/frame-0002.png") == "file", p .. " holds its recording")
   end
