@@ -1,34 +1,15 @@
 -- What a user's encoding (sn.encoding.define) costs the cpu backend: its Lua twin encodes the
 -- dataset's rows once per training run, on the script's thread only. One 8x8 network, one epoch
 -- of 64,000 sampled rows (normal and view, both encoded with 4 bands), with the built-in
--- frequency encoding, with a Lua copy of it, and without encodings; the difference to the
+-- frequency encoding, with a Lua copy of it (examples/lua_frequency.lua), and without encodings; the difference to the
 -- latter is the encoding's cost.
 --
 --   shadenet bench/encoding_twin.lua [repeats]      best of `repeats` (default 3), wall and CPU time
 local sn = require "shadenet"
 local repeats = tonumber(arg[1] or "3")
 
-local PI = math.pi
-sn.encoding.define {
-  name = "lua_frequency", count = { "bands", min = 1, max = 16, default = 6 }, include_input = true,
-  outputs = function(w, n, keep) return (keep and w or 0) + 2 * n * w end,
-  glsl = [[if (keep) { if (j < w) return x[j]; j -= w; }
-  int c = j / (2 * n), k = (j / 2) % n;
-  float t = x[c] * float(1 << k);
-  t -= 2.0 * floor(0.5 * t + 0.5);
-  return (j & 1) == 0 ? sin(SN_ENC_PI * t) : cos(SN_ENC_PI * t);]],
-  lua = function(x, n, keep)
-    local out = {}
-    if keep then for c = 1, #x do out[#out + 1] = x[c] end end
-    for c = 1, #x do
-      for k = 0, n - 1 do
-        local t = PI * (x[c] * 2 ^ k)
-        out[#out + 1], out[#out + 2] = math.sin(t), math.cos(t)
-      end
-    end
-    return out
-  end,
-}
+package.path = (arg[0]:match("^(.*)/[^/]*$") or ".") .. "/../examples/?.lua;" .. package.path
+require "lua_frequency"  -- defines lua_frequency: the built-in frequency encoding as a Lua definition
 
 local rows = 64000
 local data = sn.dataset.sample { target = sn.lighting.phong {}, n = rows, seed = 1 }

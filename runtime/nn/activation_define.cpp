@@ -9,16 +9,11 @@
 
 #include "gl/buffer.h"
 #include "gl/program.h"
+#include "io/text.h"
 
 namespace sn::nn {
 
 namespace {
-
-std::string g(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
 
 // Sample points off the integers (kinks such as relu's at 0 fall between them).
 std::vector<double> sample_points() {
@@ -31,12 +26,12 @@ void check_twins(const ActivationDef& d) {
   const std::string who = "activation '" + d.name + "'";
   for (double z : sample_points()) {
     const double f = d.f(z, 0.0), df = d.df(z, 0.0);
-    if (!std::isfinite(f)) throw std::invalid_argument(who + ": lua(" + g(z) + ") returned " + g(f));
-    if (!std::isfinite(df)) throw std::invalid_argument(who + ": lua_grad(" + g(z) + ") returned " + g(df));
+    if (!std::isfinite(f)) throw std::invalid_argument(who + ": lua(" + io::number_text(z) + ") returned " + io::number_text(f));
+    if (!std::isfinite(df)) throw std::invalid_argument(who + ": lua_grad(" + io::number_text(z) + ") returned " + io::number_text(df));
     const double h = 1e-5, fd = (d.f(z + h, 0.0) - d.f(z - h, 0.0)) / (2 * h);
     if (std::fabs(fd - df) > 1e-4 * (1 + std::fabs(fd)))
-      throw std::invalid_argument(who + ": lua_grad(" + g(z) + ") = " + g(df) + " but central differences of lua give " +
-                                  g(fd));
+      throw std::invalid_argument(who + ": lua_grad(" + io::number_text(z) + ") = " + io::number_text(df) + " but central differences of lua give " +
+                                  io::number_text(fd));
   }
 }
 
@@ -80,8 +75,8 @@ void check_glsl(const ActivationDef& d) {
     for (std::size_t i = 0; i < z.size(); ++i) {
       const double want = part == ActivationPart::f ? d.f(z[i], 0.0) : d.df(z[i], 0.0);
       if (!(std::fabs(double(got[i]) - want) <= 1e-4 * (1 + std::fabs(want))))
-        throw std::invalid_argument("activation '" + d.name + "': its " + what + " GLSL gives " + g(got[i]) + " at " +
-                                    g(z[i]) + ", its Lua twin " + g(want));
+        throw std::invalid_argument("activation '" + d.name + "': its " + what + " GLSL gives " + io::number_text(got[i]) + " at " +
+                                    io::number_text(z[i]) + ", its Lua twin " + io::number_text(want));
     }
   }
 }

@@ -54,12 +54,6 @@ Defs& registry() {
   return defs;
 }
 
-std::string g(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
-
 // A float literal GLSL reads back as the same float.
 std::string float_literal(double v) {
   char buf[40];
@@ -98,7 +92,7 @@ std::string InputEncoding::describe() const {
   std::string s = input + ": " + d.name;
   if (!d.count.empty()) s.append(" ").append(std::to_string(n));
   if (d.has_include_input && include_input != d.include_input_default) s += include_input ? " + input" : " - input";
-  if (d.has_range) s += " on [" + g(lo) + ", " + g(hi) + "]";
+  if (d.has_range) s += " on [" + io::number_text(lo) + ", " + io::number_text(hi) + "]";
   return s;
 }
 
@@ -180,8 +174,8 @@ void check(const InputEncoding& e) {
     if (std::isnan(e.lo) && std::isnan(e.hi))
       throw std::invalid_argument(who + ": '" + e.input + "' has no fixed range; give it as range = {min, max}");
     if (!(std::isfinite(e.lo) && std::isfinite(e.hi) && e.lo < e.hi))
-      throw std::invalid_argument(who + ": range must be two finite numbers {min, max} with min < max, got {" + g(e.lo) +
-                                  ", " + g(e.hi) + "}");
+      throw std::invalid_argument(who + ": range must be two finite numbers {min, max} with min < max, got {" + io::number_text(e.lo) +
+                                  ", " + io::number_text(e.hi) + "}");
   }
 }
 

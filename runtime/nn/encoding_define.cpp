@@ -6,18 +6,13 @@
 #include <stdexcept>
 #include <vector>
 
+#include "io/text.h"
 #include "nn/gl_forward.h"
 #include "nn/mlp_spec.h"
 
 namespace sn::nn {
 
 namespace {
-
-std::string g(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
 
 // Inputs the checks encode: components spread over [-0.9, 0.9], off the simple fractions where
 // a mistake could hide (0, +-0.5).
@@ -73,7 +68,7 @@ void check_twin(Encoding kind, const EncodingDef& d) {
           d.f_row(e, x.data() + r * w, out.data());
           for (int j = 0; j < outputs; ++j)
             if (!std::isfinite(out[std::size_t(j)]))
-              throw std::invalid_argument("encoding '" + d.name + "': lua gives " + g(out[std::size_t(j)]) + " as output " +
+              throw std::invalid_argument("encoding '" + d.name + "': lua gives " + io::number_text(out[std::size_t(j)]) + " as output " +
                                           std::to_string(j + 1) + " for " + case_of(d, e));
         }
       }
@@ -113,10 +108,10 @@ void check_glsl(Encoding kind, const EncodingDef& d) {
         const double a = got[std::size_t(r * outputs + j)], b = want[std::size_t(j)];
         if (!(std::fabs(a - b) <= 1e-4 * (1 + std::fabs(b)))) {
           std::string in;
-          for (int c = 0; c < w; ++c) in += (c ? ", " : "") + g(row[std::size_t(c)]);
-          throw std::invalid_argument("encoding '" + d.name + "': its GLSL gives " + g(a) + " as output " +
+          for (int c = 0; c < w; ++c) in += (c ? ", " : "") + io::number_text(row[std::size_t(c)]);
+          throw std::invalid_argument("encoding '" + d.name + "': its GLSL gives " + io::number_text(a) + " as output " +
                                       std::to_string(j + 1) + " of {" + in + "} (" + case_of(d, e) + "), its Lua twin " +
-                                      g(b));
+                                      io::number_text(b));
         }
       }
     }

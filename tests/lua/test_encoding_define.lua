@@ -1,5 +1,6 @@
 -- sn.encoding.define: a user's encoding goes through the registry the built-ins use. A copy of
--- the built-in frequency encoding, defined from Lua, must give exactly what the built-in gives:
+-- the built-in frequency encoding defined from Lua (examples/lua_frequency.lua) must give
+-- exactly what the built-in gives:
 -- the same encoded rows, the same training on the cpu and the gl backend, the same pictures on
 -- both render backends. Then: several such nets in one cpu job (their Lua twin runs on one
 -- thread), checkpoints by definition, redefinition (live mode), and the checks that refuse a
@@ -8,32 +9,8 @@
 local sn = require "shadenet"
 local C = require "script_check"
 
-local PI = math.pi
-sn.encoding.define {
-  name = "my_frequency",
-  count = { "bands", min = 1, max = 16, default = 6 },
-  include_input = true,
-  outputs = function(w, n, keep) return (keep and w or 0) + 2 * n * w end,
-  -- the built-in's GLSL, word for word (runtime/nn/encoding_builtin.cpp)
-  glsl = [[if (keep) { if (j < w) return x[j]; j -= w; }
-  int c = j / (2 * n), k = (j / 2) % n;
-  float t = x[c] * float(1 << k);
-  t -= 2.0 * floor(0.5 * t + 0.5);  // exact: sin(pi t) has period 2 in t
-  return (j & 1) == 0 ? sin(SN_ENC_PI * t) : cos(SN_ENC_PI * t);]],
-  lua = function(x, n, keep)
-    local out = {}
-    if keep then for c = 1, #x do out[#out + 1] = x[c] end end
-    for c = 1, #x do
-      for k = 0, n - 1 do
-        local t = PI * (x[c] * 2 ^ k)
-        out[#out + 1] = math.sin(t)
-        out[#out + 1] = math.cos(t)
-      end
-    end
-    return out
-  end,
-}
-assert(table.concat(sn.encoding.names(), " "):find("triangle_wave my_frequency", 1, true))
+dofile("examples/lua_frequency.lua")  -- defines lua_frequency: the built-in, word for word
+assert(table.concat(sn.encoding.names(), " "):find("triangle_wave lua_frequency", 1, true))
 
 local function make(kind, seed)
   return sn.mlp { inputs = { "normal", "view", "uv" }, hidden = { 16, 16 }, seed = seed,
@@ -44,8 +21,8 @@ local function same(a, b, what)
   assert(#pa == #pb, what)
   for i = 1, #pa do assert(pa[i] == pb[i], ("%s: parameter %d: %.9g vs %.9g"):format(what, i, pa[i], pb[i])) end
 end
-local builtin, mine = make("frequency", 3), make("my_frequency", 3)
-assert(tostring(mine) == tostring(builtin):gsub("frequency", "my_frequency"), tostring(mine))
+local builtin, mine = make("frequency", 3), make("lua_frequency", 3)
+assert(tostring(mine) == tostring(builtin):gsub("frequency", "lua_frequency"), tostring(mine))
 same(mine, builtin, "the same initial weights")
 local x = { 0.48, 0.6, 0.64, 0.36, 0.48, 0.8, 0.731, 0.0625 }
 local eb, em = builtin:encode(x), mine:encode(x)
@@ -56,16 +33,16 @@ for i = 1, #eb do assert(em[i] == eb[i], ("encoded input %d: %.17g vs %.17g"):fo
 local scene = sn.scene { mesh = "meshes/test_blob.glb", size = { 64, 48 }, views = { count = 2, elevation = 20 } }
 local data = scene:dataset { inputs = { "normal", "view", "uv" }, target = sn.lighting.phong {}, samples = 3000, seed = 2 }
 for _, backend in ipairs(sn.backends()) do
-  local a, b = make("frequency", 5), make("my_frequency", 5)
+  local a, b = make("frequency", 5), make("lua_frequency", 5)
   local ra = sn.train { nets = a, data = data, epochs = 2, backend = backend, adam = { lr = 3e-3 } }[1]
   local rb = sn.train { nets = b, data = data, epochs = 2, backend = backend, adam = { lr = 3e-3 } }[1]
   assert(rb.val_mse[2] == ra.val_mse[2] and rb.val_mse[2] < ra.val_mse[1] * 1.5, backend .. ": the same curve")
   same(b, a, backend .. ": trained weights")
-  print(("%s: my_frequency trains exactly as frequency (val MSE %.4g)"):format(backend, rb.val_mse[2]))
+  print(("%s: lua_frequency trains exactly as frequency (val MSE %.4g)"):format(backend, rb.val_mse[2]))
 end
 
 -- Several nets with a user's encoding in one cpu job: each as it trains alone.
-local together = { make("my_frequency", 7), make("my_frequency", 8), make("frequency", 9) }
+local together = { make("lua_frequency", 7), make("lua_frequency", 8), make("frequency", 9) }
 local alone = { together[1]:clone(), together[2]:clone(), together[3]:clone() }
 sn.train { nets = together, data = data, epochs = 1, backend = "cpu" }
 for i = 1, 3 do
@@ -77,14 +54,14 @@ end
 -- backend = "cpu" runs it anyway; both agree with the built-in's picture.
 local g = scene:gbuffer { view = 1, attributes = { "normal", "view", "uv" } }
 local ref = together[3]
-local mine_r = make("my_frequency", 9)
+local mine_r = make("lua_frequency", 9)
 mine_r:set_params(ref:params())
 local want = ref:render(g, { backend = "gl" })
 for _, backend in ipairs { "auto", "cpu" } do
   local img = mine_r:render(g, { backend = backend })
   local info = sn.render_info()
   if backend == "auto" then
-    assert(info.backend == "gl" and info.reason:find("encoding 'my_frequency' is a Lua definition", 1, true), info.reason)
+    assert(info.backend == "gl" and info.reason:find("encoding 'lua_frequency' is a Lua definition", 1, true), info.reason)
   end
   local w, h = img:size()
   local worst, covered = 0, 0
@@ -111,8 +88,8 @@ local f = assert(io.open(child, "w"))
 f:write('local sn = require "shadenet"\nsn.load(' .. ("%q"):format(path) .. ')\n')
 f:close()
 local code, out = C.run(child)
-assert(code ~= 0 and out:find("the network encodes input 'view' with 'my_frequency', which is not defined; define it " ..
-                                "before sn.load with sn.encoding.define{ name = \"my_frequency\", glsl = \"if (keep)", 1, true), out)
+assert(code ~= 0 and out:find("the network encodes input 'view' with 'lua_frequency', which is not defined; define it " ..
+                                "before sn.load with sn.encoding.define{ name = \"lua_frequency\", glsl = \"if (keep)", 1, true), out)
 
 -- Defining a name again replaces it (a script re-run in live mode); a checkpoint saved under
 -- the earlier definition then says so.
