@@ -77,12 +77,19 @@ for _, a in ipairs(acts) do
   end
   local layer_text = {}
   for l, f in ipairs(per_layer) do layer_text[l] = string.format("%.2f", f) end
+  -- Output channels stuck at one value (a ReLU output pinned at 0), per seed.
+  local stuck = {}
+  for seed, id in ipairs(ids) do
+    local rec = records[id]
+    stuck[seed] = rec and rec.result.stuck_outputs and tostring(rec.result.stuck_outputs) or "-"
+  end
   local final = y[epochs]
   rows[#rows + 1] = exp.with_unseen({
     activation = a.label, best_val_mse = best, final_val_mse = final,
     vs_zeros = best and best / base.zeros or nil, vs_constant = best and best / base.constant or nil,
     stalled = best and (best > 0.9 * base.constant and "yes" or "no") or nil,
     dead_mean = stats.mean(per_layer), dead_max = stats.max(per_layer), dead_per_layer = table.concat(layer_text, " "),
+    stuck_outputs = table.concat(stuck, " "),
   }, records, ids)
 end
 series[#series + 1] = { name = "all-zeros output", x = { 1, epochs }, y = { base.zeros, base.zeros }, color = "#888888" }
@@ -93,7 +100,7 @@ E:plot("plots/fig_4_11_activations.png", {
   width = 1100, key = "outside right top" })
 
 E.R:table {
-  title = "Figure 4.11 — activations: best and final validation MSE, and dead units",
+  title = "Figure 4.11 — activations: best and final validation MSE, dead units and stuck outputs",
   columns = exp.add_unseen_columns({
     { key = "activation", align = "left" },
     { key = "best_val_mse", header = "min val MSE", format = "%.4g" },
@@ -104,6 +111,7 @@ E.R:table {
     { key = "dead_mean", header = "dead units (mean over layers)", format = "%.2f" },
     { key = "dead_max", header = "dead units (worst layer)", format = "%.2f" },
     { key = "dead_per_layer", header = "dead units per hidden layer", align = "left" },
+    { key = "stuck_outputs", header = "stuck output channels, per seed", align = "left" },
   }, "final_val_mse"),
   rows = rows,
   notes = {
@@ -112,7 +120,8 @@ E.R:table {
     exp.unseen_note(),
     string.format("Our all-zeros output MSE is %.6f and the constant predictor's %.6f (the thesis' all-zeros MSE on its data: %.5f).",
                   base.zeros, base.constant, thesis.fig_4_11.stall_mse),
-    "Dead units, per hidden layer over the training rows: ReLU / leaky ReLU units never positive; tanh units with |a| > 0.99 and sigmoid units below 0.01 or above 0.99, and units of the other activations with |f'(z)| < 0.01, on more than 99% of the rows.",
+    "Stuck output channels: of the 3, those with the same finite value (to the bit) on every validation row — a ReLU output pinned at 0 is what the thesis' stall at the all-zeros error needs.",
+    "Dead units, per hidden layer over the validation rows: ReLU / leaky ReLU units never positive; tanh units with |a| > 0.99 and sigmoid units below 0.01 or above 0.99, and units of the other activations with |f'(z)| < 0.01, on more than 99% of the rows.",
     "Rows marked \"out\" use the hidden activation at the output too (the others a linear output). An empty row diverged: eight exponential layers overflow float (its result records `diverged`).",
   },
 }

@@ -1,5 +1,6 @@
 #include "nn/diagnostics.h"
 
+#include <cmath>
 #include <cstring>
 
 #include "nn/cpu_net.h"
@@ -36,7 +37,7 @@ int stuck_outputs(const Mlp& net, const float* x, std::size_t count) {
   for (std::size_t o = 0; o < outputs; ++o) {
     bool same = true;
     for (std::size_t r = 1; r < count && same; ++r) same = std::memcmp(&y[r * outputs + o], &y[o], sizeof(float)) == 0;
-    stuck += same;
+    stuck += same && std::isfinite(y[o]);  // NaN everywhere is a diverged net, not a stall
   }
   return stuck;
 }

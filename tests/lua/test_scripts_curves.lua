@@ -52,6 +52,12 @@ assert(act.exponential and not C.finite(act.exponential.best_val_mse), "exponent
 assert(act["GELU (tanh form)"].stalled == "no", "GELU learns")
 assert(act.tanh.dead_per_layer and #act.tanh.dead_per_layer:gsub("[^ ]", "") == 7, "8 hidden layers of dead-unit fractions")
 assert(act.tanh.stalled == "no", "tanh learns")
+-- stuck output channels, one count of the 3 per seed (quick mode: one seed)
+for _, r in ipairs(learned) do
+  local n = tonumber(r.stuck_outputs)
+  assert(n and n >= 0 and n <= 3, r.activation .. ": stuck output channels " .. tostring(r.stuck_outputs))
+end
+assert(tostring(act.tanh.stuck_outputs) == "0", "a linear tanh network's outputs all follow the input")
 -- Sigmoid's plateau: at 20 quick epochs and lr 0.00003 it has not left the constant predictor.
 assert(act.sigmoid.vs_constant > 0.9, "sigmoid stalls near the constant predictor: " .. act.sigmoid.vs_constant)
 assert(act.tanh.best_val_mse < act.sigmoid.best_val_mse, "tanh beats sigmoid")

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <stdexcept>
 #include <thread>
 
@@ -351,6 +352,8 @@ TEST(Diagnostics, StuckOutputChannels) {
   pinned.biases(1)[1] = -100.0f;  // output 2 below 0 on every row: ReLU gives exactly 0
   EXPECT_EQ(stuck_outputs(pinned, d.val_x.data(), d.val_count()), 1);
   EXPECT_EQ(stuck_outputs(pinned, d.val_x.data(), 0), -1);
+  pinned.biases(1)[0] = std::numeric_limits<float>::quiet_NaN();  // NaN on every row: diverged, not stuck
+  EXPECT_EQ(stuck_outputs(pinned, d.val_x.data(), d.val_count()), 1);
 }
 
 std::string job_error(TrainJob job) {
