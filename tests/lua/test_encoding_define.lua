@@ -146,5 +146,15 @@ assert(sn.mlp { inputs = { "uv" }, hidden = { 4 }, encoding = { uv = "powers" } 
        "the earlier definition of powers stays")
 ok, err = pcall(sn.mlp, { inputs = { "uv" }, hidden = { 4 }, encoding = { uv = { "powers", degree = 9 } } })
 assert(not ok and err:find("degree must be 1..4, got 9", 1, true), err)
+-- A redefinition that changes the output count: networks built before are refused, saying why.
+local function dup(k)
+  sn.encoding.define { name = "dup", outputs = function(w) return k * w end, glsl = "return x[j / " .. k .. "];",
+                       lua = function(x) local o = {} for c = 1, #x do for _ = 1, k do o[#o + 1] = x[c] end end return o end }
+end
+dup(1)
+local before = sn.mlp { inputs = { "uv" }, hidden = { 4 }, encoding = { uv = "dup" } }
+dup(2)
+ok, err = pcall(before.forward, before, { 0.1, 0.2 })
+assert(not ok and err:find("27 parameters, but its spec needs 35 (an encoding redefined with another output count?)", 1, true), err)
 C.rm(tmp)
 print("encoding define: ok")
