@@ -1,6 +1,6 @@
 -- The command line every experiment script shares:
 --   shadenet scripts/NAME.lua [--quick] [--shard i/n] [--out DIR] [--backend cpu|gl|auto]
---                             [--data poses|cloth] [--help]
+--                             [--data poses|cloth] [--ggx default|thesis] [--help]
 -- An unknown option is an error listing the valid ones. Without --shard, a Slurm job array
 -- (SLURM_ARRAY_TASK_ID / SLURM_ARRAY_TASK_COUNT) picks the shard, so `sbatch --array=0-7`
 -- (or 1-8) spreads a sweep over 8 machines with no extra flag.
@@ -12,6 +12,7 @@ local common = {
   { flag = "--out", value = "DIR", help = "write results to DIR instead of results/NAME" },
   { flag = "--backend", value = "cpu|gl|auto", help = "training backend (default: the script's choice)" },
   { flag = "--data", value = "poses|cloth", help = "training data: the cloth in 5 poses (default, covers the normal sphere) or the thesis' hanging cloth alone" },
+  { flag = "--ggx", value = "default|thesis", help = "GGX ground truth: the gold metal (default) or calibrated to the thesis' all-zeros MSE (diffuse 0.58, ambient 0.2)" },
   { flag = "--help", help = "print this help" },
 }
 
@@ -55,7 +56,7 @@ function cli.slurm_shard(getenv)
 end
 
 -- cli.parse(args, name [, extra_flags]) -> options
---   options = { quick, shard = {index, count} | nil, out, backend, data, name }
+--   options = { quick, shard = {index, count} | nil, out, backend, data, ggx, name }
 -- `extra_flags` adds script-specific flags, same shape as `common` above (value flags give a
 -- string, others true).
 function cli.parse(args, name, extra, getenv)
@@ -109,6 +110,13 @@ function cli.parse(args, name, extra, getenv)
       error(string.format("%s: unknown --data '%s' (valid: poses, cloth)", where, o.extra.data), 0)
     end
     o.data = o.extra.data
+  end
+  if o.extra.ggx then
+    local ok = { default = true, thesis = true }
+    if not ok[o.extra.ggx] then
+      error(string.format("%s: unknown --ggx '%s' (valid: default, thesis)", where, o.extra.ggx), 0)
+    end
+    o.ggx = o.extra.ggx
   end
   if o.extra.shard then
     o.shard = cli.parse_shard(o.extra.shard, where)
