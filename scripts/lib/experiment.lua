@@ -641,6 +641,24 @@ end
 
 local function blank() return sn.image.new { width = 1, height = 1, channels = 3, fill = 1 } end
 
+-- How coloured an image is where `mask` covers: the mean over those pixels of max(RGB) - min(RGB)
+-- (0 for greys). A network's minus its ground truth's is the colour shift the thesis saw in
+-- over-wide networks (figs. 4.2, 4.12).
+function exp.chroma(img, mask)
+  local w, h = img:size()
+  local sum, n = 0, 0
+  for y = 1, h do
+    for x = 1, w do
+      if mask:get(x, y)[4] > 0 then
+        local p = img:get(x, y)
+        sum = sum + math.max(p[1], p[2], p[3]) - math.min(p[1], p[2], p[3])
+        n = n + 1
+      end
+    end
+  end
+  return n > 0 and sum / n or 0
+end
+
 -- The box around a render's covered pixels with a margin (a fraction of its size), inside the
 -- image: figures show the mesh, not the empty frame around it.
 function exp.frame(img, margin)
@@ -659,7 +677,8 @@ function exp.crop(img, box) return sn.image.crop(img, box[1], box[2], box[3], bo
 --            nets = { {net = Mlp, label = "8x12"}, ... },
 --            meshes = { {mesh = path, label = "training mesh", views = {1, 3}}, ... },
 --            size = {w, h}, view_count = 8, max = error at the top of the colour bar (default: the
---            largest error on that mesh, shared by every heatmap of the mesh so they compare) }
+--            largest error on that mesh, shared by every heatmap of the mesh so they compare),
+--            colour_shift = true (each row also gets exp.chroma(network) - exp.chroma(truth)) }
 -- One pair of rows per (mesh, view): the truth and each network's rendering, captioned with its
 -- MSE over the covered pixels, then the |error| heatmaps under them. Network renders are
 -- clamped to [0, 1] as a display shows them (the truth is). Writes the PNG and a CSV of the
@@ -687,7 +706,8 @@ function E:compare(o)
                                         self.name, n.label, bad, m.label, v, o.file))
         end
         entry.nets[k] = { img = img, diff = diff, mse = mse }
-        rows[#rows + 1] = { mesh = m.label, view = v, network = n.label, mse = mse, non_finite_pixels = bad }
+        rows[#rows + 1] = { mesh = m.label, view = v, network = n.label, mse = mse, non_finite_pixels = bad,
+                            colour_shift = o.colour_shift and exp.chroma(img, truth) - exp.chroma(truth, truth) or nil }
       end
       entry.mesh = m.label
       renders[#renders + 1] = entry
@@ -724,8 +744,9 @@ function E:compare(o)
                               title = o.title, caption_size = size[1] >= 300 and 14 or 11 }
   self:figure(o.file, img)
   local csv = o.file:gsub("%.png$", ".csv")
-  self.R:write(csv, results.csv({ { key = "mesh" }, { key = "view" }, { key = "network" }, { key = "mse" },
-                                  { key = "non_finite_pixels" } }, rows))
+  local columns = { { key = "mesh" }, { key = "view" }, { key = "network" }, { key = "mse" }, { key = "non_finite_pixels" } }
+  if o.colour_shift then columns[#columns + 1] = { key = "colour_shift" } end
+  self.R:write(csv, results.csv(columns, rows))
   return rows
 end
 

@@ -1,4 +1,4 @@
--- Image scripts in --quick mode: table 4.3 with figure 4.10, figures 4.4/4.5 and 4.3/4.8. Files
+-- Image scripts in --quick mode: table 4.3 with figure 4.10, figures 4.1/4.2, 4.4/4.5 and 4.3/4.8. Files
 -- exist, figures are real pictures, per-panel MSEs are finite and agree with what they measure.
 local C = require "script_check"
 local sn = require "shadenet"
@@ -37,6 +37,21 @@ local panels = C.csv(dir .. "/figures/fig_4_10_widths.csv")
 assert(#panels == 4, "one MSE per network panel")
 C.assert_range(panels, "mse", 1e-7, 0.05, "figure 4.10")
 C.assert_range(panels, "non_finite_pixels", 0, 0, "figure 4.10")
+C.rm(dir)
+
+-- Figures 4.1/4.2 (Phong): the same grids, with each network's colour shift on the training
+-- mesh (the Phong truth is grey, so a shift is the network's own colour: >= 0, and small).
+dir = C.tmpdir("f41")
+C.ok("scripts/fig_4_1_4_2_phong.lua", { "--quick", "--out", dir })
+assert_picture(dir .. "/figures/fig_4_1_depth.png", 600, 300)
+assert_picture(dir .. "/figures/fig_4_2_width.png", 600, 300)
+rows = C.csv(dir .. "/table.csv")
+assert(#rows == 6, "3 networks in each figure")
+C.assert_range(rows, "train_mesh_mse", 1e-7, 0.05, "figures 4.1/4.2")
+C.assert_range(rows, "colour_shift", 0, 0.1, "figures 4.1/4.2")
+local deepest
+for _, r in ipairs(rows) do if r.network == "16 layers" then deepest = r end end
+assert(deepest and deepest.hidden == "L16-W06", "figure 4.1's 16 hidden layers of width 6")
 C.rm(dir)
 
 dir = C.tmpdir("f44")
