@@ -2,7 +2,8 @@
 -- L*a*b* (scaled to about [0, 1]: L*/100, (a*+128)/255, (b*+128)/255); median of 10 seeds of the
 -- minimum validation MSE over 20 epochs, measured, as in the thesis, in the space the network
 -- outputs, and also in RGB after converting its outputs back (the thesis' numbers in different
--- spaces are not on one scale; the RGB column is).
+-- spaces are not on one scale; the RGB column is). Figure 4.12: seed 1's networks of width 4 and
+-- 16 in each space rendered beside the truth, with their colour shift.
 --   shadenet scripts/table_4_4_color_spaces.lua [--quick] [--shard i/n] [--out DIR] [--backend cpu|gl|auto]
 package.path = (arg and arg[0] and arg[0]:match("^(.*)/[^/]*$") or ".") .. "/?.lua;" .. package.path
 local exp = require "lib.experiment"
@@ -46,6 +47,22 @@ for _, s in ipairs(spaces) do
     }, records, ids)
   end
 end
+-- Figure 4.12: what seed 1's networks of width 4 and 16 render in each space (decoded to RGB).
+local fig_nets = {}
+for _, w in ipairs { 4, 16 } do
+  for _, s in ipairs(spaces) do
+    local rec = records[string.format("%s-W%02d-s01", s.id, w)]
+    if rec then fig_nets[#fig_nets + 1] = { net = exp.net_from_record(rec), label = s.label .. ", width " .. w } end
+  end
+end
+local shifts = {}
+if #fig_nets > 0 then
+  local panels = E:compare { file = "figures/fig_4_12_color_spaces.png", model = "ggx", nets = fig_nets, colour_shift = true,
+                             title = "Figure 4.12 — GGX, 8 hidden layers: RGB, HSV and CIE L*a*b* outputs at widths 4 and 16",
+                             meshes = { { mesh = exp.meshes.train, label = "training mesh", views = { 1 } } } }
+  for _, p in ipairs(panels) do shifts[p.network] = p.colour_shift end
+end
+for _, r in ipairs(rows) do r.colour_shift = shifts[r.space .. ", width " .. r.width] end
 local base = E:baseline(descs.rgb)
 E.R:table {
   title = "Table 4.4 — GGX, 8 hidden layers: output colour space x width",
@@ -61,6 +78,7 @@ E.R:table {
     { key = "thesis_val_mse", header = "val MSE (thesis)", format = "%.4g" },
     { key = "ratio", header = "ours / thesis", format = "%.2f" },
     { key = "rgb_val_mse", header = "val MSE in RGB", format = "%.4g" },
+    { key = "colour_shift", header = "colour shift, seed 1 (fig. 4.12)", format = "%.4f" },
     { key = "runs", header = "runs" }, { key = "diverged", header = "diverged" },
   }, "rgb_val_mse"),
   rows = rows,
@@ -70,6 +88,7 @@ E.R:table {
     exp.unseen_note(),
     string.format("RGB constant predictor on the validation rows: MSE %.6f.", base.constant),
     "The thesis printed RGB only at width 8.",
+    exp.colour_shift_note .. " Figure 4.12 (figures/fig_4_12_color_spaces.png) shows seed 1's networks of widths 4 and 16.",
   },
 }
 E:finish {

@@ -641,17 +641,20 @@ end
 
 local function blank() return sn.image.new { width = 1, height = 1, channels = 3, fill = 1 } end
 
--- How coloured an image is where `mask` covers: the mean over those pixels of max(RGB) - min(RGB)
--- (0 for greys). A network's minus its ground truth's is the colour shift the thesis saw in
--- over-wide networks (figs. 4.2, 4.12).
-function exp.chroma(img, mask)
+-- How much a network's render differs in colour from its ground truth where the truth covers:
+-- the mean over those pixels of |c(network) - c(truth)|, c = max(RGB) - min(RGB) (0 for a grey):
+-- the colour shifts the thesis saw in over-wide networks (figs. 4.2, 4.12).
+exp.colour_shift_note = "Colour shift: the mean over the covered pixels of the training mesh of |c(network) - c(truth)|, "
+  .. "c = max(RGB) - min(RGB) of a pixel (0 for a grey): colour the network adds or loses."
+function exp.colour_shift(img, truth)
   local w, h = img:size()
   local sum, n = 0, 0
+  local function c(p) return math.max(p[1], p[2], p[3]) - math.min(p[1], p[2], p[3]) end
   for y = 1, h do
     for x = 1, w do
-      if mask:get(x, y)[4] > 0 then
-        local p = img:get(x, y)
-        sum = sum + math.max(p[1], p[2], p[3]) - math.min(p[1], p[2], p[3])
+      local t = truth:get(x, y)
+      if t[4] > 0 then
+        sum = sum + math.abs(c(img:get(x, y)) - c(t))
         n = n + 1
       end
     end
@@ -659,8 +662,6 @@ function exp.chroma(img, mask)
   return n > 0 and sum / n or 0
 end
 
--- The box around a render's covered pixels with a margin (a fraction of its size), inside the
--- image: figures show the mesh, not the empty frame around it.
 function exp.frame(img, margin)
   local x, y, w, h = sn.image.covered_box(img)
   local iw, ih = img:size()
@@ -678,7 +679,7 @@ function exp.crop(img, box) return sn.image.crop(img, box[1], box[2], box[3], bo
 --            meshes = { {mesh = path, label = "training mesh", views = {1, 3}}, ... },
 --            size = {w, h}, view_count = 8, max = error at the top of the colour bar (default: the
 --            largest error on that mesh, shared by every heatmap of the mesh so they compare),
---            colour_shift = true (each row also gets exp.chroma(network) - exp.chroma(truth)) }
+--            colour_shift = true (each row also gets exp.colour_shift(network, truth)) }
 -- One pair of rows per (mesh, view): the truth and each network's rendering, captioned with its
 -- MSE over the covered pixels, then the |error| heatmaps under them. Network renders are
 -- clamped to [0, 1] as a display shows them (the truth is). Writes the PNG and a CSV of the
@@ -707,7 +708,7 @@ function E:compare(o)
         end
         entry.nets[k] = { img = img, diff = diff, mse = mse }
         rows[#rows + 1] = { mesh = m.label, view = v, network = n.label, mse = mse, non_finite_pixels = bad,
-                            colour_shift = o.colour_shift and exp.chroma(img, truth) - exp.chroma(truth, truth) or nil }
+                            colour_shift = o.colour_shift and exp.colour_shift(img, truth) or nil }
       end
       entry.mesh = m.label
       renders[#renders + 1] = entry

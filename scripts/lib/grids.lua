@@ -68,7 +68,7 @@ function M.run(E, o)
     rows = rows,
     notes = { string.format("One seed per network; %s, tanh; training data: %s. Image MSE over covered pixels, RGB.",
                             exp.recipe(epochs), E:data_note()),
-              "Colour shift: the mean over covered pixels of max(RGB) - min(RGB) in the network's render of the training mesh, minus the same in the ground truth's (0: no colour the truth does not have).",
+              exp.colour_shift_note,
               exp.unseen_note() },
   }
   E:finish {

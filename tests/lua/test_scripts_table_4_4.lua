@@ -20,5 +20,15 @@ for _, r in ipairs(rows) do
 end
 local md = C.read(dir .. "/table.md")
 assert(md:find("the same networks' validation MSE in RGB", 1, true), "both grids in table.md")
+-- Figure 4.12: seed 1's networks of widths 4 and 16 in each space, each with its colour shift
+-- against the (gold, so coloured) truth; width 8 is not in the figure.
+assert(C.exists(dir .. "/figures/fig_4_12_color_spaces.png"), "figure 4.12")
+local panels = C.csv(dir .. "/figures/fig_4_12_color_spaces.csv")
+assert(#panels == 6, "3 spaces x widths 4 and 16: " .. #panels)
+C.assert_range(panels, "colour_shift", 0, 0.3, "figure 4.12")
+for _, r in ipairs(rows) do
+  local shown = r.width == 4 or r.width == 16
+  assert((tonumber(r.colour_shift) ~= nil) == shown, r.space .. " width " .. r.width .. ": colour shift only for the figure's networks")
+end
 C.rm(dir)
 print("table_4_4 script: ok")
