@@ -1,5 +1,5 @@
 -- Section 4.4 (figures 4.13-4.19): a network fitted to three-colour toon shading (8 hidden layers
--- x 12, Adam lr 0.00025, batch 8), then edited by hand: the first layer (the normal inputs'
+-- x 12, Adam lr 0.00025, batch 8; the thesis' 6 x 8 for figures 4.18 and 4.19), then edited by hand: the first layer (the normal inputs'
 -- weights rotated, as if the surface -- and so the light -- turned), a middle layer (one unit
 -- switched around) and the last layer (output rows swapped or scaled). Each edit is rendered on
 -- the training mesh and on the test mesh, and measured against the unedited network: how much
@@ -10,11 +10,15 @@
 package.path = (arg and arg[0] and arg[0]:match("^(.*)/[^/]*$") or ".") .. "/?.lua;" .. package.path
 local sn = require "shadenet"
 local exp = require "lib.experiment"
+local results = require "lib.results"
 
 local E = exp.start("sec_4_4_weight_edits", arg)
 local epochs = E:pick(10, exp.epochs)
 local desc = E:data_desc { model = "toon3" }
+-- The 8 x 12 network of figures 4.13-4.17, and the 6 x 8 one of figures 4.18 and 4.19.
 local records = E:sweep { exp.run { id = "toon3-8x12", hidden = exp.rep(12, 8), seed = 1, epochs = epochs, data = desc,
+                                    keep_params = true },
+                          exp.run { id = "toon3-6x8", hidden = exp.rep(8, 6), seed = 1, epochs = epochs, data = desc,
                                     keep_params = true } }
 local rec = records["toon3-8x12"]
 if not rec then return E:finish { records = records } end
@@ -46,25 +50,28 @@ local function scale_unit(net, layer, unit, k)
   net.layers[layer].bias[unit] = k * net.layers[layer].bias[unit]
 end
 local function swap_outputs(net, a, b)
-  local layer = net.layers[L]
+  local layer = net.layers[#net.layers]
   local ra, rb = layer.weight[a]:table(), layer.weight[b]:table()
   layer.weight[a], layer.weight[b] = rb, ra
   local ba, bb = layer.bias[a], layer.bias[b]
   layer.bias[a], layer.bias[b] = bb, ba
 end
 
+-- `caption`: what the figure says under each edit (short enough for a panel).
 local edits = {
-  { id = "first_rot_y", layer = "first", label = "first layer: normals turned 35° about y",
+  { id = "first_rot_y", layer = "first", label = "first layer: normals turned 35° about y", caption = "layer 1: normals 35° about y",
     apply = function(n) rotate_normals(n, "y", 35) end },
-  { id = "first_rot_x", layer = "first", label = "first layer: normals turned 25° about x",
+  { id = "first_rot_x", layer = "first", label = "first layer: normals turned 25° about x", caption = "layer 1: normals 25° about x",
     apply = function(n) rotate_normals(n, "x", 25) end },
   { id = "middle_negate", layer = "middle", label = string.format("layer %d: unit 1 negated", math.floor(L / 2) + 1),
+    caption = string.format("layer %d: unit 1 negated", math.floor(L / 2) + 1),
     apply = function(n) negate_unit(n, math.floor(L / 2) + 1, 1) end },
   { id = "middle_scale", layer = "middle", label = string.format("layer %d: unit 2 x 3", math.floor(L / 2) - 1),
+    caption = string.format("layer %d: unit 2 x 3", math.floor(L / 2) - 1),
     apply = function(n) scale_unit(n, math.floor(L / 2) - 1, 2, 3) end },
-  { id = "last_swap_rb", layer = "last", label = "last layer: red and blue rows swapped",
+  { id = "last_swap_rb", layer = "last", label = "last layer: red and blue rows swapped", caption = "last: red <-> blue rows",
     apply = function(n) swap_outputs(n, 1, 3) end },
-  { id = "last_scale_g", layer = "last", label = "last layer: green row x 0.5",
+  { id = "last_scale_g", layer = "last", label = "last layer: green row x 0.5", caption = "last: green row x 0.5",
     apply = function(n) scale_unit(n, L, 2, 0.5) end },
 }
 for _, e in ipairs(edits) do
@@ -110,7 +117,7 @@ for _, m in ipairs(meshes) do
   panels[#panels + 1] = { image = base, caption = string.format("fitted, MSE %.2e", sn.image.mse(truth, base, { channels = 3, mask = truth })) }
   for k, e in ipairs(edits) do
     local img = sn.image.clamp(exp.crop(E:time("render", scene.render, scene, e.net, { view = m.view }), box))
-    panels[#panels + 1] = { image = img, caption = string.format("(%s) %s", string.char(96 + k), e.layer) }
+    panels[#panels + 1] = { image = img, caption = string.format("(%s) %s", string.char(96 + k), e.caption) }
     local chroma, pattern = change(base, img)
     rows[#rows + 1] = { mesh = m.label, edit = string.char(96 + k), layer = e.layer, description = e.label,
                         chroma_change = chroma, pattern_change = pattern }
@@ -120,6 +127,43 @@ end
 E:figure("figures/weight_edits.png", sn.image.grid {
   panels = panels, columns = #edits + 2, row_labels = row_labels,
   title = "Section 4.4 — a toon-shading network (8 x 12) edited by hand", caption_size = size[1] >= 300 and 14 or 11 })
+
+-- Figures 4.18 and 4.19: the 6 x 8 network fitted (4.18) and edited (4.19: its last layer's red
+-- and blue rows swapped, edit (e) above) on the training mesh and on the test mesh from three
+-- views. The thesis' point: an edited network still acts as a lighting model on another mesh,
+-- so its edit looks the same from every view (the colour change against the fitted network
+-- stays alike and the pattern change stays near 0).
+local small_rec = records["toon3-6x8"]
+local small_rows = {}
+if small_rec then
+  local small = exp.net_from_record(small_rec)
+  local edited = small:clone()
+  swap_outputs(edited, 1, 3)
+  local views = { { mesh = exp.meshes.train, label = "training mesh", view = 1 } }
+  for _, v in ipairs { 2, 4, 6 } do views[#views + 1] = { mesh = exp.meshes.test, label = "test mesh", view = v } end
+  local p2, labels2 = {}, {}
+  for _, m in ipairs(views) do
+    local scene = E:scene { mesh = m.mesh, size = size, views = 8 }
+    local full = E:time("render", scene.render, scene, truth_model, { view = m.view })
+    local box = exp.frame(full)
+    local truth = exp.crop(full, box)
+    local fit = sn.image.clamp(exp.crop(E:time("render", scene.render, scene, small, { view = m.view }), box))
+    local ed = sn.image.clamp(exp.crop(E:time("render", scene.render, scene, edited, { view = m.view }), box))
+    local mse = sn.image.mse(truth, fit, { channels = 3, mask = truth })
+    local chroma, pattern = change(fit, ed)
+    p2[#p2 + 1] = { image = truth, caption = "toon ground truth" }
+    p2[#p2 + 1] = { image = fit, caption = string.format("fitted 6 x 8, MSE %.2e", mse) }
+    p2[#p2 + 1] = { image = ed, caption = "edited: red and blue rows swapped" }
+    labels2[#labels2 + 1] = string.format("%s, view %d", m.label, m.view)
+    small_rows[#small_rows + 1] = { mesh = m.label, view = m.view, fitted_mse = mse, chroma_change = chroma,
+                                    pattern_change = pattern }
+  end
+  E:figure("figures/fig_4_18_4_19.png", sn.image.grid {
+    panels = p2, columns = 3, row_labels = labels2, caption_size = size[1] >= 300 and 14 or 11,
+    title = "Figures 4.18 and 4.19 — the 6 x 8 toon network, fitted and edited, on the training and a different mesh" })
+  E.R:write("figures/fig_4_18_4_19.csv", results.csv({ { key = "mesh" }, { key = "view" },
+    { key = "fitted_mse" }, { key = "chroma_change" }, { key = "pattern_change" } }, small_rows))
+end
 
 E.R:table {
   title = "Section 4.4 — what each edit changes, against the unedited network",
@@ -136,6 +180,9 @@ E.R:table {
     string.format("Fitted network on the unseen meshes: image MSE %.4g, SSIM %.4f. %s", rec.result.unseen_mse or 0 / 0,
                   rec.result.unseen_ssim or 0 / 0, exp.unseen_note()),
     "Chromaticity = rgb / (r + g + b) per pixel; both measures over pixels covered in both renderings.",
+    small_rec and string.format("Figures 4.18 and 4.19 (figures/fig_4_18_4_19.png and .csv): the thesis' 6 x 8 network, "
+                                .. "min val MSE %.6f, fitted and with its red and blue output rows swapped, on the training "
+                                .. "mesh (view 1) and the test mesh (views 2, 4, 6).", small_rec.result.best_val_mse) or nil,
   },
 }
 -- The edited networks, for a closer look (sn.load).

@@ -23,6 +23,13 @@ local fitted, swapped = sn.load(dir .. "/networks/fitted.mlp"), sn.load(dir .. "
 local L = #fitted.layers
 assert(swapped.layers[L].weight[1][1] == fitted.layers[L].weight[3][1], "saved edit: rows swapped")
 assert(swapped.layers[L].bias[3] == fitted.layers[L].bias[1], "saved edit: biases swapped")
+-- Figures 4.18/4.19: the 6 x 8 network's edit recolours alike from every view, shading kept.
+assert(C.exists(dir .. "/figures/fig_4_18_4_19.png"), "figures 4.18 and 4.19")
+local views = C.csv(dir .. "/figures/fig_4_18_4_19.csv")
+assert(#views == 4, "the training view and three test-mesh views")
+C.assert_range(views, "fitted_mse", 1e-7, 0.05, "figure 4.18")
+C.assert_range(views, "chroma_change", 0.3, 2, "figure 4.19")
+C.assert_range(views, "pattern_change", 0, 0.05, "figure 4.19")
 C.rm(dir)
 
 dir = C.tmpdir("s45")
