@@ -105,7 +105,7 @@ for _, size in ipairs(sizes) do
   for _, n in ipairs(nets) do
     local per_frame, per_call = E:time("render", exp.render_seconds, n.net, g, frames)
     render_rows[#render_rows + 1] = {
-      network = n.name, image = size_name, pixels = size[1] * size[2], covered = covered,
+      network = n.name, image = size_name, backend = sn.render_info().backend, pixels = size[1] * size[2], covered = covered,
       ms_per_frame = 1000 * per_frame, ns_per_fragment = 1e9 * per_frame / covered, ms_per_call = 1000 * per_call,
       truth_ms_per_call = 1000 * truth_s,
       thesis_ms = thesis.table_4_6[n.name][size_name], thesis_ns_per_fragment = thesis.table_4_7[n.name],
@@ -153,7 +153,7 @@ E.R:table {
       value = "ns_per_fragment", thesis = "thesis_ns_per_fragment", format = "%.1f" },
   },
   columns = {
-    { key = "network", align = "left" }, { key = "image" }, { key = "covered", header = "covered fragments" },
+    { key = "network", align = "left" }, { key = "image" }, { key = "backend", align = "left" }, { key = "covered", header = "covered fragments" },
     { key = "ms_per_frame", header = "ms / frame (drawing)", format = "%.3f" },
     { key = "ns_per_fragment", header = "ns / fragment", format = "%.1f" },
     { key = "ms_per_call", header = "ms / call (draw + read-back)", format = "%.3f" },
@@ -163,8 +163,9 @@ E.R:table {
   },
   rows = render_rows,
   notes = {
-    string.format("Drawing: one net:render call of %d + 1 frames less a call of 1 frame, after a warm-up, timed to sn.finish() (no read-back in it). Renderer: %s.",
-                  frames, info.renderer),
+    string.format("Drawing: one net:render call of %d + 1 frames less a call of 1 frame, after a warm-up, timed to sn.finish() (no read-back of the image in it). "
+                  .. "Renderer: %s; the backend column is what net:render's auto chose (cpu: the network's kernels over the covered G-buffer pixels, "
+                  .. "attribute read-back included; gl: the fragment shader).", frames, info.renderer),
     "A call: one frame drawn and read back into an image; the GGX truth pass over the same G-buffer, for scale (median of the same number of calls).",
   },
 }
