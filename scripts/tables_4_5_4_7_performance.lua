@@ -198,16 +198,25 @@ E:plot("plots/train_time_per_batch.png", { title = "Table 4.5 — training time 
   xlabel = "batch size", ylabel = "ms per batch", logx = true, logy = true, series = series, key = "outside right",
   width = 1000 })
 
+-- Rendering: one colour per network; ours solid, the thesis' (GTX 1060) dashed with open squares.
+local net_color = { ["4x4"] = "#1f77b4", ["8x8"] = "#2ca02c", ["12x12"] = "#ff7f0e", ["16x16"] = "#d62728" }
 series = {}
 for _, n in ipairs(nets) do
-  local s = { name = n.name .. " (ours)", x = {}, y = {}, style = "linespoints" }
+  local s = { name = n.name .. " (ours)", x = {}, y = {}, style = "linespoints", color = net_color[n.name] }
+  local t = { name = n.name .. " (thesis: GTX 1060)", x = {}, y = {}, style = "linespoints", color = net_color[n.name],
+              dash = 2, point = 4 }
   for _, r in ipairs(render_rows) do
-    if r.network == n.name then s.x[#s.x + 1], s.y[#s.y + 1] = r.pixels / 1e6, r.ms_per_frame end
+    if r.network == n.name then
+      s.x[#s.x + 1], s.y[#s.y + 1] = r.pixels / 1e6, r.ms_per_frame
+      if r.thesis_ms then t.x[#t.x + 1], t.y[#t.y + 1] = r.pixels / 1e6, r.thesis_ms end
+    end
   end
   series[#series + 1] = s
+  if #t.x > 0 then series[#series + 1] = t end
 end
-E:plot("plots/render_time.png", { title = "Table 4.6 — rendering time per frame",
-  xlabel = "image size (megapixels)", ylabel = "ms per frame", logy = true, series = series, key = "top left" })
+E:plot("plots/render_time.png", { title = "Table 4.6 — rendering time per frame, ours and the thesis'",
+  xlabel = "image size (megapixels)", ylabel = "ms per frame", logy = true, series = series, key = "outside right",
+  width = 1000 })
 
 E:finish {
   records = records,
