@@ -128,6 +128,74 @@ E:figure("figures/weight_edits.png", sn.image.grid {
   panels = panels, columns = #edits + 2, row_labels = row_labels,
   title = "Section 4.4 — a toon-shading network (8 x 12) edited by hand", caption_size = size[1] >= 300 and 14 or 11 })
 
+-- Figure 4.17: stylised looks from hand edits of the 8 x 12 network, as the thesis shows three
+-- (a watercolour-like shade, shades in different colours, strokes). Ours: (a) every middle layer's
+-- weights perturbed by up to 25% (a fixed pseudo-random pattern), (b) the output colours cycled
+-- (red takes green's row, green blue's, blue red's) with the shading kept, (c) the first layer's
+-- weights on the normal inputs tripled, which sharpens the bands into strokes. Measured like the
+-- edits above, against the fitted network.
+local function perturb_middle(net, amount)
+  local k = 0
+  for l = 2, L - 1 do
+    local w = net.layers[l].weight
+    for r = 1, #w do
+      for c = 1, #w[r] do
+        k = k + 1
+        w[r][c] = w[r][c] * (1 + amount * math.sin(12.9898 * k))  -- deterministic, no RNG state
+      end
+    end
+  end
+end
+local function cycle_outputs(net)
+  local layer = net.layers[#net.layers]
+  local rows = { layer.weight[1]:table(), layer.weight[2]:table(), layer.weight[3]:table() }
+  local bias = { layer.bias[1], layer.bias[2], layer.bias[3] }
+  for c = 1, 3 do
+    local from = c % 3 + 1
+    layer.weight[c], layer.bias[c] = rows[from], bias[from]
+  end
+end
+local function scale_normal_inputs(net, k)
+  local w = net.layers[1].weight
+  for r = 1, #w do
+    for c = 1, 3 do w[r][c] = k * w[r][c] end
+  end
+end
+local styles = {
+  { id = "style_perturbed", caption = "middle layers perturbed 25%", apply = function(n) perturb_middle(n, 0.25) end },
+  { id = "style_cycled", caption = "output colours cycled", apply = cycle_outputs },
+  { id = "style_strokes", caption = "layer 1 normal weights x 3", apply = function(n) scale_normal_inputs(n, 3) end },
+}
+local style_rows = {}
+do
+  local p3, labels3 = {}, {}
+  for _, st in ipairs(styles) do
+    st.net = fitted:clone()
+    st.apply(st.net)
+  end
+  for _, m in ipairs(meshes) do
+    local scene = E:scene { mesh = m.mesh, size = size, views = 8 }
+    local full = E:time("render", scene.render, scene, truth_model, { view = m.view })
+    local box = exp.frame(full)
+    local base = sn.image.clamp(exp.crop(E:time("render", scene.render, scene, fitted, { view = m.view }), box))
+    p3[#p3 + 1] = { image = exp.crop(full, box), caption = "toon ground truth" }
+    p3[#p3 + 1] = { image = base, caption = "fitted 8 x 12" }
+    for k, st in ipairs(styles) do
+      local img = sn.image.clamp(exp.crop(E:time("render", scene.render, scene, st.net, { view = m.view }), box))
+      p3[#p3 + 1] = { image = img, caption = string.format("(%s) %s", string.char(96 + k), st.caption) }
+      local chroma, pattern = change(base, img)
+      style_rows[#style_rows + 1] = { mesh = m.label, style = string.char(96 + k), description = st.caption,
+                                      chroma_change = chroma, pattern_change = pattern }
+    end
+    labels3[#labels3 + 1] = m.label
+  end
+  E:figure("figures/fig_4_17_styles.png", sn.image.grid {
+    panels = p3, columns = #styles + 2, row_labels = labels3, caption_size = size[1] >= 300 and 14 or 11,
+    title = "Figure 4.17 — stylised looks from hand edits of the 8 x 12 toon network" })
+  E.R:write("figures/fig_4_17_styles.csv", results.csv({ { key = "mesh" }, { key = "style" }, { key = "description" },
+    { key = "chroma_change" }, { key = "pattern_change" } }, style_rows))
+end
+
 -- Figures 4.18 and 4.19: the 6 x 8 network fitted (4.18) and edited (4.19: its last layer's red
 -- and blue rows swapped, edit (e) above) on the training mesh and on the test mesh from three
 -- views. The thesis' point: an edited network still acts as a lighting model on another mesh,
@@ -180,6 +248,7 @@ E.R:table {
     string.format("Fitted network on the unseen meshes: image MSE %.4g, SSIM %.4f. %s", rec.result.unseen_mse or 0 / 0,
                   rec.result.unseen_ssim or 0 / 0, exp.unseen_note()),
     "Chromaticity = rgb / (r + g + b) per pixel; both measures over pixels covered in both renderings.",
+    "Figure 4.17 (figures/fig_4_17_styles.png and .csv): three stylised edits of the 8 x 12 network, measured the same way.",
     small_rec and string.format("Figures 4.18 and 4.19 (figures/fig_4_18_4_19.png and .csv): the thesis' 6 x 8 network, "
                                 .. "min val MSE %.6f, fitted and with its red and blue output rows swapped, on the training "
                                 .. "mesh (view 1) and the test mesh (views 2, 4, 6).", small_rec.result.best_val_mse) or nil,

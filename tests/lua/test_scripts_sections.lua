@@ -23,6 +23,14 @@ local fitted, swapped = sn.load(dir .. "/networks/fitted.mlp"), sn.load(dir .. "
 local L = #fitted.layers
 assert(swapped.layers[L].weight[1][1] == fitted.layers[L].weight[3][1], "saved edit: rows swapped")
 assert(swapped.layers[L].bias[3] == fitted.layers[L].bias[1], "saved edit: biases swapped")
+-- Figure 4.17: three stylised edits, measured; cycling the output colours recolours most.
+assert(C.exists(dir .. "/figures/fig_4_17_styles.png"), "figure 4.17")
+local styles = C.csv(dir .. "/figures/fig_4_17_styles.csv")
+assert(#styles == 6, "3 styles x 2 meshes")
+C.assert_range(styles, "chroma_change", 0.01, 2, "figure 4.17")
+for _, r in ipairs(styles) do
+  if r.style == "b" then assert(r.chroma_change > 0.3, "cycled colours: " .. r.chroma_change) end
+end
 -- Figures 4.18/4.19: the 6 x 8 network's edit recolours alike from every view, shading kept.
 assert(C.exists(dir .. "/figures/fig_4_18_4_19.png"), "figures 4.18 and 4.19")
 local views = C.csv(dir .. "/figures/fig_4_18_4_19.csv")
