@@ -37,8 +37,9 @@ function M.run(E, o)
       if rec then nets[#nets + 1] = { net = exp.net_from_record(rec), label = n.label, id = n.id } end
     end
     if #nets > 0 then
+      -- 640 x 480 in full mode: the cropped panels stay above 256 pixels wide, enough to see the effects.
       local mses = E:compare { file = fig.file, title = fig.title, model = o.model, nets = nets, meshes = meshes,
-                               colour_shift = true }
+                               colour_shift = true, size = E:pick({ 200, 150 }, { 640, 480 }) }
       for _, n in ipairs(nets) do
         local row = { figure = fig.title:match("Figure ([%d.]+)"), network = n.label, hidden = n.id,
                       val_mse = records[n.id].result.best_val_mse }
