@@ -46,6 +46,7 @@ for _, a in ipairs(archs) do
     vs_constant = m and m / base.constant or nil, runs = found, diverged = bad,
   }, records, ids)
 end
+local vs_thesis = exp.vs_thesis(rows, "val_mse", "thesis_val_mse")
 E.R:table {
   title = "Table 4.3 — GGX, 8 hidden layers: fixed against varying widths",
   columns = exp.add_unseen_columns({
@@ -63,6 +64,7 @@ E.R:table {
                   seeds, exp.recipe(epochs), E:data_note()),
     exp.unseen_note(),
     string.format("Constant predictor on the same validation rows: MSE %.6f; all-zeros output: %.6f.", base.constant, base.zeros),
+    vs_thesis.notes[1], vs_thesis.notes[2],
   },
 }
 

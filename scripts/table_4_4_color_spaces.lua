@@ -64,6 +64,7 @@ if #fig_nets > 0 then
 end
 for _, r in ipairs(rows) do r.colour_shift = shifts[r.space .. ", width " .. r.width] end
 local base = E:baseline(descs.rgb)
+local vs_thesis = exp.vs_thesis(rows, "val_mse", "thesis_val_mse")  -- own-space MSEs, as the thesis printed them
 E.R:table {
   title = "Table 4.4 — GGX, 8 hidden layers: output colour space x width",
   grids = {
@@ -89,6 +90,7 @@ E.R:table {
     string.format("RGB constant predictor on the validation rows: MSE %.6f.", base.constant),
     "The thesis printed RGB only at width 8.",
     exp.colour_shift_note .. " Figure 4.12 (figures/fig_4_12_color_spaces.png) shows seed 1's networks of widths 4 and 16.",
+    vs_thesis.notes[1], vs_thesis.notes[2],
   },
 }
 E:finish {

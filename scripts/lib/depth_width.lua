@@ -42,24 +42,9 @@ function M.run(E, o)
       }, records, list)
     end
   end
-  -- Do the same architectures do well here and in the thesis? Spearman's rank correlation of
-  -- the cells (ties are not expected in MSEs).
-  local function ranks(key)
-    local idx = {}
-    for i, r in ipairs(rows) do if r.val_mse and r.thesis_val_mse then idx[#idx + 1] = i end end
-    table.sort(idx, function(a, b) return rows[a][key] < rows[b][key] end)
-    local rk = {}
-    for k, i in ipairs(idx) do rk[i] = k end
-    return rk, #idx
-  end
-  local ro, n = ranks("val_mse")
-  local rt = ranks("thesis_val_mse")
-  local d2 = 0
-  for i in pairs(ro) do d2 = d2 + (ro[i] - rt[i]) ^ 2 end
-  local spearman = n > 2 and 1 - 6 * d2 / (n * (n * n - 1)) or nil
-  local ratios = {}
-  for _, r in ipairs(rows) do ratios[#ratios + 1] = r.ratio end
-  local median_ratio = stats.median(ratios)
+  -- Do the same architectures do well here and in the thesis?
+  local vs = exp.vs_thesis(rows, "val_mse", "thesis_val_mse")
+  local spearman, median_ratio = vs.spearman, vs.median_ratio
   E.R:table {
     title = o.title,
     grids = { { title = "median minimum validation MSE, ours (thesis)", rows = "layers", cols = "width",
@@ -81,9 +66,7 @@ function M.run(E, o)
       exp.unseen_note(),
       string.format("Constant predictor (training mean) on the same validation rows: MSE %.6f; all-zeros output: %.6f.",
                     base.constant, base.zeros),
-      spearman and string.format("Rank correlation (Spearman) of our cells with the thesis' over the %d cells: %.3f.",
-                                 n, spearman) or nil,
-      median_ratio and string.format("Median over the cells of ours / thesis: %.3g.", median_ratio) or nil,
+      vs.notes[1], vs.notes[2],
     },
   }
 

@@ -751,6 +751,40 @@ function E:compare(o)
   return rows
 end
 
+-- How our cells compare with the thesis': Spearman's rank correlation (ties are not expected in
+-- MSEs) and the median of ours / thesis over the rows that have both `key` and `thesis_key`;
+-- `notes` are the lines a table prints at its bottom (nil where a number has too few cells).
+function exp.vs_thesis(rows, key, thesis_key)
+  local idx = {}
+  for i, r in ipairs(rows) do
+    if stats.finite(r[key]) and stats.finite(r[thesis_key]) then idx[#idx + 1] = i end
+  end
+  local function ranks(k)
+    local order = { unpack(idx) }
+    table.sort(order, function(a, b) return rows[a][k] < rows[b][k] end)
+    local rk = {}
+    for pos, i in ipairs(order) do rk[i] = pos end
+    return rk
+  end
+  local n = #idx
+  local ro, rt = ranks(key), ranks(thesis_key)
+  local d2, ratios = 0, {}
+  for _, i in ipairs(idx) do
+    d2 = d2 + (ro[i] - rt[i]) ^ 2
+    ratios[#ratios + 1] = rows[i][key] / rows[i][thesis_key]
+  end
+  local spearman = n > 2 and 1 - 6 * d2 / (n * (n * n - 1)) or nil
+  local median_ratio = stats.median(ratios)
+  return {
+    n = n, spearman = spearman, median_ratio = median_ratio,
+    notes = {
+      spearman and string.format("Rank correlation (Spearman) of our cells with the thesis' over the %d cells: %.3f.", n,
+                                 spearman) or nil,
+      median_ratio and string.format("Median over the cells of ours / thesis: %.3g.", median_ratio) or nil,
+    },
+  }
+end
+
 -- ---- finish ---------------------------------------------------------------------------------
 
 -- E:finish{ config = {...}, summary = {...} }: writes run.json and prints where everything is.
