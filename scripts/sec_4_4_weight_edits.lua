@@ -104,19 +104,26 @@ end
 
 local size = E:pick({ 200, 150 }, { 480, 360 })
 local truth_model = exp.model("toon3")
+-- The ground truth of one mesh view cropped to its frame, and a function rendering a network
+-- there the same way (clamped to [0, 1], as a display shows it).
+local function view_of(m)
+  local scene = E:scene { mesh = m.mesh, size = size, views = 8 }
+  local full = E:time("render", scene.render, scene, truth_model, { view = m.view })
+  local box = exp.frame(full)
+  return exp.crop(full, box), function(net)
+    return sn.image.clamp(exp.crop(E:time("render", scene.render, scene, net, { view = m.view }), box))
+  end
+end
 local meshes = { { mesh = exp.meshes.train, label = "training mesh", view = 1 },
                  { mesh = exp.meshes.test, label = "test mesh", view = 2 } }
 local panels, row_labels, rows = {}, {}, {}
 for _, m in ipairs(meshes) do
-  local scene = E:scene { mesh = m.mesh, size = size, views = 8 }
-  local full = E:time("render", scene.render, scene, truth_model, { view = m.view })
-  local box = exp.frame(full)
-  local truth = exp.crop(full, box)
-  local base = sn.image.clamp(exp.crop(E:time("render", scene.render, scene, fitted, { view = m.view }), box))
+  local truth, render = view_of(m)
+  local base = render(fitted)
   panels[#panels + 1] = { image = truth, caption = "toon ground truth" }
   panels[#panels + 1] = { image = base, caption = string.format("fitted, MSE %.2e", sn.image.mse(truth, base, { channels = 3, mask = truth })) }
   for k, e in ipairs(edits) do
-    local img = sn.image.clamp(exp.crop(E:time("render", scene.render, scene, e.net, { view = m.view }), box))
+    local img = render(e.net)
     panels[#panels + 1] = { image = img, caption = string.format("(%s) %s", string.char(96 + k), e.caption) }
     local chroma, pattern = change(base, img)
     rows[#rows + 1] = { mesh = m.label, edit = string.char(96 + k), layer = e.layer, description = e.label,
@@ -174,14 +181,12 @@ do
     st.apply(st.net)
   end
   for _, m in ipairs(meshes) do
-    local scene = E:scene { mesh = m.mesh, size = size, views = 8 }
-    local full = E:time("render", scene.render, scene, truth_model, { view = m.view })
-    local box = exp.frame(full)
-    local base = sn.image.clamp(exp.crop(E:time("render", scene.render, scene, fitted, { view = m.view }), box))
-    p3[#p3 + 1] = { image = exp.crop(full, box), caption = "toon ground truth" }
+    local truth, render = view_of(m)
+    local base = render(fitted)
+    p3[#p3 + 1] = { image = truth, caption = "toon ground truth" }
     p3[#p3 + 1] = { image = base, caption = "fitted 8 x 12" }
     for k, st in ipairs(styles) do
-      local img = sn.image.clamp(exp.crop(E:time("render", scene.render, scene, st.net, { view = m.view }), box))
+      local img = render(st.net)
       p3[#p3 + 1] = { image = img, caption = string.format("(%s) %s", string.char(96 + k), st.caption) }
       local chroma, pattern = change(base, img)
       style_rows[#style_rows + 1] = { mesh = m.label, style = string.char(96 + k), description = st.caption,
@@ -211,12 +216,8 @@ if small_rec then
   for _, v in ipairs { 2, 4, 6 } do views[#views + 1] = { mesh = exp.meshes.test, label = "test mesh", view = v } end
   local p2, labels2 = {}, {}
   for _, m in ipairs(views) do
-    local scene = E:scene { mesh = m.mesh, size = size, views = 8 }
-    local full = E:time("render", scene.render, scene, truth_model, { view = m.view })
-    local box = exp.frame(full)
-    local truth = exp.crop(full, box)
-    local fit = sn.image.clamp(exp.crop(E:time("render", scene.render, scene, small, { view = m.view }), box))
-    local ed = sn.image.clamp(exp.crop(E:time("render", scene.render, scene, edited, { view = m.view }), box))
+    local truth, render = view_of(m)
+    local fit, ed = render(small), render(edited)
     local mse = sn.image.mse(truth, fit, { channels = 3, mask = truth })
     local chroma, pattern = change(fit, ed)
     p2[#p2 + 1] = { image = truth, caption = "toon ground truth" }
