@@ -69,8 +69,14 @@ H.sleep(3.3)
 x11:key("q")
 for _ = 1, 100 do if asks(s) == 2 then break end H.sleep(0.05) end
 assert(asks(s) == 2 and alive(s), "after 3 s a Q asks again")
+-- A second Q within 3 s quits. (XTest key events have been seen to go missing under Xvfb: if
+-- the window heard nothing in 1 s, no new question and still alive, press again, still well
+-- within the 3 s.)
 x11:key("q")
+for _ = 1, 20 do if not alive(s) then break end H.sleep(0.05) end
+if alive(s) and asks(s) == 2 then x11:key("q") end
 wait_exit(s, "a second Q within 3 s quits")
+assert(asks(s) == 2, "the second Q quit without asking again")
 s.pipe:close()
 
 -- 3. An edit, then a reload: the edit is gone with it, Q quits at once.
