@@ -47,4 +47,41 @@ function M.forward(net, x, params)
   return a
 end
 
+-- The l2 loss (mean over rows and outputs) of `net` with parameters p over rows {x, y}.
+function M.loss(net, rows, p)
+  local sum, outs = 0, net:spec().outputs
+  for _, r in ipairs(rows) do
+    local out = M.forward(net, r[1], p)  -- in double: set_params would round p +- h to float
+    for o = 1, outs do sum = sum + (out[o] - r[2][o]) ^ 2 end
+  end
+  return sum / (#rows * outs)
+end
+
+-- `steps` Adam steps (Kingma & Ba, with the bias corrections) from net:params() over one
+-- minibatch of all `rows`, the gradient taken by central differences of M.loss (h = 1e-6):
+-- what sn.train must do, computed without any of its code. adam = { lr, beta1, beta2, eps }.
+function M.adam_steps(net, rows, steps, adam)
+  local b1, b2 = adam.beta1 or 0.8, adam.beta2 or 0.9
+  local p, m, v = net:params(), {}, {}
+  for j = 1, #p do m[j], v[j] = 0, 0 end
+  for t = 1, steps do
+    local g = {}
+    for j = 1, #p do
+      local keep, h = p[j], 1e-6
+      p[j] = keep + h
+      local up = M.loss(net, rows, p)
+      p[j] = keep - h
+      local down = M.loss(net, rows, p)
+      p[j] = keep
+      g[j] = (up - down) / (2 * h)
+    end
+    for j = 1, #p do
+      m[j] = b1 * m[j] + (1 - b1) * g[j]
+      v[j] = b2 * v[j] + (1 - b2) * g[j] * g[j]
+      p[j] = p[j] - adam.lr * (m[j] / (1 - b1 ^ t)) / (math.sqrt(v[j] / (1 - b2 ^ t)) + adam.eps)
+    end
+  end
+  return p
+end
+
 return M

@@ -43,35 +43,9 @@ local p0 = net:params()
 -- lr * g (not lr * sign g), so that the comparison sees every gradient's size.
 local rows = {}
 for i = 1, 8 do rows[i] = { data:row("train", i) } end
-local ref = sn.mlp { inputs = 6, hidden = { 8, 8 }, outputs = 3, activation = "softsign", output_activation = "softsign" }
-local function loss(p)
-  local sum = 0
-  for _, r in ipairs(rows) do
-    local out = forward(ref, r[1], p)  -- in double: set_params would round p +- h to float
-    for o = 1, 3 do sum = sum + (out[o] - r[2][o]) ^ 2 end
-  end
-  return sum / (8 * 3)
-end
-local lr, b1, b2, eps = 0.1, 0.8, 0.9, 1
-local p, m, v = {}, {}, {}
-for j = 1, #p0 do p[j], m[j], v[j] = p0[j], 0, 0 end
-for t = 1, 2 do
-  local g = {}
-  for j = 1, #p do
-    local keep, h = p[j], 1e-6
-    p[j] = keep + h
-    local up = loss(p)
-    p[j] = keep - h
-    local down = loss(p)
-    p[j] = keep
-    g[j] = (up - down) / (2 * h)
-  end
-  for j = 1, #p do
-    m[j] = b1 * m[j] + (1 - b1) * g[j]
-    v[j] = b2 * v[j] + (1 - b2) * g[j] * g[j]
-    p[j] = p[j] - lr * (m[j] / (1 - b1 ^ t)) / (math.sqrt(v[j] / (1 - b2 ^ t)) + eps)
-  end
-end
+local lr, eps = 0.1, 1
+local p = reference.adam_steps(net, rows, 2, { lr = lr, eps = eps })
+local function loss(q) return reference.loss(net, rows, q) end
 local r = sn.train { nets = net, data = data, epochs = 2, batch = 8, adam = { lr = lr, eps = eps }, backend = "auto" }[1]
 assert(r.backend == "gl", "auto picks gl for an activation without cpu code, got " .. r.backend)
 assert(r.steps == 2 and math.abs(r.train_loss[1] - loss(p0)) < 1e-6 * loss(p0), "the same rows and forward pass")

@@ -5,7 +5,8 @@
 -- differences of the reference forward pass; checkpoints; net:spec() and tostring.
 local sn = require "shadenet"
 local encoding = require "encoding_reference"
-local forward = require("reference_forward").forward
+local reference = require "reference_forward"
+local forward = reference.forward
 
 -- A user's encoding, defined in GLSL and Lua (sn.encoding.define), checked like the built-ins:
 -- the powers x, x^2, .. x^n of each component. Its reference is written apart from its twin.
@@ -103,34 +104,9 @@ for k, enc in ipairs(cases) do
   local p0 = net:params()
   local rows = {}
   for i = 1, 8 do rows[i] = { data:row("train", i) } end
-  local function loss(p)
-    local sum = 0
-    for _, r in ipairs(rows) do
-      local out = forward(net, r[1], p)
-      for o = 1, 3 do sum = sum + (out[o] - r[2][o]) ^ 2 end
-    end
-    return sum / (8 * 3)
-  end
-  local lr, b1, b2, eps = 0.1, 0.8, 0.9, 1
-  local p, m, v = {}, {}, {}
-  for j = 1, #p0 do p[j], m[j], v[j] = p0[j], 0, 0 end
-  for t = 1, 2 do
-    local g = {}
-    for j = 1, #p do
-      local keep, h = p[j], 1e-6
-      p[j] = keep + h
-      local up = loss(p)
-      p[j] = keep - h
-      local down = loss(p)
-      p[j] = keep
-      g[j] = (up - down) / (2 * h)
-    end
-    for j = 1, #p do
-      m[j] = b1 * m[j] + (1 - b1) * g[j]
-      v[j] = b2 * v[j] + (1 - b2) * g[j] * g[j]
-      p[j] = p[j] - lr * (m[j] / (1 - b1 ^ t)) / (math.sqrt(v[j] / (1 - b2 ^ t)) + eps)
-    end
-  end
+  local function loss(q) return reference.loss(net, rows, q) end
+  local lr, eps = 0.1, 1
+  local p = reference.adam_steps(net, rows, 2, { lr = lr, eps = eps })
   local moved = max_abs(p, p0)
   assert(moved > 1e-3, label .. ": two steps moved the parameters: " .. moved)
   for _, backend in ipairs { "cpu", "gl" } do
