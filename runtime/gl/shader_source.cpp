@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <regex>
 #include <set>
@@ -181,6 +182,14 @@ std::string rewrite_log(const std::string& log, const ShaderSource& src) {
     }
   }
   return out;
+}
+
+std::string float_literal(double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.9g", float(v));
+  std::string s = buf;
+  if (s.find_first_of(".eE") == std::string::npos) s += ".0";
+  return s;
 }
 
 }  // namespace sn::gl

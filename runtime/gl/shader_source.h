@@ -38,6 +38,9 @@ void set_shader_file_observer(std::function<void(const std::string& absolute_pat
 ShaderSource preprocess_text(const std::string& name, const std::string& text, const Defines& defines,
                              const Includes& includes = {});
 
+// A GLSL float literal that reads back as the same float as `v` ("0.5", "1.0", "1e-07").
+std::string float_literal(double v);
+
 // Rewrites a Mesa or NVIDIA info log ("0:12(3): error: ..." / "0(12) : error ...") into
 // "shaders/FILE.glsl:LINE: error: ..." lines, each followed by the offending source line.
 std::string rewrite_log(const std::string& log, const ShaderSource& src);

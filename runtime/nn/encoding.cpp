@@ -6,6 +6,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "gl/shader_source.h"
 #include "io/text.h"
 #include "nn/registry_name.h"
 
@@ -52,15 +53,6 @@ Defs& registry() {
     return d;
   }();
   return defs;
-}
-
-// A float literal GLSL reads back as the same float.
-std::string float_literal(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.9g", float(v));
-  std::string s = buf;
-  if (s.find_first_of(".eE") == std::string::npos) s += ".0";
-  return s;
 }
 
 // The known range of a G-buffer attribute's components, for oneblob's default.
@@ -252,7 +244,7 @@ std::string encoding_glsl_source(const std::vector<InputEncoding>& encodings, in
     code += ");\n";
     const std::string args = ", " + std::to_string(e.width) + ", ", tail = ", " + std::to_string(e.n) + ", " +
                                                                       (e.include_input ? "true" : "false") + ", vec2(" +
-                                                                      float_literal(e.lo) + ", " + float_literal(e.hi) + "))";
+                                                                      gl::float_literal(e.lo) + ", " + gl::float_literal(e.hi) + "))";
     for (int j = 0; j < e.out_width(); ++j)
       comps.push_back(encoding_glsl_function(e.kind) + "(" + v + args + std::to_string(j) + tail);
     at = e.offset + e.width;

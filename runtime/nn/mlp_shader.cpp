@@ -11,15 +11,6 @@ namespace {
 
 std::string num(std::size_t v) { return std::to_string(v); }
 
-// A float literal GLSL reads back as the same float.
-std::string float_literal(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.9g", float(v));
-  std::string s = buf;
-  if (s.find_first_of(".eE") == std::string::npos) s += ".0";
-  return s;
-}
-
 // Loops over a layer's input vec4s are unrolled up to this many; longer ones stay loops: the
 // unrolled code of a wide layer (every access a loop over the SIMD lanes on llvmpipe) takes
 // LLVM minutes to compile.
@@ -123,7 +114,7 @@ gl::Defines mlp_defines(const MlpSpec& s) {
   d["MLP_OUT_UQ"] = num(unit_chunk(s, s.layers()));
   d["MLP_MAX_WIDTH"] = num(s.max_width());
   auto activation = [&](const std::string& prefix, Activation a) {
-    const std::string fn = activation_glsl_function(a), p = float_literal(s.param(a));
+    const std::string fn = activation_glsl_function(a), p = gl::float_literal(s.param(a));
     d[prefix + "_F(z)"] = fn + "(z, " + p + ")";
     d[prefix + "_GRAD_Z(z)"] = fn + "_grad(z, " + p + ")";
     const bool from_output = !activation_def(a).grad_from_output.empty();
@@ -195,7 +186,7 @@ TrainLayout plan_train_layout(const MlpSpec& spec, int batch, std::size_t max_sh
 namespace {
 void loss_defines(gl::Defines& d, const Loss& loss) {
   d["MLP_LOSS"] = num(std::size_t(loss.kind));
-  d["MLP_LOSS_DELTA"] = float_literal(loss.delta);
+  d["MLP_LOSS_DELTA"] = gl::float_literal(loss.delta);
 }
 }  // namespace
 
