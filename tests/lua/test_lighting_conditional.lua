@@ -4,11 +4,7 @@
 -- checkpoint that keeps the condition and its range.
 local sn = require "shadenet"
 
-local function fails(f, pattern)
-  local ok, err = pcall(f)
-  assert(not ok, "expected an error matching " .. pattern)
-  assert(tostring(err):find(pattern, 1, true), ("error %q does not mention %q"):format(tostring(err), pattern))
-end
+local fails = require("expect").fails
 
 local scene = sn.scene { mesh = sn.mesh.sphere {}, size = { 64, 64 }, views = { { count = 3, elevation = -20 },
                                                                                  { count = 3, elevation = 40 } } }

@@ -5,11 +5,7 @@
 local sn = require "shadenet"
 local live = sn.live
 
-local function fails(f, pattern)
-  local ok, err = pcall(f)
-  assert(not ok, "expected an error matching " .. pattern)
-  assert(tostring(err):find(pattern, 1, true), ("error %q does not mention %q"):format(tostring(err), pattern))
-end
+local fails = require("expect").fails
 local function near(a, b, what) assert(math.abs(a - b) < 1e-6, ("%s: %.9g, expected %.9g"):format(what, a, b)) end
 
 local scene = sn.scene { mesh = sn.mesh.sphere { segments = 24, rings = 12 }, size = { 48, 48 }, views = { count = 4 },

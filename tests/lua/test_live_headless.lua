@@ -6,11 +6,7 @@ package.path = "tests/live/?.lua;" .. package.path
 local H = require "harness"
 local live = sn.live
 
-local function fails(f, pattern)
-  local ok, err = pcall(f)
-  assert(not ok, "expected an error matching " .. pattern)
-  assert(tostring(err):find(pattern, 1, true), ("error %q does not mention %q"):format(tostring(err), pattern))
-end
+local fails = require("expect").fails
 
 -- 1. sn.keep: made once, again when its key changes or after sn.forget.
 local made = 0

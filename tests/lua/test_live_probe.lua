@@ -7,11 +7,7 @@ package.path = "tests/live/?.lua;" .. package.path
 local H = require "harness"
 local live = sn.live
 
-local function fails(f, pattern)
-  local ok, err = pcall(f)
-  assert(not ok, "expected an error matching " .. pattern)
-  assert(tostring(err):find(pattern, 1, true), ("error %q does not mention %q"):format(tostring(err), pattern))
-end
+local fails = require("expect").fails
 
 local sphere = sn.mesh.sphere { segments = 32, rings = 16 }
 local normals = sn.program { vertex = "mesh.vert", fragment = "normals.frag" }

@@ -3,13 +3,7 @@
 local sn = require "shadenet"
 
 -- A smooth 6 -> 3 target, like a lighting model of normal and view.
-local xs, ys = {}, {}
-for i = 1, 3000 do
-  local x = {}
-  for k = 1, 6 do x[k] = math.sin(i * (k + 0.5) * 0.731) end
-  xs[i] = x
-  ys[i] = { 0.5 + 0.4 * x[1] * x[2], 0.5 + 0.4 * math.sin(x[3] + x[4]), 0.3 + 0.2 * x[5] - 0.1 * x[6] }
-end
+local xs, ys = require("smooth_rows")(3000)
 local data = sn.dataset { x = xs, y = ys, split = 0.8, seed = 1, input_names = {"normal", "view"} }
 local ntrain, nval = data:counts()
 assert(ntrain == 2400 and nval == 600, "split " .. ntrain .. "/" .. nval)

@@ -5,13 +5,7 @@
 local sn = require "shadenet"
 local C = require "script_check"
 
-local xs, ys = {}, {}
-for i = 1, 1200 do
-  local x = {}
-  for k = 1, 6 do x[k] = math.sin(i * (k + 0.5) * 0.731) end
-  xs[i] = x
-  ys[i] = { 0.5 + 0.4 * x[1] * x[2], 0.5 + 0.4 * math.sin(x[3] + x[4]), 0.3 + 0.2 * x[5] - 0.1 * x[6] }
-end
+local xs, ys = require("smooth_rows")(1200)
 local data = sn.dataset { x = xs, y = ys, split = 0.8, seed = 1 }
 local steps = 120  -- 960 training rows, batch 8
 local function make() return sn.mlp { inputs = 6, hidden = { 12, 12 }, outputs = 3, seed = 4 } end
