@@ -1,7 +1,8 @@
-// The built-in activations (nn/activation_builtin.cpp) as SIMD code for the cpu backend, eight
-// samples per GCC vector, with the elementary functions they need written in the same vector
-// arithmetic (Cephes-style range reductions and minimax polynomials): exp, log(1 + u) on [0, 1],
-// sin and cos. Included only by nn/cpu_net.cpp, inside its kernels' instruction-set targets.
+// The built-in activations (nn/activation_builtin.cpp) as SIMD code for the cpu backend, one
+// sample per lane of a GCC vector (v8: eight lanes for AVX2 and SSE2, v16: sixteen for AVX-512),
+// with the elementary functions they need written in the same vector arithmetic (Cephes-style
+// range reductions and minimax polynomials): exp, log(1 + u) on [0, 1], sin and cos. Included
+// only by nn/cpu_net.cpp, inside its kernels' instruction-set targets.
 //
 // act_both<K> gives a = f(z) and f'(z) from one evaluation (sine shares its range reduction with
 // cos, gelu its tanh, swish its sigmoid). For kinds whose derivative follows from a (kFromOutput)
@@ -18,24 +19,36 @@ namespace sn::nn::simd {
 
 typedef float v8 __attribute__((vector_size(32)));
 typedef int v8i __attribute__((vector_size(32)));
+typedef float v16 __attribute__((vector_size(64)));
+typedef int v16i __attribute__((vector_size(64)));
 #define SN_INLINE inline __attribute__((always_inline))
+
+// The lane mask type of a vector (what its comparisons give).
+template <class V>
+using mask_of = decltype(V{} > 0.0f);
 
 // A broadcast, written as a shuffle: GCC 12 compiles the 8-element constructor (and x - 0)
 // into insert chains, which cost 15-30% of a training step.
 // (Clang, which builds the fuzz targets, has no __builtin_shuffle and broadcasts either way.)
+template <class V = v8, class T = float>
+SN_INLINE V splat(T x) {
 #ifdef __clang__
-SN_INLINE v8 splat(float x) { return v8{x, x, x, x, x, x, x, x}; }
+  return V{} + x;
 #else
-SN_INLINE v8 splat(float x) { return __builtin_shuffle(v8{x, 0, 0, 0, 0, 0, 0, 0}, v8i{}); }
+  V v{};
+  v[0] = x;
+  return __builtin_shuffle(v, mask_of<V>{});
 #endif
+}
 
+struct Avx512 {};
 struct Avx2 {};
 struct Sse2 {};
 
-// sqrt per lane; the Sse2 form (two 4-lane halves) is correct under either target.
+// sqrt per lane; the Sse2 form (two 4-lane halves) is correct under any target.
 template <class Isa>
 SN_INLINE v8 vsqrt(const v8& x) {
-  if constexpr (std::is_same_v<Isa, Avx2>) {
+  if constexpr (!std::is_same_v<Isa, Sse2>) {
     return (v8)__builtin_ia32_sqrtps256((__m256)x);
   } else {
     typedef float v4 __attribute__((vector_size(16)));
@@ -45,44 +58,58 @@ SN_INLINE v8 vsqrt(const v8& x) {
     return v8{lo[0], lo[1], lo[2], lo[3], hi[0], hi[1], hi[2], hi[3]};
   }
 }
+template <class Isa>
+SN_INLINE v16 vsqrt(const v16& x) {
+#ifdef __clang__
+  return (v16)__builtin_ia32_sqrtps512((__v16sf)x, _MM_FROUND_CUR_DIRECTION);
+#else
+  return (v16)__builtin_ia32_sqrtps512_mask((__v16sf)x, (__v16sf)x, (__mmask16)-1, _MM_FROUND_CUR_DIRECTION);
+#endif
+}
+// The instruction set whose sqrt is correct for V under its kernels' target.
+template <class V>
+using sqrt_isa = std::conditional_t<sizeof(V) == 64, Avx512, Sse2>;
 
-SN_INLINE v8 select(const v8i& mask, const v8& yes, const v8& no) { return mask ? yes : no; }
+template <class M, class V>
+SN_INLINE V select(const M& mask, const V& yes, const V& no) { return mask ? yes : no; }
 
 // Round to nearest (ties away from 0) as integers and as floats; |x| < 2^31.
-SN_INLINE v8i round_int(const v8& x) {
-  return __builtin_convertvector(x + select(x >= 0.0f, splat(0.5f), splat(-0.5f)), v8i);
+template <class V>
+SN_INLINE mask_of<V> round_int(const V& x) {
+  return __builtin_convertvector(x + select(x >= 0.0f, splat<V>(0.5f), splat<V>(-0.5f)), mask_of<V>);
 }
 
 // e^x, relative error ~2e-7; 0 below -87.3 (clamped to the smallest normal's range), +inf above
 // 88.7; NaN stays NaN.
-SN_INLINE v8 vexp(const v8& in) {
-  v8 x = in;
-  const v8i over = x > 88.72283f;
-  x = select(x < -87.33654f, splat(-87.33654f), x);
-  x = select(over, splat(0.0f), x);
-  const v8i n = round_int(x * 1.44269504088896341f);
-  const v8 fn = __builtin_convertvector(n, v8);
+template <class V>
+SN_INLINE V vexp(const V& in) {
+  V x = in;
+  const mask_of<V> over = x > 88.72283f;
+  x = select(x < -87.33654f, splat<V>(-87.33654f), x);
+  x = select(over, splat<V>(0.0f), x);
+  const mask_of<V> n = round_int(x * 1.44269504088896341f);
+  const V fn = __builtin_convertvector(n, V);
   x = x - fn * 0.693359375f;
   x = x - fn * -2.12194440e-4f;
-  v8 y = x * 1.9875691500e-4f + 1.3981999507e-3f;
+  V y = x * 1.9875691500e-4f + 1.3981999507e-3f;
   y = y * x + 8.3334519073e-3f;
   y = y * x + 4.1665795894e-2f;
   y = y * x + 1.6666665459e-1f;
   y = y * x + 5.0000001201e-1f;
   y = y * (x * x) + x + 1.0f;
-  // 2^n as 2 * 2^(n-1): n reaches 128 just below the overflow threshold. Shifted unsigned: a
-  // NaN input leaves n = INT_MIN (its y is NaN anyway), which a signed shift would make UB.
-  typedef unsigned v8u __attribute__((vector_size(32)));
-  const v8u bits = ((v8u)(n + 126)) << 23;
-  y = (y + y) * (v8)bits;
-  return select(over, splat(__builtin_inff()), y);
+  // 2^n as 2 * 2^(n-1): n reaches 128 just below the overflow threshold. n - 1 + 127 is in
+  // [0, 254]; masked to 8 bits, a NaN input's n = INT_MIN (its y is NaN anyway) shifts no
+  // bit into the sign (UB).
+  y = (y + y) * (V)(((n + 126) & 255) << 23);
+  return select(over, splat<V>(__builtin_inff()), y);
 }
 
 // log(1 + u) for u in [0, 1] as 2 atanh(s), s = u / (2 + u) in [0, 1/3]: an odd series whose
 // terms past s^13 are below 1e-8, exact near u = 0 (no cancellation).
-SN_INLINE v8 vlog1p_unit(const v8& u) {
-  const v8 s = u / (u + 2.0f), s2 = s * s;
-  v8 p = s2 * (1.0f / 13) + (1.0f / 11);
+template <class V>
+SN_INLINE V vlog1p_unit(const V& u) {
+  const V s = u / (u + 2.0f), s2 = s * s;
+  V p = s2 * (1.0f / 13) + (1.0f / 11);
   p = p * s2 + (1.0f / 9);
   p = p * s2 + (1.0f / 7);
   p = p * s2 + (1.0f / 5);
@@ -93,31 +120,34 @@ SN_INLINE v8 vlog1p_unit(const v8& u) {
 
 // sin x and cos x: x - n pi/2 in three parts (Cody-Waite), then the Cephes polynomials on
 // [-pi/4, pi/4]; absolute error ~1e-7 for |x| up to a few thousand.
-SN_INLINE void vsincos(const v8& x, v8& s_out, v8& c_out) {
-  const v8i n = round_int(x * 0.636619772367581343f);
-  const v8 fn = __builtin_convertvector(n, v8);
-  v8 r = x - fn * 1.5703125f;
+template <class V>
+SN_INLINE void vsincos(const V& x, V& s_out, V& c_out) {
+  const mask_of<V> n = round_int(x * 0.636619772367581343f);
+  const V fn = __builtin_convertvector(n, V);
+  V r = x - fn * 1.5703125f;
   r = r - fn * 4.837512969970703125e-4f;
   r = r - fn * 7.54978995489188216e-8f;
-  const v8 r2 = r * r;
-  v8 s = r2 * -1.9515295891e-4f + 8.3321608736e-3f;
+  const V r2 = r * r;
+  V s = r2 * -1.9515295891e-4f + 8.3321608736e-3f;
   s = s * r2 + -1.6666654611e-1f;
   s = s * r2 * r + r;
-  v8 c = r2 * 2.443315711809948e-5f + -1.388731625493765e-3f;
+  V c = r2 * 2.443315711809948e-5f + -1.388731625493765e-3f;
   c = c * r2 + 4.166664568298827e-2f;
   c = c * r2 * r2 - 0.5f * r2 + 1.0f;
-  const v8i q = n & 3;
+  const mask_of<V> q = n & 3;
   // sin x: q 0 -> s, 1 -> c, 2 -> -s, 3 -> -c; cos x: q 0 -> c, 1 -> -s, 2 -> -c, 3 -> s.
-  const v8i odd = (q & 1) != 0;
-  const v8 sx = select(odd, c, s), cx = select(odd, -s, c);
+  const mask_of<V> odd = (q & 1) != 0;
+  const V sx = select(odd, c, s), cx = select(odd, -s, c);
   s_out = select((q & 2) != 0, -sx, sx);
   c_out = select((q & 2) != 0, -cx, cx);
 }
 
 // The logistic function two ways: through fast_tanh (absolute error 5e-7; sigmoid's own, as
 // before), and through vexp (relative error ~3e-7: swish multiplies it by z).
-SN_INLINE v8 vsigmoid(const v8& z) { return 0.5f + 0.5f * fast_tanh(0.5f * z); }
-SN_INLINE v8 vsigmoid_exp(const v8& z) { return 1.0f / (1.0f + vexp(-z)); }
+template <class V>
+SN_INLINE V vsigmoid(const V& z) { return 0.5f + 0.5f * fast_tanh(0.5f * z); }
+template <class V>
+SN_INLINE V vsigmoid_exp(const V& z) { return 1.0f / (1.0f + vexp(-z)); }
 
 // softplus keeps f'(z) too: its forward pass has e^-|z| at hand, from which sigmoid(z) costs one
 // division, where 1 - e^-a from the output would cost another exp.
@@ -128,8 +158,8 @@ constexpr bool kFromOutput = K != int(Builtin::sine) && K != int(Builtin::gelu) 
 constexpr float kGeluC = 0.7978845608028654f, kGeluK = 0.044715f;
 
 // a = f(z) and g = f'(z); z by value, so that a may be z's own storage.
-template <int K>
-SN_INLINE void act_both(const v8 z, float p, v8& a, v8& g) {
+template <int K, class V>
+SN_INLINE void act_both(const V z, float p, V& a, V& g) {
   constexpr Builtin B = Builtin(K);
   if constexpr (B == Builtin::tanh) {
     a = fast_tanh(z);
@@ -138,35 +168,35 @@ SN_INLINE void act_both(const v8 z, float p, v8& a, v8& g) {
     a = vsigmoid(z);
     g = a * (1.0f - a);
   } else if constexpr (B == Builtin::relu) {
-    a = select(z < 0.0f, splat(0.0f), z);  // NaN stays NaN
-    g = select(z > 0.0f, splat(1.0f), splat(0.0f));
+    a = select(z < 0.0f, splat<V>(0.0f), z);  // NaN stays NaN
+    g = select(z > 0.0f, splat<V>(1.0f), splat<V>(0.0f));
   } else if constexpr (B == Builtin::leaky_relu) {
     a = select(z > 0.0f, z, p * z);
-    g = select(z > 0.0f, splat(1.0f), splat(p));
+    g = select(z > 0.0f, splat<V>(1.0f), splat<V>(p));
   } else if constexpr (B == Builtin::sine) {
     vsincos(p * z, a, g);
     g = p * g;
   } else if constexpr (B == Builtin::softplus) {
-    const v8 e = vexp(select(z > 0.0f, -z, z));  // e^-|z|
-    a = select(z > 0.0f, z, splat(0.0f)) + vlog1p_unit(e);
-    g = select(z > 0.0f, splat(1.0f), e) / (1.0f + e);  // sigmoid(z)
+    const V e = vexp(select(z > 0.0f, -z, z));  // e^-|z|
+    a = select(z > 0.0f, z, splat<V>(0.0f)) + vlog1p_unit(e);
+    g = select(z > 0.0f, splat<V>(1.0f), e) / (1.0f + e);  // sigmoid(z)
   } else if constexpr (B == Builtin::squareplus) {
-    const v8 s = vsqrt<Sse2>(z * z + 4.0f);
+    const V s = vsqrt<sqrt_isa<V>>(z * z + 4.0f);
     a = select(z >= 0.0f, 0.5f * (z + s), 2.0f / (s - z));
     g = 0.5f + 0.5f * z / s;
   } else if constexpr (B == Builtin::elu) {
-    const v8 e = vexp(select(z > 0.0f, splat(0.0f), z));
+    const V e = vexp(select(z > 0.0f, splat<V>(0.0f), z));
     a = select(z > 0.0f, z, p * (e - 1.0f));
-    g = select(z > 0.0f, splat(1.0f), p * e);
+    g = select(z > 0.0f, splat<V>(1.0f), p * e);
   } else if constexpr (B == Builtin::gelu) {
-    const v8 z2 = z * z;
-    const v8 u = kGeluC * (z + kGeluK * z2 * z);
+    const V z2 = z * z;
+    const V u = kGeluC * (z + kGeluK * z2 * z);
     // Exactly +-1 where tanh rounds there: fast_tanh's last ulp, times z^3 in f', is not 0.
-    const v8 t = select(u > 9.0f, splat(1.0f), select(u < -9.0f, splat(-1.0f), fast_tanh(u)));
+    const V t = select(u > 9.0f, splat<V>(1.0f), select(u < -9.0f, splat<V>(-1.0f), fast_tanh(u)));
     a = 0.5f * z * (1.0f + t);
     g = 0.5f * (1.0f + t) + (0.5f * kGeluC) * z * (1.0f - t * t) * (1.0f + 3.0f * kGeluK * z2);
   } else if constexpr (B == Builtin::swish) {
-    const v8 s = vsigmoid_exp(z);
+    const V s = vsigmoid_exp(z);
     a = z * s;
     g = s * (1.0f + z * (1.0f - s));
   } else if constexpr (B == Builtin::exponential) {
@@ -174,36 +204,36 @@ SN_INLINE void act_both(const v8 z, float p, v8& a, v8& g) {
     g = a;
   } else {
     a = z;
-    g = splat(1.0f);
+    g = splat<V>(1.0f);
   }
 }
 
-template <int K>
-SN_INLINE v8 act(const v8& z, float p) {
+template <int K, class V>
+SN_INLINE V act(const V& z, float p) {
   constexpr Builtin B = Builtin(K);
   if constexpr (B == Builtin::tanh) return fast_tanh(z);
   if constexpr (B == Builtin::sigmoid) return vsigmoid(z);
-  if constexpr (B == Builtin::relu) return select(z < 0.0f, splat(0.0f), z);
+  if constexpr (B == Builtin::relu) return select(z < 0.0f, splat<V>(0.0f), z);
   if constexpr (B == Builtin::leaky_relu) return select(z > 0.0f, z, p * z);
   if constexpr (B == Builtin::linear) return z;
-  v8 a, g;
+  V a, g;
   act_both<K>(z, p, a, g);  // the compiler drops the unused derivative
   return a;
 }
 
 // f'(z) from a = f(z), for kFromOutput kinds.
-template <int K>
-SN_INLINE v8 act_grad_a(const v8& a, float p) {
+template <int K, class V>
+SN_INLINE V act_grad_a(const V& a, float p) {
   constexpr Builtin B = Builtin(K);
   static_assert(kFromOutput<K>, "this activation's derivative needs z");
   if constexpr (B == Builtin::tanh) return 1.0f - a * a;
   if constexpr (B == Builtin::sigmoid) return a * (1.0f - a);
-  if constexpr (B == Builtin::relu) return select(a > 0.0f, splat(1.0f), splat(0.0f));
-  if constexpr (B == Builtin::leaky_relu) return select(a > 0.0f, splat(1.0f), splat(p));
+  if constexpr (B == Builtin::relu) return select(a > 0.0f, splat<V>(1.0f), splat<V>(0.0f));
+  if constexpr (B == Builtin::leaky_relu) return select(a > 0.0f, splat<V>(1.0f), splat<V>(p));
   if constexpr (B == Builtin::squareplus) return a * a / (a * a + 1.0f);
-  if constexpr (B == Builtin::elu) return select(a > 0.0f, splat(1.0f), a + p);
+  if constexpr (B == Builtin::elu) return select(a > 0.0f, splat<V>(1.0f), a + p);
   if constexpr (B == Builtin::exponential) return a;
-  return splat(1.0f);
+  return splat<V>(1.0f);
 }
 
 // The output layer's activation is chosen per neuron at run time (few neurons, cheap).
@@ -225,12 +255,14 @@ SN_INLINE void with_builtin(int kind, F&& f) {
   }
 }
 
-SN_INLINE v8 act_any(int kind, const v8& z, float p) {
-  v8 a;
+template <class V>
+SN_INLINE V act_any(int kind, const V& z, float p) {
+  V a;
   with_builtin(kind, [&](auto k) { a = act<decltype(k)::value>(z, p); });
   return a;
 }
-SN_INLINE void act_both_any(int kind, const v8 z, float p, v8& a, v8& g) {
+template <class V>
+SN_INLINE void act_both_any(int kind, const V z, float p, V& a, V& g) {
   with_builtin(kind, [&](auto k) { act_both<decltype(k)::value>(z, p, a, g); });
 }
 

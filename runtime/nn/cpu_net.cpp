@@ -22,28 +22,27 @@ namespace {
 
 using namespace simd;
 
-constexpr int kLanes = CpuNet::kLanes;
+constexpr int kMaxLanes = 16;  // the widest vectors' lanes (v16): the scratch is sized for them
 std::size_t round8(std::size_t n) { return (n + 7) & ~std::size_t(7); }
 std::size_t round16(std::size_t n) { return (n + 15) & ~std::size_t(15); }
 
-SN_INLINE float hsum(const v8& v) { return ((v[0] + v[4]) + (v[1] + v[5])) + ((v[2] + v[6]) + (v[3] + v[7])); }
-
 }  // namespace
 
-// Padded offsets, all in floats from the arena start and multiples of 16 (64 bytes).
-// Parameters: layer l = rows [out][inpad] (inpad = in rounded up to 8, pad columns stay 0),
-// then biases [round8(out)].
+// Padded offsets, in floats and multiples of 16 (64 bytes). Parameters (per network): layer l =
+// rows [out][inpad] (inpad = in rounded up to 8, pad columns stay 0), then biases [round8(out)];
+// a pair of networks interleaves two such copies float by float. The scratch (activations,
+// their derivatives, transposes, errors) has room for 16 lanes per unit.
 struct CpuNet::Layout {
   int L = 0;
   int in[kMaxHidden + 1] = {}, out[kMaxHidden + 1] = {}, inpad[kMaxHidden + 1] = {};
   std::size_t woff[kMaxHidden + 1] = {}, boff[kMaxHidden + 1] = {};  // within a parameter copy
-  std::size_t P = 0;  // floats per parameter copy
-  std::size_t aoff[kMaxHidden + 2] = {};  // activations of layer l (width(l) x 8), from o_act
-  std::size_t toff[kMaxHidden + 1] = {};  // transposed activations (8 x inpad), from o_at
+  std::size_t P = 0;  // floats per parameter copy of one network
+  std::size_t aoff[kMaxHidden + 2] = {};  // activations of layer l (width(l) x 16), from the scratch
+  std::size_t toff[kMaxHidden + 1] = {};  // transposed activations (16 x inpad), from o_at
   int maxw = 0;
   // o_dz: f'(z) of every unit, same offsets as the activations (stored by a training forward
   // pass for hidden kinds that need z, and for the output layer).
-  std::size_t o_p[2] = {}, o_m = 0, o_v = 0, o_g = 0, o_act = 0, o_dz = 0, o_at = 0, o_d[2] = {}, total = 0;
+  std::size_t o_dz = 0, o_at = 0, o_d[2] = {}, scratch = 0;
   int hidden = int(Builtin::tanh), output = int(Builtin::linear);  // Builtin ids (SIMD code)
   float hp = 0, op = 0;  // their parameters
 
@@ -66,61 +65,126 @@ struct CpuNet::Layout {
       boff[l] = P + std::size_t(out[l]) * inpad[l];
       P = round16(boff[l] + round8(out[l]));
       toff[l] = at;
-      at += round16(std::size_t(kLanes) * inpad[l]);
+      at += round16(std::size_t(kMaxLanes) * inpad[l]);
     }
     for (int l = 0; l <= L; ++l) {
       aoff[l] = a;
-      a += round16(std::size_t(s.width(l)) * kLanes);
+      a += round16(std::size_t(s.width(l)) * kMaxLanes);
     }
-    std::size_t d = round16(std::size_t(maxw) * kLanes);
-    std::size_t o = 0;
-    for (auto* f : {&o_p[0], &o_p[1], &o_m, &o_v, &o_g}) *f = o, o += P;
-    o_act = o, o += a;
+    const std::size_t d = round16(std::size_t(maxw) * kMaxLanes);
+    std::size_t o = a;
     o_dz = o, o += a;
     o_at = o, o += at;
     o_d[0] = o, o += d;
     o_d[1] = o, o += d;
-    total = o;
+    scratch = o;
   }
+  // Parameter copies 0 and 1, Adam's m and v, the gradient: 5 P floats per network.
+  std::size_t params(int nets) const { return 5 * P * std::size_t(nets); }
 };
 
 namespace {
 
 using Layout = CpuNet::Layout;
 
-// Where a kernel finds everything of one net.
-struct View {
+// How a kernel's vectors hold samples, and where a weight comes from.
+//  One:  8 samples of one network per v8; a weight is broadcast to every lane.
+//  Pair: 8 samples of each of two networks per v16, interleaved (lane 2s + h is sample s of
+//        network h), and their parameters interleaved alike (kPar = 2 floats per parameter): a
+//        weight pair is one 64-bit broadcast. Two networks of one architecture trained on the
+//        same rows (a sweep's) fill AVX-512 registers at batch 8.
+//  Wide: 16 samples of one network per v16 (inference).
+// G: the weight gradient's vectors, which hold 8 inputs (of each network).
+typedef double v8d __attribute__((vector_size(64)));
+struct One {
+  using V = v8;
+  using G = v8;
+  static constexpr int kPar = 1, kSamples = 8;
+  static SN_INLINE V w(const float* p) { return splat<V>(*p); }
+};
+struct Wide {
+  using V = v16;
+  using G = v8;
+  static constexpr int kPar = 1, kSamples = 16;
+  static SN_INLINE V w(const float* p) { return splat<V>(*p); }
+};
+struct Pair {
+  using V = v16;
+  using G = v16;
+  static constexpr int kPar = 2, kSamples = 8;
+  static SN_INLINE V w(const float* p) {
+    double d;
+    std::memcpy(&d, p, sizeof d);
+    return (V)splat<v8d>(d);
+  }
+};
+template <class Mode>
+constexpr int kLanesOf = int(sizeof(typename Mode::V) / sizeof(float));
+
+// Sum of lanes h, h + kPar, ... (network h's samples), in one fixed order for every mode: a
+// network's sums are the same bits in a pair as alone.
+template <class Mode>
+SN_INLINE float lane_sum(const typename Mode::V& v, int h) {
+  constexpr int k = Mode::kPar;
+  if constexpr (Mode::kSamples == 8)
+    return ((v[h] + v[h + 4 * k]) + (v[h + k] + v[h + 5 * k])) + ((v[h + 2 * k] + v[h + 6 * k]) + (v[h + 3 * k] + v[h + 7 * k]));
+  float s = 0;
+  for (int i = h; i < kLanesOf<Mode>; i += k) s += v[i];
+  return s;
+}
+
+// Where a kernel finds everything of one network, or of a pair.
+struct Arena {
   const Layout& S;
-  float* base;
+  float* par;      // parameter copies 0 and 1, m, v, gradient (a pair's interleaved)
+  float* scratch;  // activations and the rest (Layout::scratch floats)
+  int cur;         // which parameter copy is current
+};
+template <class Mode>
+struct View {
+  using Vec = typename Mode::V;
+  static constexpr std::size_t k = Mode::kPar;
+  const Layout& S;
+  float* par;
+  float* scratch;
   int cur;
-  float* p() const { return base + S.o_p[cur]; }
-  float* pnext() const { return base + S.o_p[cur ^ 1]; }
-  v8* act(int l) const { return reinterpret_cast<v8*>(base + S.o_act + S.aoff[l]); }
-  v8* dz(int l) const { return reinterpret_cast<v8*>(base + S.o_dz + S.aoff[l]); }
-  float* at(int l) const { return base + S.o_at + S.toff[l]; }
-  v8* d(int k) const { return reinterpret_cast<v8*>(base + S.o_d[k]); }
+  explicit View(const Arena& a) : S(a.S), par(a.par), scratch(a.scratch), cur(a.cur) {}
+  float* p() const { return par + std::size_t(cur) * S.P * k; }
+  float* pnext() const { return par + std::size_t(cur ^ 1) * S.P * k; }
+  float* m() const { return par + 2 * S.P * k; }
+  float* v() const { return par + 3 * S.P * k; }
+  float* g() const { return par + 4 * S.P * k; }
+  Vec* act(int l) const { return reinterpret_cast<Vec*>(scratch + S.aoff[l]); }
+  Vec* dz(int l) const { return reinterpret_cast<Vec*>(scratch + S.o_dz + S.aoff[l]); }
+  float* at(int l) const { return scratch + S.o_at + S.toff[l]; }
+  Vec* d(int i) const { return reinterpret_cast<Vec*>(scratch + S.o_d[i]); }
 };
 
 // z[j] = b[j] + sum_i W[j][i] a[i] for R rows at once (R independent FMA chains). The
 // accumulators are named variables, not an array: GCC kept an array acc[R] in memory for R < 8
 // (a store and a load around every FMA; 4x4 networks ran at half speed).
-template <int R>
-SN_INLINE void rows_forward(const float* W, int inpad, const float* b, int in, const v8* a, v8* z) {
-  const v8 zero = splat(0.0f);
-  v8 c0 = R > 0 ? splat(b[0]) : zero, c1 = R > 1 ? splat(b[1]) : zero, c2 = R > 2 ? splat(b[2]) : zero,
-     c3 = R > 3 ? splat(b[3]) : zero, c4 = R > 4 ? splat(b[4]) : zero, c5 = R > 5 ? splat(b[5]) : zero,
-     c6 = R > 6 ? splat(b[6]) : zero, c7 = R > 7 ? splat(b[7]) : zero;
+template <int R, class Mode>
+SN_INLINE void rows_forward(const float* W, int inpad, const float* b, int in, const typename Mode::V* a,
+                            typename Mode::V* z) {
+  using Vec = typename Mode::V;
+  constexpr int k = Mode::kPar;
+  const std::size_t st = std::size_t(inpad) * k;
+  const Vec zero = splat<Vec>(0.0f);
+  Vec c0 = R > 0 ? Mode::w(b) : zero, c1 = R > 1 ? Mode::w(b + k) : zero, c2 = R > 2 ? Mode::w(b + 2 * k) : zero,
+      c3 = R > 3 ? Mode::w(b + 3 * k) : zero, c4 = R > 4 ? Mode::w(b + 4 * k) : zero,
+      c5 = R > 5 ? Mode::w(b + 5 * k) : zero, c6 = R > 6 ? Mode::w(b + 6 * k) : zero,
+      c7 = R > 7 ? Mode::w(b + 7 * k) : zero;
   for (int i = 0; i < in; ++i) {
-    const v8 ai = a[i];
-    const float* w = W + i;
-    if constexpr (R > 0) c0 += splat(w[0]) * ai;
-    if constexpr (R > 1) c1 += splat(w[inpad]) * ai;
-    if constexpr (R > 2) c2 += splat(w[2 * inpad]) * ai;
-    if constexpr (R > 3) c3 += splat(w[3 * inpad]) * ai;
-    if constexpr (R > 4) c4 += splat(w[4 * inpad]) * ai;
-    if constexpr (R > 5) c5 += splat(w[5 * inpad]) * ai;
-    if constexpr (R > 6) c6 += splat(w[6 * inpad]) * ai;
-    if constexpr (R > 7) c7 += splat(w[7 * inpad]) * ai;
+    const Vec ai = a[i];
+    const float* w = W + i * k;
+    if constexpr (R > 0) c0 += Mode::w(w) * ai;
+    if constexpr (R > 1) c1 += Mode::w(w + st) * ai;
+    if constexpr (R > 2) c2 += Mode::w(w + 2 * st) * ai;
+    if constexpr (R > 3) c3 += Mode::w(w + 3 * st) * ai;
+    if constexpr (R > 4) c4 += Mode::w(w + 4 * st) * ai;
+    if constexpr (R > 5) c5 += Mode::w(w + 5 * st) * ai;
+    if constexpr (R > 6) c6 += Mode::w(w + 6 * st) * ai;
+    if constexpr (R > 7) c7 += Mode::w(w + 7 * st) * ai;
   }
   if constexpr (R > 0) z[0] = c0;
   if constexpr (R > 1) z[1] = c1;
@@ -133,99 +197,107 @@ SN_INLINE void rows_forward(const float* W, int inpad, const float* b, int in, c
 }
 
 // prev[j] = sum_o W[o][j] d[o] for R columns at once.
-template <int R>
-SN_INLINE void cols_backward(const float* W, int inpad, int out, const v8* d, v8* prev) {
-  v8 acc[R];
-  for (int j = 0; j < R; ++j) acc[j] = splat(0.0f);
+template <int R, class Mode>
+SN_INLINE void cols_backward(const float* W, int inpad, int out, const typename Mode::V* d, typename Mode::V* prev) {
+  using Vec = typename Mode::V;
+  constexpr int k = Mode::kPar;
+  Vec acc[R];
+  for (int j = 0; j < R; ++j) acc[j] = splat<Vec>(0.0f);
   for (int o = 0; o < out; ++o) {
-    const v8 dv = d[o];
-    for (int j = 0; j < R; ++j) acc[j] += splat(W[o * inpad + j]) * dv;
+    const Vec dv = d[o];
+    for (int j = 0; j < R; ++j) acc[j] += Mode::w(W + (std::size_t(o) * inpad + j) * k) * dv;
   }
   for (int j = 0; j < R; ++j) prev[j] = acc[j];
 }
 
 // G[j][:] += sum_s d[j][s] * aT[s][:] for R rows: the weight gradient as outer products, with
-// the minibatch (s) as the reduction and the inputs on the SIMD axis.
-template <int R>
+// the minibatch (s) as the reduction and 8 inputs (of each network) per vector.
+template <int R, class Mode>
 SN_INLINE void rows_gradient(float* G, int inpad, const float* d, const float* aT) {
-  for (int k = 0; k < inpad; k += kLanes) {
-    v8 acc[R];
-    for (int j = 0; j < R; ++j) acc[j] = *reinterpret_cast<const v8*>(G + j * inpad + k);
-    for (int s = 0; s < kLanes; ++s) {
-      const v8 a = *reinterpret_cast<const v8*>(aT + s * inpad + k);
-      for (int j = 0; j < R; ++j) acc[j] += splat(d[j * kLanes + s]) * a;
+  using Gv = typename Mode::G;
+  constexpr int k = Mode::kPar, lanes = kLanesOf<Mode>;
+  for (int c = 0; c < inpad; c += 8) {
+    Gv acc[R];
+    for (int j = 0; j < R; ++j) acc[j] = *reinterpret_cast<const Gv*>(G + (std::size_t(j) * inpad + c) * k);
+    for (int s = 0; s < Mode::kSamples; ++s) {
+      const Gv a = *reinterpret_cast<const Gv*>(aT + (std::size_t(s) * inpad + c) * k);
+      for (int j = 0; j < R; ++j) acc[j] += Mode::w(d + j * lanes + s * k) * a;
     }
-    for (int j = 0; j < R; ++j) *reinterpret_cast<v8*>(G + j * inpad + k) = acc[j];
+    for (int j = 0; j < R; ++j) *reinterpret_cast<Gv*>(G + (std::size_t(j) * inpad + c) * k) = acc[j];
   }
 }
 
-// Runs F<R>(first, R) over [0, n) in groups of 8 and one remainder group.
-template <template <int> class F, class... Args>
+// Runs F<R, Mode>(first, R) over [0, n) in groups of 8 and one remainder group.
+template <template <int, class> class F, class Mode, class... Args>
 SN_INLINE void in_groups(int n, Args&&... args) {
   int j = 0;
-  for (; j + 8 <= n; j += 8) F<8>::run(j, args...);
+  for (; j + 8 <= n; j += 8) F<8, Mode>::run(j, args...);
   switch (n - j) {
-    case 7: F<7>::run(j, args...); break;
-    case 6: F<6>::run(j, args...); break;
-    case 5: F<5>::run(j, args...); break;
-    case 4: F<4>::run(j, args...); break;
-    case 3: F<3>::run(j, args...); break;
-    case 2: F<2>::run(j, args...); break;
-    case 1: F<1>::run(j, args...); break;
+    case 7: F<7, Mode>::run(j, args...); break;
+    case 6: F<6, Mode>::run(j, args...); break;
+    case 5: F<5, Mode>::run(j, args...); break;
+    case 4: F<4, Mode>::run(j, args...); break;
+    case 3: F<3, Mode>::run(j, args...); break;
+    case 2: F<2, Mode>::run(j, args...); break;
+    case 1: F<1, Mode>::run(j, args...); break;
     default: break;
   }
 }
-template <int R>
+template <int R, class Mode>
 struct Forward {
-  static SN_INLINE void run(int o, const float* W, int inpad, const float* b, int in, const v8* a, v8* z) {
-    rows_forward<R>(W + o * inpad, inpad, b + o, in, a, z + o);
+  using Vec = typename Mode::V;
+  static SN_INLINE void run(int o, const float* W, int inpad, const float* b, int in, const Vec* a, Vec* z) {
+    rows_forward<R, Mode>(W + std::size_t(o) * inpad * Mode::kPar, inpad, b + o * Mode::kPar, in, a, z + o);
   }
 };
-template <int R>
+template <int R, class Mode>
 struct Backward {
-  static SN_INLINE void run(int i, const float* W, int inpad, int out, const v8* d, v8* prev) {
-    cols_backward<R>(W + i, inpad, out, d, prev + i);
+  using Vec = typename Mode::V;
+  static SN_INLINE void run(int i, const float* W, int inpad, int out, const Vec* d, Vec* prev) {
+    cols_backward<R, Mode>(W + i * Mode::kPar, inpad, out, d, prev + i);
   }
 };
-template <int R>
+template <int R, class Mode>
 struct Gradient {
   static SN_INLINE void run(int o, float* G, int inpad, const float* d, const float* aT) {
-    rows_gradient<R>(G + o * inpad, inpad, d + o * kLanes, aT);
+    rows_gradient<R, Mode>(G + std::size_t(o) * inpad * Mode::kPar, inpad, d + o * kLanesOf<Mode>, aT);
   }
 };
 
-// Loads rows into layer 0's activations (input i of sample s at [i][s]); lanes >= n are 0.
-SN_INLINE void gather_inputs(const View& V, const float* x, const uint32_t* rows, std::size_t first, int n) {
+// Loads rows into layer 0's activations (input i of sample s at [i][s], for each network of
+// the mode); samples >= n are 0.
+template <class Mode>
+SN_INLINE void gather_inputs(const View<Mode>& V, const float* x, const uint32_t* rows, std::size_t first, int n) {
+  constexpr int k = Mode::kPar, lanes = kLanesOf<Mode>;
   const int inputs = V.S.in[0];
   float* a0 = reinterpret_cast<float*>(V.act(0));
-  for (int s = 0; s < kLanes; ++s) {
-    if (s < n) {
-      const float* xr = x + std::size_t(rows ? rows[first + s] : first + s) * inputs;
-      for (int i = 0; i < inputs; ++i) a0[i * kLanes + s] = xr[i];
-    } else {
-      for (int i = 0; i < inputs; ++i) a0[i * kLanes + s] = 0.0f;
-    }
+  for (int s = 0; s < Mode::kSamples; ++s) {
+    const float* xr = s < n ? x + std::size_t(rows ? rows[first + s] : first + s) * inputs : nullptr;
+    for (int i = 0; i < inputs; ++i)
+      for (int h = 0; h < k; ++h) a0[i * lanes + s * k + h] = xr ? xr[i] : 0.0f;
   }
 }
 
 // The forward pass; kTrain also stores f'(z) where backpropagation needs it: for hidden kinds
 // whose derivative does not follow from a (sine, gelu, swish), and for a non-linear output layer.
-template <int H, bool kTrain = false>
-SN_INLINE void forward_block(const View& V) {
+template <int H, class Mode, bool kTrain = false>
+SN_INLINE void forward_block(const View<Mode>& V) {
+  using Vec = typename Mode::V;
   const Layout& S = V.S;
   const float* p = V.p();
   for (int l = 0; l < S.L; ++l) {
-    v8* z = V.act(l + 1);
-    in_groups<Forward>(S.out[l], p + S.woff[l], S.inpad[l], p + S.boff[l], S.in[l], V.act(l), z);
+    Vec* z = V.act(l + 1);
+    in_groups<Forward, Mode>(S.out[l], p + S.woff[l] * Mode::kPar, S.inpad[l], p + S.boff[l] * Mode::kPar, S.in[l],
+                             V.act(l), z);
     if (l + 1 < S.L) {
       if constexpr (kTrain && !kFromOutput<H>) {
-        v8* g = V.dz(l + 1);
+        Vec* g = V.dz(l + 1);
         for (int o = 0; o < S.out[l]; ++o) act_both<H>(z[o], S.hp, z[o], g[o]);
       } else {
         for (int o = 0; o < S.out[l]; ++o) z[o] = act<H>(z[o], S.hp);
       }
     } else if (kTrain && S.output != int(Builtin::linear)) {
-      v8* g = V.dz(l + 1);
+      Vec* g = V.dz(l + 1);
       for (int o = 0; o < S.out[l]; ++o) act_both_any(S.output, z[o], S.op, z[o], g[o]);
     } else if (S.output != int(Builtin::linear)) {
       for (int o = 0; o < S.out[l]; ++o) z[o] = act_any(S.output, z[o], S.op);
@@ -234,8 +306,8 @@ SN_INLINE void forward_block(const View& V) {
 }
 
 // f'(z) of unit vector i of hidden width block l, after a training forward pass.
-template <int H>
-SN_INLINE v8 hidden_grad(const View& V, int l, int i) {
+template <int H, class Mode>
+SN_INLINE typename Mode::V hidden_grad(const View<Mode>& V, int l, int i) {
   if constexpr (kFromOutput<H>) return act_grad_a<H>(V.act(l)[i], V.S.hp);
   return V.dz(l)[i];
 }
@@ -245,25 +317,27 @@ SN_INLINE v8 hidden_grad(const View& V, int l, int i) {
 struct LossArgs {
   LossKind kind;
   float delta;
-  float sample_limit = std::numeric_limits<float>::infinity();  // a sample's squared error above it: exploded
+  // A sample's squared error above it: exploded (per network of a pair).
+  float sample_limit[2] = {std::numeric_limits<float>::infinity(), std::numeric_limits<float>::infinity()};
 };
 // step_impl's verdicts (nn/trainer.h's order: a non-finite loss, then a sample above the limit,
-// then a non-finite update).
+// then a non-finite update), two bits per network.
 enum StepVerdict : int { kStepOk = 0, kStepNonfinite = 1, kStepExploded = 2 };
-SN_INLINE void loss_both(const LossArgs& L, const v8& e, const v8& t, v8& lv, v8& lg) {
+template <class Vec>
+SN_INLINE void loss_both(const LossArgs& L, const Vec& e, const Vec& t, Vec& lv, Vec& lg) {
   switch (L.kind) {
     case LossKind::l1:
       lv = select(e < 0.0f, -e, e);
-      lg = select(e > 0.0f, splat(1.0f), select(e < 0.0f, splat(-1.0f), splat(0.0f)));
+      lg = select(e > 0.0f, splat<Vec>(1.0f), select(e < 0.0f, splat<Vec>(-1.0f), splat<Vec>(0.0f)));
       break;
     case LossKind::relative_l2: {
-      const v8 inv = 1.0f / (t * t + float(kRelativeL2Eps));
+      const Vec inv = 1.0f / (t * t + float(kRelativeL2Eps));
       lv = e * e * inv;
       lg = 2.0f * e * inv;
       break;
     }
     case LossKind::huber: {
-      const v8 a = select(e < 0.0f, -e, e), d = splat(L.delta);
+      const Vec a = select(e < 0.0f, -e, e), d = splat<Vec>(L.delta);
       lv = select(a <= d, 0.5f * e * e, d * (a - 0.5f * d));  // NaN takes the second: stays NaN
       lg = select(e > d, d, select(e < -d, -d, e));
       break;
@@ -275,187 +349,225 @@ SN_INLINE void loss_both(const LossArgs& L, const v8& e, const v8& t, v8& lv, v8
 }
 
 // Target rows as lanes (0 beyond n) and the lane mask.
-SN_INLINE v8 gather_target(const float* y, int outputs, int o, const uint32_t* rows, std::size_t first, int n) {
-  v8 t = splat(0.0f);
-  for (int s = 0; s < n; ++s) t[s] = y[std::size_t(rows ? rows[first + s] : first + s) * outputs + o];
+template <class Mode>
+SN_INLINE typename Mode::V gather_target(const float* y, int outputs, int o, const uint32_t* rows, std::size_t first,
+                                         int n) {
+  typename Mode::V t = splat<typename Mode::V>(0.0f);
+  for (int s = 0; s < n; ++s) {
+    const float v = y[std::size_t(rows ? rows[first + s] : first + s) * outputs + o];
+    for (int h = 0; h < Mode::kPar; ++h) t[s * Mode::kPar + h] = v;
+  }
   return t;
 }
-SN_INLINE v8i lane_mask(int n) {
-  const v8i lanes = {0, 1, 2, 3, 4, 5, 6, 7};
-  return lanes < n;
+template <class Mode>
+SN_INLINE mask_of<typename Mode::V> lane_mask(int n) {
+  mask_of<typename Mode::V> lanes;
+  for (int i = 0; i < kLanesOf<Mode>; ++i) lanes[i] = i;
+  return lanes < n * Mode::kPar;
 }
 
-template <class Isa, int H>
-SN_INLINE int step_impl(const View& V, const float* x, const float* y, const uint32_t* rows, int batch, const AdamStep& c,
-               const LossArgs& lf, double* loss_out) {
+template <class Isa, class Mode, int H>
+SN_INLINE int step_impl(const View<Mode>& V, const float* x, const float* y, const uint32_t* rows, int batch,
+                        const AdamStep& c, const LossArgs& lf, double* loss_out) {
+  using Vec = typename Mode::V;
+  constexpr int k = Mode::kPar, lanes = kLanesOf<Mode>, B = Mode::kSamples;
   const Layout& S = V.S;
   const float* p = V.p();
-  float* g = V.base + S.o_g;
-  std::memset(g, 0, S.P * sizeof(float));
+  float* g = V.g();
+  std::memset(g, 0, S.P * k * sizeof(float));
   const int outputs = S.out[S.L - 1];
   const float scale = 2.0f / float(batch * outputs);  // l2's: d mean(e^2) / d y'
   const float mean = 1.0f / float(batch * outputs);
   // Each sample's loss (its outputs' sum) in float, the minibatch's sum in double, as the gl
   // kernel does: a step is refused by the same rule on both (nn/trainer.h).
-  double loss_sum = 0;
-  bool finite = true, too_big = false;
-  for (int first = 0; first < batch; first += kLanes) {
-    const int n = batch - first < kLanes ? batch - first : kLanes;
-    v8 sq = splat(0.0f), se = splat(0.0f);
-    gather_inputs(V, x, rows, std::size_t(first), n);
-    forward_block<H, true>(V);
+  double loss_sum[k] = {};
+  bool finite[k], too_big[k];
+  for (int h = 0; h < k; ++h) finite[h] = true, too_big[h] = false;
+  for (int first = 0; first < batch; first += B) {
+    const int n = batch - first < B ? batch - first : B;
+    Vec sq = splat<Vec>(0.0f), se = splat<Vec>(0.0f);
+    gather_inputs<Mode>(V, x, rows, std::size_t(first), n);
+    forward_block<H, Mode, true>(V);
     // Output error: d = dloss/dy' * act'(y').
-    const v8i mask = lane_mask(n);
-    v8* d = V.d(0);
-    const v8* yhat = V.act(S.L);
+    const auto mask = lane_mask<Mode>(n);
+    Vec* d = V.d(0);
+    const Vec* yhat = V.act(S.L);
     for (int o = 0; o < outputs; ++o) {
-      const v8 t = gather_target(y, outputs, o, rows, std::size_t(first), n);
-      v8 diff = yhat[o] - t;
-      diff = mask ? diff : splat(0.0f);
-      v8 g;
+      const Vec t = gather_target<Mode>(y, outputs, o, rows, std::size_t(first), n);
+      Vec diff = yhat[o] - t;
+      diff = mask ? diff : splat<Vec>(0.0f);
+      Vec gr;
       if (lf.kind == LossKind::l2) {
         sq += diff * diff;
-        g = scale * diff;
+        gr = scale * diff;
       } else {
-        v8 lv, lg;
+        Vec lv, lg;
         loss_both(lf, diff, t, lv, lg);
         sq += lv;
         se += diff * diff;
-        g = mean * lg;
+        gr = mean * lg;
       }
-      d[o] = S.output == int(Builtin::linear) ? g : g * V.dz(S.L)[o];
+      d[o] = S.output == int(Builtin::linear) ? gr : gr * V.dz(S.L)[o];
     }
     if (lf.kind == LossKind::l2) se = sq;
-    for (int k = 0; k < n; ++k) {
-      finite = finite && std::isfinite(sq[k]);
-      too_big = too_big || se[k] > lf.sample_limit;
-      loss_sum += double(sq[k]);
-    }
+    for (int s = 0; s < n; ++s)
+      for (int h = 0; h < k; ++h) {
+        finite[h] = finite[h] && std::isfinite(sq[s * k + h]);
+        too_big[h] = too_big[h] || se[s * k + h] > lf.sample_limit[h];
+        loss_sum[h] += double(sq[s * k + h]);
+      }
     int cur = 0;
     for (int l = S.L - 1; l >= 0; --l) {
       const int in = S.in[l], out = S.out[l], inpad = S.inpad[l];
-      v8* dl = V.d(cur);
+      Vec* dl = V.d(cur);
       // Transposed activations for the outer-product gradient (pad columns stay 0).
       const float* a = reinterpret_cast<const float*>(V.act(l));
       float* aT = V.at(l);
       for (int i = 0; i < in; ++i)
-        for (int s = 0; s < kLanes; ++s) aT[s * inpad + i] = a[i * kLanes + s];
-      float* gb = g + S.boff[l];
-      for (int o = 0; o < out; ++o) gb[o] += hsum(dl[o]);
-      in_groups<Gradient>(out, g + S.woff[l], inpad, reinterpret_cast<const float*>(dl), aT);
+        for (int s = 0; s < B; ++s)
+          for (int h = 0; h < k; ++h) aT[(s * inpad + i) * k + h] = a[i * lanes + s * k + h];
+      float* gb = g + S.boff[l] * k;
+      for (int o = 0; o < out; ++o)
+        for (int h = 0; h < k; ++h) gb[o * k + h] += lane_sum<Mode>(dl[o], h);
+      in_groups<Gradient, Mode>(out, g + S.woff[l] * k, inpad, reinterpret_cast<const float*>(dl), aT);
       if (l == 0) break;
-      v8* prev = V.d(cur ^ 1);
-      in_groups<Backward>(in, p + S.woff[l], inpad, out, dl, prev);
+      Vec* prev = V.d(cur ^ 1);
+      in_groups<Backward, Mode>(in, p + S.woff[l] * k, inpad, out, dl, prev);
       for (int i = 0; i < in; ++i) prev[i] *= hidden_grad<H>(V, l, i);
       cur ^= 1;
     }
   }
-  const double loss = loss_sum / (double(batch) * outputs);
-  *loss_out = loss;
-  if (!finite || !std::isfinite(loss)) return kStepNonfinite;
-  if (too_big) return kStepExploded;
-  // Adam into the other parameter copy; the current one survives a non-finite result.
-  const v8 b1 = splat(c.beta1), b2 = splat(c.beta2), ob1 = splat(1.0f - c.beta1), ob2 = splat(1.0f - c.beta2);
-  const v8 lr = splat(c.lr * c.inv_c1), ic2 = splat(c.inv_c2), eps = splat(c.eps);
-  v8* __restrict pn = reinterpret_cast<v8*>(V.pnext());
-  const v8* __restrict pc = reinterpret_cast<const v8*>(p);
-  v8* __restrict m = reinterpret_cast<v8*>(V.base + S.o_m);
-  v8* __restrict v = reinterpret_cast<v8*>(V.base + S.o_v);
-  const v8* __restrict gv = reinterpret_cast<const v8*>(g);
-  v8 bad = splat(0.0f);  // w - w is 0 for finite w, NaN otherwise
-  for (std::size_t j = 0; j < S.P / kLanes; ++j) {
-    const v8 gj = gv[j];
-    const v8 mj = b1 * m[j] + ob1 * gj;
-    const v8 vj = b2 * v[j] + ob2 * gj * gj;
+  int verdict = 0;
+  bool any = false;
+  for (int h = 0; h < k; ++h) {
+    loss_out[h] = loss_sum[h] / (double(batch) * outputs);
+    const int v = !finite[h] || !std::isfinite(loss_out[h]) ? kStepNonfinite : too_big[h] ? kStepExploded : kStepOk;
+    verdict |= v << (2 * h);
+    any = any || v == kStepOk;
+  }
+  if (!any) return verdict;
+  // Adam into the other parameter copy; the current one survives a non-finite result. Every
+  // float is updated alike, so the widest vectors serve (P is a multiple of 16).
+  using A = std::conditional_t<std::is_same_v<Isa, Avx512>, v16, v8>;
+  constexpr int al = int(sizeof(A) / sizeof(float));
+  const A b1 = splat<A>(c.beta1), b2 = splat<A>(c.beta2), ob1 = splat<A>(1.0f - c.beta1), ob2 = splat<A>(1.0f - c.beta2);
+  const A lr = splat<A>(c.lr * c.inv_c1), ic2 = splat<A>(c.inv_c2), eps = splat<A>(c.eps);
+  A* __restrict pn = reinterpret_cast<A*>(V.pnext());
+  const A* __restrict pc = reinterpret_cast<const A*>(p);
+  A* __restrict m = reinterpret_cast<A*>(V.m());
+  A* __restrict v = reinterpret_cast<A*>(V.v());
+  const A* __restrict gv = reinterpret_cast<const A*>(g);
+  A bad = splat<A>(0.0f);  // w - w is 0 for finite w, NaN otherwise
+  for (std::size_t j = 0; j < S.P * k / al; ++j) {
+    const A gj = gv[j];
+    const A mj = b1 * m[j] + ob1 * gj;
+    const A vj = b2 * v[j] + ob2 * gj * gj;
     m[j] = mj;
     v[j] = vj;
-    const v8 w = pc[j] - lr * mj / (vsqrt<Isa>(vj * ic2) + eps);
+    const A w = pc[j] - lr * mj / (vsqrt<Isa>(vj * ic2) + eps);
     bad += w - w;
     pn[j] = w;
   }
-  return hsum(bad) == 0.0f ? kStepOk : kStepNonfinite;
+  for (int i = 0; i < al; ++i)  // lane i holds parameters of network i % k
+    if (bad[i] != 0.0f && ((verdict >> (2 * (i % k))) & 3) == kStepOk) verdict |= kStepNonfinite << (2 * (i % k));
+  return verdict;
 }
 
-template <int H>
-SN_INLINE double loss_impl(const View& V, const float* x, const float* y, std::size_t count, const LossArgs& lf) {
+template <int H, class Mode>
+SN_INLINE double loss_impl(const View<Mode>& V, const float* x, const float* y, std::size_t count, const LossArgs& lf) {
+  using Vec = typename Mode::V;
   const Layout& S = V.S;
   const int outputs = S.out[S.L - 1];
   double sum = 0;
-  for (std::size_t first = 0; first < count; first += kLanes) {
-    const int n = count - first < std::size_t(kLanes) ? int(count - first) : kLanes;
-    gather_inputs(V, x, nullptr, first, n);
-    forward_block<H>(V);
-    const v8i mask = lane_mask(n);
-    const v8* yhat = V.act(S.L);
-    v8 sq = splat(0.0f);
+  for (std::size_t first = 0; first < count; first += Mode::kSamples) {
+    const int n = count - first < std::size_t(Mode::kSamples) ? int(count - first) : Mode::kSamples;
+    gather_inputs<Mode>(V, x, nullptr, first, n);
+    forward_block<H, Mode>(V);
+    const auto mask = lane_mask<Mode>(n);
+    const Vec* yhat = V.act(S.L);
+    Vec sq = splat<Vec>(0.0f);
     for (int o = 0; o < outputs; ++o) {
-      const v8 t = gather_target(y, outputs, o, nullptr, first, n);
-      v8 diff = yhat[o] - t;
-      diff = mask ? diff : splat(0.0f);
-      v8 lv, lg;
+      const Vec t = gather_target<Mode>(y, outputs, o, nullptr, first, n);
+      Vec diff = yhat[o] - t;
+      diff = mask ? diff : splat<Vec>(0.0f);
+      Vec lv, lg;
       loss_both(lf, diff, t, lv, lg);
       sq += lv;
     }
-    sum += double(hsum(sq));
+    sum += double(lane_sum<Mode>(sq, 0));
   }
   return count ? sum / (double(count) * outputs) : 0.0;
 }
 
-template <int H>
-SN_INLINE void forward_impl(const View& V, const float* x, std::size_t count, float* out) {
+template <int H, class Mode>
+SN_INLINE void forward_impl(const View<Mode>& V, const float* x, std::size_t count, float* out) {
   const Layout& S = V.S;
   const int outputs = S.out[S.L - 1];
-  for (std::size_t first = 0; first < count; first += kLanes) {
-    const int n = count - first < std::size_t(kLanes) ? int(count - first) : kLanes;
-    gather_inputs(V, x, nullptr, first, n);
-    forward_block<H>(V);
+  constexpr int B = Mode::kSamples;
+  for (std::size_t first = 0; first < count; first += B) {
+    const int n = count - first < std::size_t(B) ? int(count - first) : B;
+    gather_inputs<Mode>(V, x, nullptr, first, n);
+    forward_block<H, Mode>(V);
     const float* yhat = reinterpret_cast<const float*>(V.act(S.L));
     for (int s = 0; s < n; ++s)
-      for (int o = 0; o < outputs; ++o) out[(first + s) * outputs + o] = yhat[o * kLanes + s];
+      for (int o = 0; o < outputs; ++o) out[(first + s) * outputs + o] = yhat[o * B + s];
   }
 }
 
-template <int H>
-SN_INLINE void lanes_impl(const View& V, const float* x, std::size_t blocks, float* y) {
+// The renderer's blocks of 8 samples (CpuNet::forward_lanes), Mode::kSamples / 8 blocks at a time.
+template <int H, class Mode>
+SN_INLINE void lanes_impl(const Arena& A, const float* x, std::size_t blocks, float* y) {
+  constexpr std::size_t per = Mode::kSamples / 8, bytes = 8 * sizeof(float);
+  const View<Mode> V(A);
   const Layout& S = V.S;
-  const std::size_t in = std::size_t(S.in[0]) * kLanes, out = std::size_t(S.out[S.L - 1]) * kLanes;
-  for (std::size_t b = 0; b < blocks; ++b) {
-    std::memcpy(V.act(0), x + b * in, in * sizeof(float));
-    forward_block<H>(V);
-    std::memcpy(y + b * out, V.act(S.L), out * sizeof(float));
+  const std::size_t in = std::size_t(S.in[0]), out = std::size_t(S.out[S.L - 1]);
+  std::size_t b = 0;
+  for (; b + per <= blocks; b += per) {
+    float* a0 = reinterpret_cast<float*>(V.act(0));
+    for (std::size_t i = 0; i < in; ++i)
+      for (std::size_t q = 0; q < per; ++q) std::memcpy(a0 + (i * per + q) * 8, x + ((b + q) * in + i) * 8, bytes);
+    forward_block<H, Mode>(V);
+    const float* yo = reinterpret_cast<const float*>(V.act(S.L));
+    for (std::size_t o = 0; o < out; ++o)
+      for (std::size_t q = 0; q < per; ++q) std::memcpy(y + ((b + q) * out + o) * 8, yo + (o * per + q) * 8, bytes);
   }
+  if constexpr (per > 1)
+    if (b < blocks) lanes_impl<H, One>(A, x + b * in * 8, blocks - b, y + b * out * 8);
 }
 
-template <int H>
-SN_INLINE void counts_impl(const View& V, const float* x, std::size_t count,
+template <int H, class Mode>
+SN_INLINE void counts_impl(const View<Mode>& V, const float* x, std::size_t count,
                            std::vector<std::vector<uint32_t>>& counts) {
+  using Vec = typename Mode::V;
+  using Mask = mask_of<Vec>;
+  constexpr int lanes = kLanesOf<Mode>;
   const Layout& S = V.S;
   std::size_t units = 0;
   for (int l = 1; l < S.L; ++l) units += std::size_t(S.in[l]);
   // Per unit and lane: -(number of samples that hit). Plain ints moved with memcpy: heap
   // memory from std::vector is only 16-byte aligned, and GCC stores vectors with aligned moves.
-  std::vector<int32_t> hits(units * kLanes, 0);
-  for (std::size_t first = 0; first < count; first += kLanes) {
-    const int n = count - first < std::size_t(kLanes) ? int(count - first) : kLanes;
-    gather_inputs(V, x, nullptr, first, n);
-    forward_block<H, true>(V);
-    const v8i valid = lane_mask(n);
+  std::vector<int32_t> hits(units * lanes, 0);
+  for (std::size_t first = 0; first < count; first += Mode::kSamples) {
+    const int n = count - first < std::size_t(Mode::kSamples) ? int(count - first) : Mode::kSamples;
+    gather_inputs<Mode>(V, x, nullptr, first, n);
+    forward_block<H, Mode, true>(V);
+    const Mask valid = lane_mask<Mode>(n);
     std::size_t u = 0;
     for (int l = 1; l < S.L; ++l) {
-      const v8* a = V.act(l);
+      const Vec* a = V.act(l);
       for (int i = 0; i < S.in[l]; ++i, ++u) {
-        v8i hit;
+        Mask hit;
         if constexpr (H == int(Builtin::tanh)) hit = (a[i] > 0.99f) | (a[i] < -0.99f);
         else if constexpr (H == int(Builtin::sigmoid)) hit = (a[i] < 0.01f) | (a[i] > 0.99f);
         else if constexpr (H == int(Builtin::relu) || H == int(Builtin::leaky_relu)) hit = a[i] > 0.0f;
         else {
-          const v8 g = hidden_grad<H>(V, l, i);
+          const Vec g = hidden_grad<H>(V, l, i);
           hit = (g < 0.01f) & (g > -0.01f);  // flat: the unit passes (almost) no gradient
         }
-        v8i h;
-        std::memcpy(&h, &hits[u * kLanes], sizeof h);
+        Mask h;
+        std::memcpy(&h, &hits[u * lanes], sizeof h);
         h += hit & valid;  // comparisons give -1 per true lane
-        std::memcpy(&hits[u * kLanes], &h, sizeof h);
+        std::memcpy(&hits[u * lanes], &h, sizeof h);
       }
     }
   }
@@ -464,77 +576,78 @@ SN_INLINE void counts_impl(const View& V, const float* x, std::size_t count,
   for (int l = 1; l < S.L; ++l)
     for (int i = 0; i < S.in[l]; ++i, ++u) {
       int64_t total = 0;
-      for (int s = 0; s < kLanes; ++s) total -= hits[u * kLanes + s];
+      for (int s = 0; s < lanes; ++s) total -= hits[u * lanes + s];
       counts[l - 1].push_back(uint32_t(total));
     }
 }
 
-// The entry points per instruction set; everything above inlines into them.
-using StepFn = int (*)(const View&, const float*, const float*, const uint32_t*, int, const AdamStep&, const LossArgs&,
-                        double*);
-using LossFn = double (*)(const View&, const float*, const float*, std::size_t, const LossArgs&);
-using ForwardFn = void (*)(const View&, const float*, std::size_t, float*);
-using CountsFn = void (*)(const View&, const float*, std::size_t, std::vector<std::vector<uint32_t>>&);
-using LanesFn = void (*)(const View&, const float*, std::size_t, float*);
-
-template <int H>
-__attribute__((target("avx2,fma"))) int step_avx2(const View& V, const float* x, const float* y,
-                                                   const uint32_t* rows, int batch, const AdamStep& c,
-                                                   const LossArgs& lf, double* l) {
-  return step_impl<Avx2, H>(V, x, y, rows, batch, c, lf, l);
-}
-template <int H>
-__attribute__((target("avx2,fma"))) double loss_avx2(const View& V, const float* x, const float* y, std::size_t n,
-                                                     const LossArgs& lf) {
-  return loss_impl<H>(V, x, y, n, lf);
-}
-template <int H>
-__attribute__((target("avx2,fma"))) void forward_avx2(const View& V, const float* x, std::size_t n, float* out) {
-  forward_impl<H>(V, x, n, out);
-}
-template <int H>
-__attribute__((target("avx2,fma"))) void lanes_avx2(const View& V, const float* x, std::size_t n, float* y) {
-  lanes_impl<H>(V, x, n, y);
-}
-template <int H>
-void lanes_sse2(const View& V, const float* x, std::size_t n, float* y) {
-  lanes_impl<H>(V, x, n, y);
-}
-template <int H>
-__attribute__((target("avx2,fma"))) void counts_avx2(const View& V, const float* x, std::size_t n,
-                                                     std::vector<std::vector<uint32_t>>& counts) {
-  counts_impl<H>(V, x, n, counts);
-}
-template <int H>
-void counts_sse2(const View& V, const float* x, std::size_t n, std::vector<std::vector<uint32_t>>& counts) {
-  counts_impl<H>(V, x, n, counts);
-}
-template <int H>
-int step_sse2(const View& V, const float* x, const float* y, const uint32_t* rows, int batch, const AdamStep& c,
-               const LossArgs& lf, double* l) {
-  return step_impl<Sse2, H>(V, x, y, rows, batch, c, lf, l);
-}
-
-template <int K>
+template <int K, class Vec>
 SN_INLINE void activation_impl(float p, const float* z, std::size_t n, float* f, float* df) {
-  for (std::size_t i = 0; i < n; i += kLanes) {
-    v8 zv = splat(0.0f);
-    for (std::size_t k = 0; k < kLanes && i + k < n; ++k) zv[k] = z[i + k];
-    v8 a, g;
+  constexpr std::size_t lanes = sizeof(Vec) / sizeof(float);
+  for (std::size_t i = 0; i < n; i += lanes) {
+    Vec zv = splat<Vec>(0.0f);
+    for (std::size_t k = 0; k < lanes && i + k < n; ++k) zv[k] = z[i + k];
+    Vec a, g;
     act_both<K>(zv, p, a, g);
-    const v8 a_only = act<K>(zv, p);
+    const Vec a_only = act<K>(zv, p);
     if constexpr (kFromOutput<K>) g = act_grad_a<K>(a_only, p);
-    for (std::size_t k = 0; k < kLanes && i + k < n; ++k) f[i + k] = a_only[k], df[i + k] = g[k];
+    for (std::size_t k = 0; k < lanes && i + k < n; ++k) f[i + k] = a_only[k], df[i + k] = g[k];
   }
 }
-template <int K>
-__attribute__((target("avx2,fma"))) void activation_avx2(float p, const float* z, std::size_t n, float* f, float* df) {
-  activation_impl<K>(p, z, n, f, df);
+
+// The entry points per instruction set; everything above inlines into them. One set per
+// kernel: ISA (the tag), ATTR (the function target), WIDE (the inference mode), VEC (the
+// activation test's vectors).
+using StepFn = int (*)(const Arena&, const float*, const float*, const uint32_t*, int, const AdamStep&, const LossArgs&,
+                       double*);
+using LossFn = double (*)(const Arena&, const float*, const float*, std::size_t, const LossArgs&);
+using ForwardFn = void (*)(const Arena&, const float*, std::size_t, float*);
+using CountsFn = void (*)(const Arena&, const float*, std::size_t, std::vector<std::vector<uint32_t>>&);
+using LanesFn = void (*)(const Arena&, const float*, std::size_t, float*);
+using ActivationFn = void (*)(float, const float*, std::size_t, float*, float*);
+
+#define SN_KERNEL_SET(NAME, ISA, ATTR, WIDE, VEC)                                                                   \
+  template <int H>                                                                                                  \
+  ATTR int step_##NAME(const Arena& A, const float* x, const float* y, const uint32_t* rows, int batch,            \
+                       const AdamStep& c, const LossArgs& lf, double* l) {                                          \
+    return step_impl<ISA, One, H>(View<One>(A), x, y, rows, batch, c, lf, l);                                       \
+  }                                                                                                                 \
+  template <int H>                                                                                                  \
+  ATTR double loss_##NAME(const Arena& A, const float* x, const float* y, std::size_t n, const LossArgs& lf) {      \
+    return loss_impl<H>(View<One>(A), x, y, n, lf);                                                                 \
+  }                                                                                                                 \
+  template <int H>                                                                                                  \
+  ATTR void forward_##NAME(const Arena& A, const float* x, std::size_t n, float* out) {                             \
+    forward_impl<H>(View<One>(A), x, n, out);                                                                       \
+  }                                                                                                                 \
+  template <int H>                                                                                                  \
+  ATTR void lanes_##NAME(const Arena& A, const float* x, std::size_t n, float* y) {                                 \
+    lanes_impl<H, WIDE>(A, x, n, y);                                                                                \
+  }                                                                                                                 \
+  template <int H>                                                                                                  \
+  ATTR void counts_##NAME(const Arena& A, const float* x, std::size_t n, std::vector<std::vector<uint32_t>>& c) {   \
+    counts_impl<H>(View<One>(A), x, n, c);                                                                          \
+  }                                                                                                                 \
+  template <int K>                                                                                                  \
+  ATTR void activation_##NAME(float p, const float* z, std::size_t n, float* f, float* df) {                        \
+    activation_impl<K, VEC>(p, z, n, f, df);                                                                        \
+  }
+
+#define SN_NO_TARGET
+SN_KERNEL_SET(sse2, Sse2, SN_NO_TARGET, One, v8)
+SN_KERNEL_SET(avx2, Avx2, __attribute__((target("avx2,fma"))), One, v8)
+#define SN_AVX512 __attribute__((target("avx512f,avx512vl,avx512dq,avx512bw,avx2,fma")))
+SN_KERNEL_SET(avx512, Avx512, SN_AVX512, Wide, v16)
+
+// Two networks in lock-step (AVX-512 only).
+template <int H>
+SN_AVX512 int step_pair(const Arena& A, const float* x, const float* y, const uint32_t* rows, int batch,
+                        const AdamStep& c, const LossArgs& lf, double* l) {
+  return step_impl<Avx512, Pair, H>(View<Pair>(A), x, y, rows, batch, c, lf, l);
 }
-template <int K>
-void activation_sse2(float p, const float* z, std::size_t n, float* f, float* df) {
-  activation_impl<K>(p, z, n, f, df);
-}
+
+enum class Kernel : int { sse2, avx2, avx512 };
+const char* const kKernelNames[] = {"sse2", "avx2", "avx512"};
 
 struct Kernels {
   StepFn step;
@@ -542,32 +655,52 @@ struct Kernels {
   ForwardFn forward;
   CountsFn counts;
   LanesFn lanes;
+  StepFn pair;  // null where the kernel has no pair mode
 };
 
 template <int H>
-Kernels kernels_for(bool avx2) {
-  if (avx2) return {step_avx2<H>, loss_avx2<H>, forward_avx2<H>, counts_avx2<H>, lanes_avx2<H>};
-  return {step_sse2<H>, loss_impl<H>, forward_impl<H>, counts_sse2<H>, lanes_sse2<H>};
+Kernels kernels_for(Kernel k) {
+  if (k == Kernel::avx512)
+    return {step_avx512<H>, loss_avx512<H>, forward_avx512<H>, counts_avx512<H>, lanes_avx512<H>, step_pair<H>};
+  if (k == Kernel::avx2) return {step_avx2<H>, loss_avx2<H>, forward_avx2<H>, counts_avx2<H>, lanes_avx2<H>, nullptr};
+  return {step_sse2<H>, loss_sse2<H>, forward_sse2<H>, counts_sse2<H>, lanes_sse2<H>, nullptr};
 }
 
-bool cpu_has_avx2() {
+bool cpu_has(Kernel k) {
   __builtin_cpu_init();
-  return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  switch (k) {
+    case Kernel::avx512:
+      return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
+             __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512bw") && cpu_has(Kernel::avx2);
+    case Kernel::avx2: return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+    default: return true;
+  }
 }
 
-std::atomic<bool>& avx2_flag() {
-  static std::atomic<bool> flag = [] {
-    const char* force = std::getenv("SHADENET_CPU_KERNEL");
-    return !(force && std::string(force) == "sse2") && cpu_has_avx2();
+Kernel kernel_named(const std::string& name) {
+  for (int i = 0; i < 3; ++i)
+    if (name == kKernelNames[i]) return Kernel(i);
+  throw std::invalid_argument("unknown cpu kernel '" + name + "' (valid: avx512, avx2, sse2)");
+}
+
+// The kernel in use: the widest the CPU has, or SHADENET_CPU_KERNEL's when the CPU has that.
+std::atomic<int>& kernel_flag() {
+  static std::atomic<int> flag = [] {
+    if (const char* force = std::getenv("SHADENET_CPU_KERNEL"); force && *force) {
+      const Kernel k = kernel_named(force);
+      if (!cpu_has(k)) throw std::runtime_error(std::string("SHADENET_CPU_KERNEL=") + force + ": this CPU lacks it");
+      return int(k);
+    }
+    return int(cpu_has(Kernel::avx512) ? Kernel::avx512 : cpu_has(Kernel::avx2) ? Kernel::avx2 : Kernel::sse2);
   }();
   return flag;
 }
-bool use_avx2() { return avx2_flag().load(std::memory_order_relaxed); }
+Kernel kernel_in_use() { return Kernel(kernel_flag().load(std::memory_order_relaxed)); }
 
 Kernels kernels(int hidden) {
-  const bool avx2 = use_avx2();
+  const Kernel kind = kernel_in_use();
   Kernels k{};
-  with_builtin(hidden, [&](auto h) { k = kernels_for<decltype(h)::value>(avx2); });
+  with_builtin(hidden, [&](auto h) { k = kernels_for<decltype(h)::value>(kind); });
   return k;
 }
 
@@ -576,10 +709,11 @@ Kernels kernels(int hidden) {
 void cpu_activation(Activation a, float param, const float* z, std::size_t n, float* f, float* df) {
   const int kind = activation_def(a).simd;
   if (kind < 0) throw std::invalid_argument(std::string("activation '") + activation_name(a) + "' has no cpu code");
-  const bool avx2 = use_avx2();
-  with_builtin(kind, [&](auto k) {
-    constexpr int K = decltype(k)::value;
-    (avx2 ? activation_avx2<K> : activation_sse2<K>)(param, z, n, f, df);
+  const Kernel k = kernel_in_use();
+  with_builtin(kind, [&](auto kk) {
+    constexpr int K = decltype(kk)::value;
+    const ActivationFn fn = k == Kernel::avx512 ? activation_avx512<K> : k == Kernel::avx2 ? activation_avx2<K> : activation_sse2<K>;
+    fn(param, z, n, f, df);
   });
 }
 
@@ -594,16 +728,27 @@ AdamStep AdamStep::at(const TrainConfig& cfg, long long t) {
   return s;
 }
 
-const char* cpu_kernel_name() { return use_avx2() ? "avx2" : "sse2"; }
+const char* cpu_kernel_name() { return kKernelNames[int(kernel_in_use())]; }
+
+std::vector<std::string> cpu_kernels_available() {
+  std::vector<std::string> names;
+  for (int i = 0; i < 3; ++i)
+    if (cpu_has(Kernel(i))) names.push_back(kKernelNames[i]);
+  return names;
+}
 
 void use_cpu_kernel(const std::string& name) {
-  if (name == "avx2" && !cpu_has_avx2()) throw std::runtime_error("this CPU has no AVX2+FMA");
-  if (name != "avx2" && name != "sse2") throw std::invalid_argument("unknown cpu kernel '" + name + "' (valid: avx2, sse2)");
-  avx2_flag() = name == "avx2";
+  const Kernel k = kernel_named(name);
+  if (!cpu_has(k)) throw std::runtime_error("this CPU has no " + name + " (it has: " + [] {
+                     std::string s;
+                     for (const auto& n : cpu_kernels_available()) s += (s.empty() ? "" : ", ") + n;
+                     return s;
+                   }() + ")");
+  kernel_flag() = int(k);
 }
 
 CpuNet::CpuNet(const MlpSpec& spec, const float* params) : spec_(spec), layout_(std::make_unique<Layout>(spec)) {
-  const std::size_t bytes = layout_->total * sizeof(float);
+  const std::size_t bytes = (layout_->params(1) + layout_->scratch) * sizeof(float);
   arena_ = static_cast<float*>(std::aligned_alloc(64, bytes));
   if (!arena_) throw std::bad_alloc();
   std::memset(arena_, 0, bytes);
@@ -612,69 +757,133 @@ CpuNet::CpuNet(const MlpSpec& spec, const float* params) : spec_(spec), layout_(
 
 CpuNet::~CpuNet() { std::free(arena_); }
 
-void CpuNet::set_params(const float* flat) {
-  const Layout& S = *layout_;
-  float* p = arena_ + S.o_p[cur_];
-  std::memset(p, 0, S.P * sizeof(float));
-  for (int l = 0; l < S.L; ++l) {
-    const float* w = flat + spec_.weight_offset(l);
-    for (int o = 0; o < S.out[l]; ++o)
-      std::memcpy(p + S.woff[l] + std::size_t(o) * S.inpad[l], w + std::size_t(o) * S.in[l], S.in[l] * sizeof(float));
-    std::memcpy(p + S.boff[l], flat + spec_.bias_offset(l), S.out[l] * sizeof(float));
-  }
-  // The other copy's pad columns must be 0 too: Adam writes every float of it.
-  std::memcpy(arena_ + S.o_p[cur_ ^ 1], p, S.P * sizeof(float));
-  std::memset(arena_ + S.o_m, 0, 2 * S.P * sizeof(float));
-}
-
 namespace {
-void unpack(const MlpSpec& spec, const Layout& S, const float* p, float* flat) {
+// Parameters between the shared flat layout and network h of a padded copy (kPar = k networks
+// interleaved). Pad floats are left alone (0 from the arena's start: Adam keeps them 0).
+void pack(const MlpSpec& spec, const Layout& S, const float* flat, float* p, int k = 1, int h = 0) {
+  for (int l = 0; l < S.L; ++l) {
+    const float* w = flat + spec.weight_offset(l);
+    for (int o = 0; o < S.out[l]; ++o)
+      for (int i = 0; i < S.in[l]; ++i) p[(S.woff[l] + std::size_t(o) * S.inpad[l] + i) * k + h] = w[o * S.in[l] + i];
+    for (int o = 0; o < S.out[l]; ++o) p[(S.boff[l] + o) * k + h] = flat[spec.bias_offset(l) + o];
+  }
+}
+void unpack(const MlpSpec& spec, const Layout& S, const float* p, float* flat, int k = 1, int h = 0) {
   for (int l = 0; l < S.L; ++l) {
     float* w = flat + spec.weight_offset(l);
     for (int o = 0; o < S.out[l]; ++o)
-      std::memcpy(w + std::size_t(o) * S.in[l], p + S.woff[l] + std::size_t(o) * S.inpad[l], S.in[l] * sizeof(float));
-    std::memcpy(flat + spec.bias_offset(l), p + S.boff[l], S.out[l] * sizeof(float));
+      for (int i = 0; i < S.in[l]; ++i) w[o * S.in[l] + i] = p[(S.woff[l] + std::size_t(o) * S.inpad[l] + i) * k + h];
+    for (int o = 0; o < S.out[l]; ++o) flat[spec.bias_offset(l) + o] = p[(S.boff[l] + o) * k + h];
   }
+}
+// Copies `count` floats of network `from_h` of a k-network array into network `to_h` of a
+// j-network array (a pair's arrays to one network's and back).
+void restride(const float* from, int k, int from_h, float* to, int j, int to_h, std::size_t count) {
+  for (std::size_t i = 0; i < count; ++i) to[i * j + to_h] = from[i * k + from_h];
 }
 }  // namespace
 
-void CpuNet::get_params(float* flat) const { unpack(spec_, *layout_, arena_ + layout_->o_p[cur_], flat); }
+void CpuNet::set_params(const float* flat) {
+  const Layout& S = *layout_;
+  float* p = arena_ + S.P * cur_;
+  std::memset(p, 0, S.P * sizeof(float));
+  pack(spec_, S, flat, p);
+  // The other copy's pad columns must be 0 too: Adam writes every float of it.
+  std::memcpy(arena_ + S.P * (cur_ ^ 1), p, S.P * sizeof(float));
+  std::memset(arena_ + 2 * S.P, 0, 2 * S.P * sizeof(float));
+}
 
-void CpuNet::get_gradient(float* flat) const { unpack(spec_, *layout_, arena_ + layout_->o_g, flat); }
+void CpuNet::get_params(float* flat) const { unpack(spec_, *layout_, arena_ + layout_->P * cur_, flat); }
+
+void CpuNet::get_gradient(float* flat) const { unpack(spec_, *layout_, arena_ + 4 * layout_->P, flat); }
+
+namespace {
+Arena whole(const Layout& S, float* arena, int cur) { return {S, arena, arena + S.params(1), cur}; }
+// A network's verdict bits (step_impl) as CpuNet::step's answer.
+bool applied(int verdict, DivergenceKind* why) {
+  if (verdict == kStepOk) return true;
+  if (why) *why = verdict == kStepExploded ? DivergenceKind::exploded : DivergenceKind::nonfinite;
+  return false;
+}
+}  // namespace
 
 bool CpuNet::step(const float* x, const float* y, const uint32_t* rows, int batch, const AdamStep& adam,
                   double* loss, DivergenceKind* why) {
-  const View V{*layout_, arena_, cur_};
-  const int verdict =
-      kernels(layout_->hidden).step(V, x, y, rows, batch, adam, LossArgs{loss_.kind, float(loss_.delta), sample_limit_}, loss);
-  if (verdict != kStepOk) {
-    if (why) *why = verdict == kStepExploded ? DivergenceKind::exploded : DivergenceKind::nonfinite;
-    return false;
-  }
+  LossArgs lf{loss_.kind, float(loss_.delta)};
+  lf.sample_limit[0] = sample_limit_;
+  if (!applied(kernels(layout_->hidden).step(whole(*layout_, arena_, cur_), x, y, rows, batch, adam, lf, loss), why)) return false;
   cur_ ^= 1;
   return true;
 }
 
 double CpuNet::mse(const float* x, const float* y, std::size_t count) {
-  return kernels(layout_->hidden).loss(View{*layout_, arena_, cur_}, x, y, count, LossArgs{LossKind::l2, 1.0f});
+  return kernels(layout_->hidden).loss(whole(*layout_, arena_, cur_), x, y, count, LossArgs{LossKind::l2, 1.0f});
 }
 
 double CpuNet::mean_loss(const float* x, const float* y, std::size_t count) {
-  return kernels(layout_->hidden).loss(View{*layout_, arena_, cur_}, x, y, count, LossArgs{loss_.kind, float(loss_.delta)});
+  return kernels(layout_->hidden).loss(whole(*layout_, arena_, cur_), x, y, count, LossArgs{loss_.kind, float(loss_.delta)});
 }
 
-void CpuNet::forward(const float* x, std::size_t count, float* out) {
-  kernels(layout_->hidden).forward(View{*layout_, arena_, cur_}, x, count, out);
-}
+void CpuNet::forward(const float* x, std::size_t count, float* out) { kernels(layout_->hidden).forward(whole(*layout_, arena_, cur_), x, count, out); }
 
 void CpuNet::forward_lanes(const float* x, std::size_t blocks, float* y) {
-  kernels(layout_->hidden).lanes(View{*layout_, arena_, cur_}, x, blocks, y);
+  kernels(layout_->hidden).lanes(whole(*layout_, arena_, cur_), x, blocks, y);
 }
 
 std::vector<std::vector<uint32_t>> CpuNet::unit_counts(const float* x, std::size_t count) {
   std::vector<std::vector<uint32_t>> counts;
-  kernels(layout_->hidden).counts(View{*layout_, arena_, cur_}, x, count, counts);
+  kernels(layout_->hidden).counts(whole(*layout_, arena_, cur_), x, count, counts);
   return counts;
+}
+
+bool CpuNetPair::available() { return kernel_in_use() == Kernel::avx512; }
+
+bool CpuNetPair::can_pair(const CpuNet& a, const CpuNet& b) {
+  return a.spec_.same_shape(b.spec_) && a.loss_ == b.loss_;
+}
+
+CpuNetPair::CpuNetPair(const CpuNet& a, const CpuNet& b) : layout_(std::make_unique<Layout>(a.spec_)) {
+  if (!available()) throw std::logic_error("CpuNetPair: the " + std::string(cpu_kernel_name()) + " kernel has no pair mode");
+  if (!can_pair(a, b)) throw std::invalid_argument("CpuNetPair: the two networks differ in architecture or loss");
+  const Layout& S = *layout_;
+  const std::size_t bytes = (S.params(2) + S.scratch) * sizeof(float);
+  arena_ = static_cast<float*>(std::aligned_alloc(64, bytes));
+  if (!arena_) throw std::bad_alloc();
+  std::memset(arena_, 0, bytes);
+  const CpuNet* nets[2] = {&a, &b};
+  for (int h = 0; h < 2; ++h) {
+    const CpuNet& n = *nets[h];
+    // This pair's copy 0 is each network's current one; m and v follow.
+    restride(n.arena_ + S.P * n.cur_, 1, 0, arena_, 2, h, S.P);
+    restride(n.arena_ + S.P * (n.cur_ ^ 1), 1, 0, arena_ + 2 * S.P, 2, h, S.P);
+    restride(n.arena_ + 2 * S.P, 1, 0, arena_ + 4 * S.P, 2, h, 2 * S.P);
+    limits_[h] = n.sample_limit_;
+  }
+  loss_ = a.loss_;
+}
+
+CpuNetPair::~CpuNetPair() { std::free(arena_); }
+
+bool CpuNetPair::step(const float* x, const float* y, const uint32_t* rows, int batch, const AdamStep& adam,
+                      double loss[2], bool ok[2], DivergenceKind why[2]) {
+  LossArgs lf{loss_.kind, float(loss_.delta)};
+  lf.sample_limit[0] = limits_[0];
+  lf.sample_limit[1] = limits_[1];
+  const Arena A{*layout_, arena_, arena_ + layout_->params(2), cur_};
+  const int verdict = kernels(layout_->hidden).pair(A, x, y, rows, batch, adam, lf, loss);
+  for (int h = 0; h < 2; ++h) ok[h] = applied((verdict >> (2 * h)) & 3, &why[h]);
+  if (!ok[0] || !ok[1]) return false;
+  cur_ ^= 1;
+  return true;
+}
+
+void CpuNetPair::get(int h, CpuNet& net, bool written) const {
+  const Layout& S = *layout_;
+  const int c = written ? cur_ ^ 1 : cur_;
+  float* p = net.arena_ + S.P * net.cur_;
+  restride(arena_ + 2 * S.P * c, 2, h, p, 1, 0, S.P);
+  std::memcpy(net.arena_ + S.P * (net.cur_ ^ 1), p, S.P * sizeof(float));
+  restride(arena_ + 4 * S.P, 2, h, net.arena_ + 2 * S.P, 1, 0, 3 * S.P);  // m, v, the gradient
 }
 
 }  // namespace sn::nn

@@ -1,7 +1,10 @@
 // One network in the cpu backend's working form. The minibatch is the SIMD axis: samples go
 // through the network in blocks of 8 (one AVX register per neuron), weight rows are padded to
 // a multiple of 8 floats so the gradient and Adam loops run on whole registers. The kernels are
-// compiled twice, for x86-64 baseline (SSE2) and for AVX2+FMA, and picked at run time.
+// compiled three times, for x86-64 baseline (SSE2), AVX2+FMA and AVX-512, and the widest the
+// CPU has is picked at run time. The AVX-512 kernel fills its 16 lanes with two networks'
+// minibatches of 8 (CpuNetPair: a sweep trains many networks of one architecture on the same
+// rows), with 16 samples of one network for inference, and with 16 parameters for Adam.
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -22,10 +25,12 @@ struct AdamStep {
   static AdamStep at(const TrainConfig& cfg, long long t);
 };
 
-// "avx2" or "sse2": the kernel in use (AVX2+FMA when the CPU has it; SHADENET_CPU_KERNEL=sse2
-// in the environment forces the baseline).
+// "avx512", "avx2" or "sse2": the kernel in use (the widest this CPU has; SHADENET_CPU_KERNEL
+// in the environment picks another the CPU has).
 const char* cpu_kernel_name();
-// Switches kernels (tests compare both with the oracle); throws when the CPU lacks it.
+// The kernels this CPU can run, narrowest first.
+std::vector<std::string> cpu_kernels_available();
+// Switches kernels (tests compare each with the oracle); throws when the CPU lacks it.
 void use_cpu_kernel(const std::string& name);
 
 // The SIMD code of built-in activation `a` in the kernel in use, over n pre-activations z (the
@@ -81,12 +86,41 @@ class CpuNet {
   struct Layout;  // padded offsets, private to cpu_net.cpp
 
  private:
+  friend class CpuNetPair;
   MlpSpec spec_;
   std::unique_ptr<Layout> layout_;
   float* arena_ = nullptr;  // 64-byte aligned: params x2, m, v, grad, activations, scratch
   int cur_ = 0;             // which of the two parameter copies is current
   Loss loss_;
   float sample_limit_ = std::numeric_limits<float>::infinity();
+};
+
+// Two networks of one architecture and loss, trained in lock-step on the same minibatches by
+// the AVX-512 kernel, 8 samples of each per register. Each network's parameters, losses and
+// verdicts are bit for bit what CpuNet::step gives it alone (the tests hold them to that).
+class CpuNetPair {
+ public:
+  static bool available();  // the kernel in use has the pair mode (avx512)
+  static bool can_pair(const CpuNet& a, const CpuNet& b);  // same architecture, activations and loss
+  CpuNetPair(const CpuNet& a, const CpuNet& b);  // copies their state: parameters, Adam's moments, sample limits
+  ~CpuNetPair();
+  CpuNetPair(const CpuNetPair&) = delete;
+  CpuNetPair& operator=(const CpuNetPair&) = delete;
+
+  // CpuNet::step for both: loss[h], ok[h] and why[h] per network. Returns true when both steps
+  // applied; otherwise neither is applied here, and the pair must be split: get(h, net, ok[h]).
+  bool step(const float* x, const float* y, const uint32_t* rows, int batch, const AdamStep& adam, double loss[2],
+            bool ok[2], DivergenceKind why[2]);
+  // Network h's state (parameters, Adam's moments, the last gradient) into `net`; `written`:
+  // the parameters the last, refused step wrote (where network h's own step applied).
+  void get(int h, CpuNet& net, bool written = false) const;
+
+ private:
+  std::unique_ptr<CpuNet::Layout> layout_;
+  float* arena_ = nullptr;  // as CpuNet's, the parameter arrays of the two networks interleaved
+  int cur_ = 0;
+  Loss loss_;
+  float limits_[2] = {};
 };
 
 }  // namespace sn::nn

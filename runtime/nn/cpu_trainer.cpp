@@ -66,6 +66,37 @@ std::unique_ptr<EncodedRows> encode_data(const std::vector<InputEncoding>& encs,
   return r;
 }
 
+// What one task of an epoch trains: a net alone, or two in lock-step (nn/cpu_net.h CpuNetPair).
+struct Unit {
+  int net[2] = {-1, -1};
+  std::unique_ptr<CpuNetPair> pair;
+};
+
+// Pairs nets of one architecture and loss on the same rows, where the kernel has the pair mode,
+// as long as every thread still gets a unit: two nets on two threads train faster apart.
+std::vector<Unit> plan_units(const std::vector<std::unique_ptr<CpuNet>>& work,
+                             const std::vector<const EncodedRows*>& rows_of, int threads) {
+  const int count = int(work.size());
+  int pairs_left = CpuNetPair::available() ? std::max(0, std::min(count / 2, count - threads)) : 0;
+  std::vector<char> used(std::size_t(count), 0);
+  std::vector<Unit> units;
+  for (int i = 0; i < count; ++i) {
+    if (used[i]) continue;
+    Unit u;
+    u.net[0] = i;
+    for (int j = i + 1; j < count && pairs_left > 0; ++j)
+      if (!used[j] && rows_of[i] == rows_of[j] && CpuNetPair::can_pair(*work[i], *work[j])) {
+        u.net[1] = j;
+        u.pair = std::make_unique<CpuNetPair>(*work[i], *work[j]);
+        used[j] = 1;
+        --pairs_left;
+        break;
+      }
+    units.push_back(std::move(u));
+  }
+  return units;
+}
+
 class CpuBackend : public Backend {
  public:
   explicit CpuBackend(int threads) : threads_(threads > 0 ? threads : default_threads()) {}
@@ -105,6 +136,8 @@ class CpuBackend : public Backend {
       work[i]->set_sample_limit(cfg.divergence.sample_limit(results[i].initial_val_mse, nets[i]->spec.outputs));
     });
 
+    std::vector<Unit> units = plan_units(work, rows_of, threads_);
+
     const uint32_t n = uint32_t(data.train_count());
     const long long steps = n / uint32_t(cfg.batch);
     std::vector<uint32_t> rows(static_cast<std::size_t>(steps * cfg.batch));
@@ -121,47 +154,89 @@ class CpuBackend : public Backend {
       // Steps each net has applied in this epoch, for the tick (-1: not training this epoch).
       std::vector<std::atomic<long long>> applied(static_cast<std::size_t>(count));
       for (int i = 0; i < count; ++i) applied[i] = results[i].diverged ? -1 : 0;
-      auto train_epoch = [&](int i) {
+      // Net i's step s of this epoch; false when refused (the net has diverged).
+      auto take = [&](int i, long long s, bool ok, double loss, DivergenceKind why, double& sum) {
         NetResult& r = results[i];
-        if (r.diverged) return;
-        CpuNet& net = *work[i];
-        double sum = 0;
-        for (long long s = 0; s < steps; ++s) {
-          if (cfg.stop_requested()) {
-            r.interrupted = StopPoint{e + 1, s};
-            applied[i] = steps;
-            return;
-          }
-          double loss;
-          DivergenceKind why = DivergenceKind::nonfinite;
-          if (!net.step(rows_of[i]->train, data.train_y.data(), rows.data() + s * cfg.batch, cfg.batch,
-                        adam[std::size_t(s)], &loss, &why)) {
-            r.diverged = Divergence{e + 1, s + 1, why};
-            applied[i] = steps;
-            return;
-          }
-          sum += loss;
-          ++r.steps;
-          applied[i].store(s + 1, std::memory_order_relaxed);
+        if (!ok) {
+          r.diverged = Divergence{e + 1, s + 1, why};
+          applied[i] = steps;
+          return false;
         }
+        sum += loss;
+        ++r.steps;
+        applied[i].store(s + 1, std::memory_order_relaxed);
+        return true;
+      };
+      auto interrupt = [&](int i, long long s) {
+        results[i].interrupted = StopPoint{e + 1, s};
+        applied[i] = steps;
+      };
+      auto end_epoch = [&](int i, double sum) {
+        CpuNet& net = *work[i];
         const double val = net.mse(rows_of[i]->val, data.val_y.data(), data.val_count());
         const double val_loss =
             cfg.loss.kind == LossKind::l2 ? val : net.mean_loss(rows_of[i]->val, data.val_y.data(), data.val_count());
         std::vector<float> p(net.spec().param_count());
         net.get_params(p.data());
-        r.end_epoch(cfg, steps, sum / double(steps), val, val_loss, p.data(), p.size());
+        results[i].end_epoch(cfg, steps, sum / double(steps), val, val_loss, p.data(), p.size());
         finished[i] = 1;
+      };
+      // Net i alone from step `from` on, with the epoch's loss sum so far.
+      auto train_alone = [&](int i, long long from, double sum) {
+        CpuNet& net = *work[i];
+        for (long long s = from; s < steps; ++s) {
+          if (cfg.stop_requested()) return interrupt(i, s);
+          double loss;
+          DivergenceKind why = DivergenceKind::nonfinite;
+          const bool ok = net.step(rows_of[i]->train, data.train_y.data(), rows.data() + s * cfg.batch, cfg.batch,
+                                   adam[std::size_t(s)], &loss, &why);
+          if (!take(i, s, ok, loss, why, sum)) return;
+        }
+        end_epoch(i, sum);
+      };
+      auto train_epoch = [&](int u) {
+        Unit& unit = units[std::size_t(u)];
+        if (!unit.pair) {
+          if (!results[unit.net[0]].diverged) train_alone(unit.net[0], 0, 0.0);
+          return;
+        }
+        double sum[2] = {0, 0};
+        for (long long s = 0; s < steps; ++s) {
+          if (cfg.stop_requested()) {
+            for (int h = 0; h < 2; ++h) unit.pair->get(h, *work[unit.net[h]]), interrupt(unit.net[h], s);
+            return;
+          }
+          double loss[2];
+          bool ok[2];
+          DivergenceKind why[2] = {DivergenceKind::nonfinite, DivergenceKind::nonfinite};
+          if (!unit.pair->step(rows_of[unit.net[0]]->train, data.train_y.data(), rows.data() + s * cfg.batch, cfg.batch,
+                               adam[std::size_t(s)], loss, ok, why)) {
+            // A net diverged: the pair splits, and the other one goes on alone.
+            for (int h = 0; h < 2; ++h) unit.pair->get(h, *work[unit.net[h]], ok[h]);
+            unit.pair.reset();
+            int alone = -1;
+            for (int h = 0; h < 2; ++h)
+              if (take(unit.net[h], s, ok[h], loss[h], why[h], sum[h])) alone = h;
+            if (alone >= 0) {
+              unit.net[0] = unit.net[alone];
+              train_alone(unit.net[0], s + 1, sum[alone]);
+            }
+            return;
+          }
+          for (int h = 0; h < 2; ++h) take(unit.net[h], s, true, loss[h], why[h], sum[h]);
+        }
+        for (int h = 0; h < 2; ++h) unit.pair->get(h, *work[unit.net[h]]), end_epoch(unit.net[h], sum[h]);
       };
       if (cfg.tick) {
         // The nets train on threads of their own; this thread ticks.
-        parallel_for_watched(count, threads_, beat, train_epoch, [&] {
+        parallel_for_watched(int(units.size()), threads_, beat, train_epoch, [&] {
           long long sum = 0, nets = 0;
           for (const auto& a : applied)
             if (long long v = a.load(std::memory_order_relaxed); v >= 0) sum += v, ++nets;
           cfg.tick(TickEvent{e + 1, cfg.epochs, nets ? sum / nets : steps, steps});
         });
       } else {
-        parallel_for(count, threads_, train_epoch);
+        parallel_for(int(units.size()), threads_, train_epoch);
       }
       if (progress)
         for (int i = 0; i < count; ++i)

@@ -75,18 +75,6 @@ TEST(ActivationTwins, DerivativeMatchesCentralDifferences) {
   }
 }
 
-std::vector<std::string> kernels_here() {
-  std::vector<std::string> k = {"sse2"};
-  const std::string saved = cpu_kernel_name();
-  try {
-    use_cpu_kernel("avx2");
-    k.push_back("avx2");
-  } catch (const std::exception&) {
-  }
-  use_cpu_kernel(saved);
-  return k;
-}
-
 // The SIMD code against the twins, on a grid fine enough to cross every polynomial's range
 // reduction many times, out to where exp overflows.
 TEST(ActivationSimd, MatchesTheDoubleTwinsOnAFineGrid) {
@@ -95,7 +83,7 @@ TEST(ActivationSimd, MatchesTheDoubleTwinsOnAFineGrid) {
   for (int i = -200000; i <= 200000; ++i) z.push_back(float(i) * 2.5e-4f);  // [-50, 50]
   for (float v : {-1e4f, -300.f, -87.f, 80.f, 88.f, 300.f, 1e4f}) z.push_back(v);
   std::vector<float> f(z.size()), df(z.size());
-  for (const auto& k : kernels_here()) {
+  for (const auto& k : cpu_kernels_available()) {
     use_cpu_kernel(k);
     for (Activation a : kHidden) {
       const ActivationDef& d = activation_def(a);

@@ -2,6 +2,7 @@
 // runs; determinism; divergence; dead-unit diagnostics; the job's input checks.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -40,16 +41,6 @@ Dataset smooth_dataset(std::size_t rows, uint64_t seed = 9) {
     Y.insert(Y.end(), y, y + 3);
   }
   return d;
-}
-
-std::vector<std::string> kernels_here() {
-  std::vector<std::string> k = {"sse2"};
-  try {
-    use_cpu_kernel("avx2");
-    k.push_back("avx2");
-  } catch (const std::exception&) {
-  }
-  return k;
 }
 
 struct KernelGuard {  // restores the default kernel
@@ -92,7 +83,7 @@ TEST_P(CpuVsOracle, ForwardWithin1e5) {
   Dataset d = smooth_dataset(37);  // 29 training rows: not a multiple of 8
   const std::size_t n = d.train_count();
   std::vector<double> pd(p.begin(), p.end());
-  for (const auto& k : kernels_here()) {
+  for (const auto& k : cpu_kernels_available()) {
     use_cpu_kernel(k);
     CpuNet net(s, p.data());
     std::vector<float> out(n * 3);
@@ -137,7 +128,7 @@ TEST_P(CpuVsOracle, OneAdamStepWithin1e5) {
     adam.step(pd, g, cfg);
     double loss2 = oracle::loss_grad(s, pd, xs, ys, &g);
     adam.step(pd, g, cfg);
-    for (const auto& k : kernels_here()) {
+    for (const auto& k : cpu_kernels_available()) {
       use_cpu_kernel(k);
       CpuNet net(s, p.data());
       double l1, l2;
@@ -184,6 +175,94 @@ INSTANTIATE_TEST_SUITE_P(
                       Shape{{8, 5}, Activation::exponential, Activation::swish},
                       Shape{{12, 12}, Activation::tanh, Activation::exponential}));
 
+// The AVX-512 kernel's pair mode: two networks in one register file, each bit for bit what it
+// is alone, over steps of every shape (widths not multiples of 8, encoded inputs, activations
+// whose derivative needs z, a non-linear output, every loss, a minibatch with dead lanes).
+TEST_P(CpuVsOracle, PairedNetsAreBitForBitWhatTheyAreAlone) {
+  KernelGuard guard;
+  const auto have = cpu_kernels_available();
+  if (std::find(have.begin(), have.end(), "avx512") == have.end()) GTEST_SKIP() << "this CPU has no AVX-512";
+  use_cpu_kernel("avx512");
+  ASSERT_TRUE(CpuNetPair::available());
+  const Shape& sh = GetParam();
+  MlpSpec s = spec_of(6, sh.hidden, 3, sh.hidden_act, sh.out_act);
+  const auto pa = init_params(s, Init::xavier, 11), pb = init_params(s, Init::he, 12);
+  Dataset d = smooth_dataset(120);
+  TrainConfig cfg;
+  cfg.lr = 5e-3;
+  for (LossKind loss : {LossKind::l2, LossKind::huber, LossKind::l1, LossKind::relative_l2})
+    for (int batch : {8, 13}) {
+      CpuNet a(s, pa.data()), b(s, pb.data()), alone_a(s, pa.data()), alone_b(s, pb.data());
+      for (CpuNet* n : {&a, &b, &alone_a, &alone_b}) n->set_loss(Loss{loss, 0.05});
+      CpuNetPair pair(a, b);
+      std::vector<uint32_t> rows(static_cast<std::size_t>(batch), 0u);
+      for (int t = 1; t <= 12; ++t) {
+        for (int k = 0; k < batch; ++k) rows[std::size_t(k)] = uint32_t((k * 7 + t * 5) % d.train_count());
+        double lp[2], la, lb;
+        bool ok[2];
+        DivergenceKind why[2];
+        const AdamStep adam = AdamStep::at(cfg, t);
+        ASSERT_TRUE(pair.step(d.train_x.data(), d.train_y.data(), rows.data(), batch, adam, lp, ok, why));
+        ASSERT_TRUE(alone_a.step(d.train_x.data(), d.train_y.data(), rows.data(), batch, adam, &la));
+        ASSERT_TRUE(alone_b.step(d.train_x.data(), d.train_y.data(), rows.data(), batch, adam, &lb));
+        EXPECT_EQ(lp[0], la) << "step " << t;
+        EXPECT_EQ(lp[1], lb) << "step " << t;
+      }
+      pair.get(0, a);
+      pair.get(1, b);
+      std::vector<float> got(s.param_count()), want(s.param_count());
+      for (auto [n, alone] : {std::pair<CpuNet*, CpuNet*>{&a, &alone_a}, {&b, &alone_b}}) {
+        n->get_params(got.data());
+        alone->get_params(want.data());
+        EXPECT_EQ(got, want) << "loss " << int(loss) << " batch " << batch;
+        n->get_gradient(got.data());
+        alone->get_gradient(want.data());
+        EXPECT_EQ(got, want) << "gradient, loss " << int(loss) << " batch " << batch;
+      }
+      EXPECT_NE(got, std::vector<float>(got.size(), 0.0f));
+    }
+}
+
+// One network of a pair refuses its step (its loss is not finite, or a sample is above its
+// limit): the other's step applies, as alone, and the refusing one keeps its parameters.
+TEST(CpuNetPair, OneNetRefusingLeavesTheOtherAsAlone) {
+  KernelGuard guard;
+  const auto have = cpu_kernels_available();
+  if (std::find(have.begin(), have.end(), "avx512") == have.end()) GTEST_SKIP() << "this CPU has no AVX-512";
+  use_cpu_kernel("avx512");
+  MlpSpec s = spec_of(6, {8, 8}, 3, Activation::tanh);
+  const auto pa = init_params(s, Init::xavier, 1);
+  auto pb = init_params(s, Init::xavier, 2);
+  Dataset d = smooth_dataset(40);
+  std::vector<uint32_t> rows = {0, 3, 6, 9, 12, 15, 18, 21};
+  const AdamStep adam = AdamStep::at(TrainConfig{}, 1);
+  for (int h = 0; h < 2; ++h)
+    for (DivergenceKind kind : {DivergenceKind::nonfinite, DivergenceKind::exploded}) {
+      auto bad = pb;
+      if (kind == DivergenceKind::nonfinite) bad[s.bias_offset(2)] = std::numeric_limits<float>::infinity();
+      CpuNet good(s, pa.data()), worse(s, bad.data()), alone(s, pa.data());
+      if (kind == DivergenceKind::exploded) worse.set_sample_limit(1e-6f);
+      CpuNetPair pair(h == 0 ? worse : good, h == 0 ? good : worse);  // the refusing one first, then second
+      double loss[2], want;
+      bool ok[2];
+      DivergenceKind why[2];
+      EXPECT_FALSE(pair.step(d.train_x.data(), d.train_y.data(), rows.data(), 8, adam, loss, ok, why));
+      EXPECT_FALSE(ok[h]);
+      EXPECT_TRUE(ok[1 - h]);
+      EXPECT_EQ(why[h], kind);
+      ASSERT_TRUE(alone.step(d.train_x.data(), d.train_y.data(), rows.data(), 8, adam, &want));
+      EXPECT_EQ(loss[1 - h], want);
+      pair.get(1 - h, good, true);
+      pair.get(h, worse, false);
+      std::vector<float> got(s.param_count()), expect(s.param_count());
+      good.get_params(got.data());
+      alone.get_params(expect.data());
+      EXPECT_EQ(got, expect);
+      worse.get_params(got.data());
+      EXPECT_EQ(got, bad);
+    }
+}
+
 TEST(CpuTrainer, TwoEpochCurvesMatchTheOracle) {
   KernelGuard guard;
   MlpSpec s = spec_of(6, {8, 8}, 3, Activation::tanh);
@@ -196,7 +275,7 @@ TEST(CpuTrainer, TwoEpochCurvesMatchTheOracle) {
   cfg.seed = 4;
   NetResult want = oracle::train(s, net.params, d, cfg);
   ASSERT_EQ(want.val_mse.size(), 2u);
-  for (const auto& k : kernels_here()) {
+  for (const auto& k : cpu_kernels_available()) {
     use_cpu_kernel(k);
     auto got = make_cpu_backend(1)->train({&net}, d, cfg, nullptr)[0];
     ASSERT_EQ(got.val_mse.size(), 2u);
