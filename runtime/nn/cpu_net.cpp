@@ -95,7 +95,6 @@ using Layout = CpuNet::Layout;
 //        same rows (a sweep's) fill AVX-512 registers at batch 8.
 //  Wide: 16 samples of one network per v16 (inference).
 // G: the weight gradient's vectors, which hold 8 inputs (of each network).
-typedef double v8d __attribute__((vector_size(64)));
 struct One {
   using V = v8;
   using G = v8;
@@ -113,9 +112,10 @@ struct Pair {
   using G = v16;
   static constexpr int kPar = 2, kSamples = 8;
   static SN_INLINE V w(const float* p) {
+    typedef double v8d __attribute__((vector_size(64)));
     double d;
     std::memcpy(&d, p, sizeof d);
-    return (V)splat<v8d>(d);
+    return (V)v8d{d, d, d, d, d, d, d, d};  // one vbroadcastsd from memory (splat's shuffle made two)
   }
 };
 template <class Mode>
