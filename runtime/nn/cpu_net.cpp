@@ -95,9 +95,11 @@ using Layout = CpuNet::Layout;
 //        same rows (a sweep's) fill AVX-512 registers at batch 8.
 //  Wide: 16 samples of one network per v16 (inference).
 // G: the weight gradient's vectors, which hold 8 inputs (of each network).
+typedef double v8d __attribute__((vector_size(64)));
 struct One {
   using V = v8;
   using G = v8;
+  using E = v8;  // a vector as 8 units of kPar floats (the transposes' view)
   static constexpr int kPar = 1, kSamples = 8;
   static SN_INLINE V w(const float* p) { return splat<V>(*p); }
 };
@@ -110,9 +112,9 @@ struct Wide {
 struct Pair {
   using V = v16;
   using G = v16;
+  using E = v8d;
   static constexpr int kPar = 2, kSamples = 8;
   static SN_INLINE V w(const float* p) {
-    typedef double v8d __attribute__((vector_size(64)));
     double d;
     std::memcpy(&d, p, sizeof d);
     return (V)v8d{d, d, d, d, d, d, d, d};  // one vbroadcastsd from memory (splat's shuffle made two)
@@ -121,8 +123,28 @@ struct Pair {
 template <class Mode>
 constexpr int kLanesOf = int(sizeof(typename Mode::V) / sizeof(float));
 
-// Sum of lanes h, h + kPar, ... (network h's samples), in one fixed order for every mode: a
-// network's sums are the same bits in a pair as alone.
+// Transposes 8 rows of 8 units in registers (E: v8, float units, or v8d, 64-bit units: a
+// pair's two networks move together), in three rounds of interleaving.
+template <class E>
+SN_INLINE void transpose8(E r[8]) {
+  E t[8];
+  for (int i = 0; i < 8; i += 2) {
+    t[i] = __builtin_shufflevector(r[i], r[i + 1], 0, 8, 2, 10, 4, 12, 6, 14);
+    t[i + 1] = __builtin_shufflevector(r[i], r[i + 1], 1, 9, 3, 11, 5, 13, 7, 15);
+  }
+  for (int i : {0, 1, 4, 5}) {
+    r[i] = __builtin_shufflevector(t[i], t[i + 2], 0, 1, 8, 9, 4, 5, 12, 13);
+    r[i + 2] = __builtin_shufflevector(t[i], t[i + 2], 2, 3, 10, 11, 6, 7, 14, 15);
+  }
+  for (int i = 0; i < 4; ++i) {
+    t[i] = __builtin_shufflevector(r[i], r[i + 4], 0, 1, 2, 3, 8, 9, 10, 11);
+    t[i + 4] = __builtin_shufflevector(r[i], r[i + 4], 4, 5, 6, 7, 12, 13, 14, 15);
+  }
+  for (int i = 0; i < 8; ++i) r[i] = t[i];
+}
+
+// Sum of lanes h, h + kPar, ... (network h's samples), in one fixed order: a network's sums
+// are the same bits in a pair as alone.
 template <class Mode>
 SN_INLINE float lane_sum(const typename Mode::V& v, int h) {
   constexpr int k = Mode::kPar;
@@ -370,7 +392,9 @@ template <class Isa, class Mode, int H>
 SN_INLINE int step_impl(const View<Mode>& V, const float* x, const float* y, const uint32_t* rows, int batch,
                         const AdamStep& c, const LossArgs& lf, double* loss_out) {
   using Vec = typename Mode::V;
-  constexpr int k = Mode::kPar, lanes = kLanesOf<Mode>, B = Mode::kSamples;
+  using E = typename Mode::E;
+  static_assert(Mode::kSamples == 8, "training runs 8 samples (of each network) per block");
+  constexpr int k = Mode::kPar, B = Mode::kSamples;
   const Layout& S = V.S;
   const float* p = V.p();
   float* g = V.g();
@@ -420,15 +444,26 @@ SN_INLINE int step_impl(const View<Mode>& V, const float* x, const float* y, con
     for (int l = S.L - 1; l >= 0; --l) {
       const int in = S.in[l], out = S.out[l], inpad = S.inpad[l];
       Vec* dl = V.d(cur);
-      // Transposed activations for the outer-product gradient (pad columns stay 0).
-      const float* a = reinterpret_cast<const float*>(V.act(l));
+      // Transposed activations for the outer-product gradient (pad columns stay 0), and the
+      // bias gradient: each unit's errors summed over the samples, eight units at a time as
+      // sums of transposed rows (lane_sum's order).
+      const Vec* a = V.act(l);
       float* aT = V.at(l);
-      for (int i = 0; i < in; ++i)
-        for (int s = 0; s < B; ++s)
-          for (int h = 0; h < k; ++h) aT[(s * inpad + i) * k + h] = a[i * lanes + s * k + h];
+      for (int c = 0; c < inpad; c += 8) {
+        E r[8];
+        for (int q = 0; q < 8; ++q) r[q] = c + q < in ? (E)a[c + q] : E{};
+        transpose8(r);
+        for (int s = 0; s < B; ++s) *reinterpret_cast<E*>(aT + (std::size_t(s) * inpad + c) * k) = r[s];
+      }
       float* gb = g + S.boff[l] * k;
-      for (int o = 0; o < out; ++o)
-        for (int h = 0; h < k; ++h) gb[o * k + h] += lane_sum<Mode>(dl[o], h);
+      for (int c = 0; c < out; c += 8) {
+        E r[8];
+        for (int q = 0; q < 8; ++q) r[q] = c + q < out ? (E)dl[c + q] : E{};
+        transpose8(r);
+        Vec u[8];  // the sums are of floats, whatever the units
+        for (int q = 0; q < 8; ++q) u[q] = (Vec)r[q];
+        *reinterpret_cast<Vec*>(gb + c * k) += ((u[0] + u[4]) + (u[1] + u[5])) + ((u[2] + u[6]) + (u[3] + u[7]));
+      }
       in_groups<Gradient, Mode>(out, g + S.woff[l] * k, inpad, reinterpret_cast<const float*>(dl), aT);
       if (l == 0) break;
       Vec* prev = V.d(cur ^ 1);
