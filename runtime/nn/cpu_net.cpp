@@ -641,30 +641,46 @@ using CountsFn = void (*)(const Arena&, const float*, std::size_t, std::vector<s
 using LanesFn = void (*)(const Arena&, const float*, std::size_t, float*);
 using ActivationFn = void (*)(float, const float*, std::size_t, float*, float*);
 
+// The kernels flush denormal floats to zero (MXCSR's FTZ and DAZ), as GPUs do: a relu network's
+// dead units let Adam's moments decay into denormals, which cost the CPU a slow path on every
+// operation (8x8 relu trained at 16M sample-steps/s per core instead of 20M). The caller's
+// MXCSR is restored on return.
+struct FlushDenormals {
+  unsigned saved = _mm_getcsr();
+  FlushDenormals() { _mm_setcsr(saved | 0x8040); }
+  ~FlushDenormals() { _mm_setcsr(saved); }
+};
+
 #define SN_KERNEL_SET(NAME, ISA, ATTR, WIDE, VEC)                                                                   \
   template <int H>                                                                                                  \
   ATTR int step_##NAME(const Arena& A, const float* x, const float* y, const uint32_t* rows, int batch,            \
                        const AdamStep& c, const LossArgs& lf, double* l) {                                          \
+    FlushDenormals ftz;                                                                                             \
     return step_impl<ISA, One, H>(View<One>(A), x, y, rows, batch, c, lf, l);                                       \
   }                                                                                                                 \
   template <int H>                                                                                                  \
   ATTR double loss_##NAME(const Arena& A, const float* x, const float* y, std::size_t n, const LossArgs& lf) {      \
+    FlushDenormals ftz;                                                                                             \
     return loss_impl<H>(View<One>(A), x, y, n, lf);                                                                 \
   }                                                                                                                 \
   template <int H>                                                                                                  \
   ATTR void forward_##NAME(const Arena& A, const float* x, std::size_t n, float* out) {                             \
+    FlushDenormals ftz;                                                                                             \
     forward_impl<H>(View<One>(A), x, n, out);                                                                       \
   }                                                                                                                 \
   template <int H>                                                                                                  \
   ATTR void lanes_##NAME(const Arena& A, const float* x, std::size_t n, float* y) {                                 \
+    FlushDenormals ftz;                                                                                             \
     lanes_impl<H, WIDE>(A, x, n, y);                                                                                \
   }                                                                                                                 \
   template <int H>                                                                                                  \
   ATTR void counts_##NAME(const Arena& A, const float* x, std::size_t n, std::vector<std::vector<uint32_t>>& c) {   \
+    FlushDenormals ftz;                                                                                             \
     counts_impl<H>(View<One>(A), x, n, c);                                                                          \
   }                                                                                                                 \
   template <int K>                                                                                                  \
   ATTR void activation_##NAME(float p, const float* z, std::size_t n, float* f, float* df) {                        \
+    FlushDenormals ftz;                                                                                             \
     activation_impl<K, VEC>(p, z, n, f, df);                                                                        \
   }
 
@@ -678,6 +694,7 @@ SN_KERNEL_SET(avx512, Avx512, SN_AVX512, Wide, v16)
 template <int H>
 SN_AVX512 int step_pair(const Arena& A, const float* x, const float* y, const uint32_t* rows, int batch,
                         const AdamStep& c, const LossArgs& lf, double* l) {
+  FlushDenormals ftz;
   return step_impl<Avx512, Pair, H>(View<Pair>(A), x, y, rows, batch, c, lf, l);
 }
 

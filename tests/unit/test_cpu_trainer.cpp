@@ -11,6 +11,8 @@
 #include <stdexcept>
 #include <thread>
 
+#include <xmmintrin.h>
+
 #include "nn/cpu_net.h"
 #include "nn/cpu_trainer.h"
 #include "nn/diagnostics.h"
@@ -261,6 +263,28 @@ TEST(CpuNetPair, OneNetRefusingLeavesTheOtherAsAlone) {
       worse.get_params(got.data());
       EXPECT_EQ(got, bad);
     }
+}
+
+// The kernels flush denormals to zero (a relu net's decaying Adam moments took the slow path),
+// every kernel alike, and leave the caller's floating-point mode as it was.
+TEST(CpuNet, KernelsFlushDenormalsAndRestoreTheCallersMode) {
+  KernelGuard guard;
+  MlpSpec s = spec_of(6, {8}, 3, Activation::leaky_relu);
+  std::vector<float> p(s.param_count(), 0.0f);
+  p[s.weight_offset(1)] = 1e-20f;  // output 0 = 1e-20 x hidden unit 0
+  p[s.weight_offset(0)] = 1.0f;    // hidden unit 0 = input 0
+  const float x[6] = {1e-20f, 0, 0, 0, 0, 0};
+  const unsigned mode = _mm_getcsr();
+  for (const auto& k : cpu_kernels_available()) {
+    use_cpu_kernel(k);
+    CpuNet net(s, p.data());
+    float out[3] = {1, 1, 1};
+    net.forward(x, 1, out);
+    EXPECT_EQ(out[0], 0.0f) << k << ": 1e-40 is a denormal";
+    EXPECT_EQ(_mm_getcsr(), mode) << k;
+  }
+  volatile float tiny = 1e-20f;
+  EXPECT_GT(tiny * tiny, 0.0f);  // this thread still computes denormals
 }
 
 TEST(CpuTrainer, TwoEpochCurvesMatchTheOracle) {
