@@ -24,6 +24,8 @@
 #                   JUnit XML beside the log
 # then OUTDIR/summary.txt (one line per step: status, seconds, limit) and OUTDIR.tar.gz, all of it
 # in one file (a device run returns at most 8 files, each at most 16 MiB, 2 folders deep).
+# Without gnuplot the scripts leave their plots as gnuplot scripts (SHADENET_PLOTS=later):
+# unpack the tarball where gnuplot is and run tools/draw_plots.sh OUTDIR.
 # Benchmarks run one at a time, before the test suite, so that nothing else loads the machine.
 # The limits (SHADENET_LIMIT_<STEP> seconds overrides one) add up to 570 s: one 10-minute call.
 #
@@ -93,6 +95,10 @@ fi
 note() { echo "$*" | tee -a "$summary"; }
 note "tools/gpu_bench.sh$([ $quick = 1 ] && echo " --quick"): $(date -u +%Y-%m-%dT%H:%M:%SZ), commit $(git rev-parse --short HEAD 2>/dev/null || echo '?')"
 failed=0
+if [ "${SHADENET_PLOTS:-}" != later ] && ! command -v gnuplot > /dev/null; then
+  export SHADENET_PLOTS=later
+fi
+[ "${SHADENET_PLOTS:-}" = later ] && note "plots: left as gnuplot scripts (SHADENET_PLOTS=later); draw them with tools/draw_plots.sh"
 
 # step NAME LIMIT COMMAND...: runs COMMAND with output in OUTDIR/NAME.log, within LIMIT seconds.
 step() {
