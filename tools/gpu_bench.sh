@@ -167,11 +167,11 @@ if [ $quick = 1 ]; then
   step table_4_1 60 "$shadenet" scripts/table_4_1_phong.lua --quick --shard 1/24 --backend gl --out "$results/table_4_1_phong"
   step ctest 60 run_ctest
 else
-  step gl_info 30 gl_info
+  step gl_info 15 gl_info
   step train 120 "$shadenet" bench/train_throughput.lua gl "${SHADENET_BENCH_COUNTS:-1,2,8,32,360,1440,5760}"
-  step render 60 "$shadenet" bench/render_throughput.lua 3 gl,cpu
+  step render 90 "$shadenet" bench/render_throughput.lua 3 gl,cpu
   step tables_4_5_4_7 90 "$shadenet" scripts/tables_4_5_4_7_performance.lua --out "$results/tables_4_5_4_7_performance"
-  step table_4_1 120 "$shadenet" scripts/table_4_1_phong.lua --backend gl --out "$results/table_4_1_phong"
+  step table_4_1 105 "$shadenet" scripts/table_4_1_phong.lua --backend gl --out "$results/table_4_1_phong"
   step ctest 135 run_ctest
 fi
 
