@@ -4,11 +4,13 @@
 -- networks (hidden layers x width; tanh, inputs normal + view, RGB out) at 640x480, 960x720,
 -- 1280x720 and 1920x1080, printed beside the thesis' tables 4.6 and 4.7 (a GTX 1060).
 --
---   shadenet bench/render_throughput.lua [repeats] [backends] [weights] [archs]
+--   shadenet bench/render_throughput.lua [repeats] [backends] [weights] [archs] [sizes]
 --     repeats:  timings per cell, the median is printed (default 3)
 --     backends: gl,cpu (default both)
 --     weights:  auto (uniform buffer where it fits, the default) | storage (gl only)
 --     archs:    hidden layers x width, comma separated (default 4x4,8x8,12x12,16x16)
+--     sizes:    image sizes, comma separated (default 640x480,960x720,1280x720,1920x1080, the
+--               thesis' columns; others show no thesis figure)
 --
 -- The G-buffer is a unit sphere seen from 2.7 units (41-55% of the frame covered). A timing is
 -- (t(frames + 1) - t(1)) / frames with `frames` chosen so it lasts about half a second: what a
@@ -57,7 +59,15 @@ end
 local thesis_ms = { ["4x4"] = { 0.879, nil, 1.697, 2.177 }, ["8x8"] = { 4.263, nil, 8.241, 10.067 },
                     ["12x12"] = { 12.754, nil, 24.002, 29.653 }, ["16x16"] = { 29.117, nil, 52.655, 66.710 } }
 local thesis_ns = { ["4x4"] = 15.8, ["8x8"] = 79.3, ["12x12"] = 237.3, ["16x16"] = 538.9 }
-local sizes = { { 640, 480 }, { 960, 720 }, { 1280, 720 }, { 1920, 1080 } }
+local thesis_sizes = { "640x480", "960x720", "1280x720", "1920x1080" }  -- the columns of thesis_ms
+local sizes = {}
+for w, h in (arg[5] or table.concat(thesis_sizes, ",")):gmatch("(%d+)x(%d+)") do sizes[#sizes + 1] = { tonumber(w), tonumber(h) } end
+assert(#sizes > 0, "sizes: expected WxH,WxH,..., got '" .. tostring(arg[5]) .. "'")
+local function thesis_at(name, sz)
+  for i, s in ipairs(thesis_sizes) do
+    if s == sz[1] .. "x" .. sz[2] then return thesis_ms[name] and thesis_ms[name][i] end
+  end
+end
 
 local function median(t)
   table.sort(t)
@@ -127,7 +137,7 @@ for _, a in ipairs(archs) do
   for si = 1, #sizes do
     local parts = {}
     for _, b in ipairs(backends) do parts[#parts + 1] = cell(ms[b][name][si], "%.2f") end
-    parts[#parts + 1] = cell(thesis_ms[name] and thesis_ms[name][si], "%.3f")
+    parts[#parts + 1] = cell(thesis_at(name, sizes[si]), "%.3f")
     row = row .. ("  %28s"):format(table.concat(parts, " | "))
   end
   print(row)

@@ -1,10 +1,12 @@
 # Runs `SHADENET [ARGS] SCRIPT`; passes when it exits non-zero and its output matches every
 # "-- expect: REGEX" line of SCRIPT. "-- args: ..." adds command-line arguments before the script,
-# "-- then-missing: PATH" asserts that PATH does not exist afterwards (no half-written output).
+# "-- then-missing: PATH" asserts that PATH does not exist afterwards (no half-written output),
+# "-- env: NAME=VALUE" sets an environment variable for the run.
 file(STRINGS ${SCRIPT} lines)
 set(expects "")
 set(args "")
 set(missing "")
+set(env "")
 foreach(l ${lines})
   if(l MATCHES "^-- expect: (.*)$")
     list(APPEND expects "${CMAKE_MATCH_1}")
@@ -12,6 +14,8 @@ foreach(l ${lines})
     separate_arguments(args UNIX_COMMAND "${CMAKE_MATCH_1}")
   elseif(l MATCHES "^-- then-missing: (.*)$")
     list(APPEND missing "${CMAKE_MATCH_1}")
+  elseif(l MATCHES "^-- env: (.*)$")
+    list(APPEND env "${CMAKE_MATCH_1}")
   endif()
 endforeach()
 if(NOT expects)
@@ -20,7 +24,7 @@ endif()
 foreach(m ${missing})
   file(REMOVE_RECURSE ${m})
 endforeach()
-execute_process(COMMAND ${SHADENET} ${args} ${SCRIPT} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err
+execute_process(COMMAND ${CMAKE_COMMAND} -E env ${env} ${SHADENET} ${args} ${SCRIPT} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err
                 TIMEOUT 120)
 set(all "${out}${err}")
 if(rc EQUAL 0)

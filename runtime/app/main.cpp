@@ -98,6 +98,10 @@ int main(int argc, char** argv) {
              info.version.c_str());
       return 0;
     }
+    if (opt.gl_info) {
+      printf("shadenet %s\n%s", SHADENET_VERSION, sn::gl::info_text(sn::gl::current().info()).c_str());
+      return 0;
+    }
   } catch (const std::exception& e) {
     fprintf(stderr, "shadenet: %s\n", e.what());
     return 1;

@@ -15,7 +15,10 @@ std::string usage() {
          "                     it uses is saved (sn.keep values survive); Lua lines on stdin run in\n"
          "                     the script's state (see docs/live-mode.md)\n"
          "  --help             print this help\n"
-         "  --version          print the version, GL renderer and GL version\n";
+         "  --version          print the version, GL renderer and GL version\n"
+         "  --gl-info          print the EGL platform and device, the GL renderer and the limits the\n"
+         "                     kernels are sized by (SHADENET_EGL_PLATFORM=auto|device|surfaceless picks\n"
+         "                     the platform; see README.md, \"On a GPU\")\n";
 }
 
 Options parse_options(int argc, char** argv) {
@@ -31,6 +34,7 @@ Options parse_options(int argc, char** argv) {
     }
     if (a == "--help" || a == "-h") o.help = true;
     else if (a == "--version" || a == "-v") o.version = true;
+    else if (a == "--gl-info") o.gl_info = true;
     else if (a == "--window") o.window = true;
     else if (a == "--watch") o.watch = true;
     else if (a == "--size") {
@@ -40,13 +44,13 @@ Options parse_options(int argc, char** argv) {
         throw std::invalid_argument("--size: expected WIDTHxHEIGHT, got '" + v + "'");
       o.size_given = true;
     } else
-      throw std::invalid_argument("unknown option '" + a + "' (valid: --window, --watch, --size, --help, --version)");
+      throw std::invalid_argument("unknown option '" + a + "' (valid: --window, --watch, --size, --help, --version, --gl-info)");
   }
   if (i < argc) {
     o.script = argv[i++];
     for (; i < argc; ++i) o.script_args.push_back(argv[i]);
   }
-  if (o.script.empty() && !o.help && !o.version) throw std::invalid_argument("no script given");
+  if (o.script.empty() && !o.help && !o.version && !o.gl_info) throw std::invalid_argument("no script given");
   return o;
 }
 

@@ -6,7 +6,7 @@
 namespace sn::app {
 
 struct Options {
-  bool help = false, version = false, window = false, watch = false;
+  bool help = false, version = false, gl_info = false, window = false, watch = false;
   int width = 960, height = 720;  // window size; headless --watch: the view's size when given
   bool size_given = false;        // --size was on the command line
   std::string program;  // argv[0]

@@ -9,15 +9,30 @@
 
 namespace sn::gl {
 
+// What the context runs on and the limits shadenet's kernels are sized by; `shadenet --gl-info`
+// prints it (info_text) and sn.gl_info() returns it.
 struct ContextInfo {
-  std::string vendor, renderer, version;
+  std::string vendor, renderer, version, glsl_version;  // GL_VENDOR, GL_RENDERER, GL_VERSION, GLSL
   bool software = false;  // llvmpipe, softpipe, swrast: no hardware GPU
-  int max_shared_memory = 0;  // GL_MAX_COMPUTE_SHARED_MEMORY_SIZE, bytes
+  // How the context was made: "device" or "surfaceless" (EGL, gl/egl_context.cpp) or "window" (GLFW).
+  std::string platform;
+  std::string egl_vendor, egl_version;  // of the EGL display ("" in a window)
+  std::string egl_device_extensions;    // of the EGL device ("" on the surfaceless platform)
+  std::string egl_device_file;          // its DRM device file or render node, when it has one
+  int max_shared_memory = 0;            // GL_MAX_COMPUTE_SHARED_MEMORY_SIZE, bytes
+  int max_workgroup_size[3] = {0, 0, 0};  // GL_MAX_COMPUTE_WORK_GROUP_SIZE
+  int max_workgroup_invocations = 0;      // GL_MAX_COMPUTE_WORK_GROUP_INVOCATIONS
+  long long max_ssbo_size = 0;            // GL_MAX_SHADER_STORAGE_BLOCK_SIZE, bytes
+  int max_uniform_block_size = 0;         // GL_MAX_UNIFORM_BLOCK_SIZE, bytes
 };
+
+// ContextInfo as "name: value" lines, the output of `shadenet --gl-info`.
+std::string info_text(const ContextInfo& info);
 
 class Context {
  public:
-  // EGL surfaceless (Mesa) or EGL device (NVIDIA) context; throws with a reason on failure.
+  // EGL device (a GPU's driver first) or surfaceless (Mesa) context, SHADENET_EGL_PLATFORM=
+  // auto|device|surfaceless picks (gl/egl_context.cpp); throws with a reason on failure.
   static std::unique_ptr<Context> headless();
   // A visible GLFW window of the given size; throws when no display can be opened.
   static std::unique_ptr<Context> window(int width, int height, const std::string& title);

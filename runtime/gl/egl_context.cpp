@@ -1,42 +1,125 @@
-// Headless context: EGL with no surface. Mesa offers EGL_PLATFORM_SURFACELESS_MESA (llvmpipe
-// without a GPU); NVIDIA's driver offers EGL_PLATFORM_DEVICE_EXT. Either gives GL 4.5 core.
+// Headless context: EGL with no surface, on one of two platforms (SHADENET_EGL_PLATFORM):
+//   auto (default)  a hardware EGL device first (NVIDIA's driver; Mesa on a GPU), then Mesa's
+//                   surfaceless platform, then a software EGL device. Surfaceless first would
+//                   take llvmpipe on a GPU machine whenever glvnd loads Mesa beside the driver.
+//   device          EGL devices only, hardware first: on a machine without a GPU this is Mesa's
+//                   software device (EGL_MESA_device_software), which runs the device path on
+//                   llvmpipe so that the tests exercise it.
+//   surfaceless     Mesa's surfaceless platform only.
+// Each gives GL 4.5 core; ContextInfo says which platform and device were taken.
 #include <epoxy/egl.h>
 #include <epoxy/gl.h>
 
+#include <algorithm>
+#include <cstdlib>
+#include <sstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "gl/context.h"
+
+#ifndef EGL_DRM_RENDER_NODE_FILE_EXT
+#define EGL_DRM_RENDER_NODE_FILE_EXT 0x3377  // EGL_EXT_device_drm_render_node; epoxy 1.5 lacks it
+#endif
 
 namespace sn::gl {
 
 namespace {
+
+bool has_word(const std::string& list, const std::string& word) {
+  std::istringstream in(list);
+  std::string w;
+  while (in >> w)
+    if (w == word) return true;
+  return false;
+}
+
+std::string device_string(EGLDeviceEXT device, EGLint name) {
+  const char* s = eglQueryDeviceStringEXT(device, name);
+  return s ? s : "";
+}
+
+// One way to a display: an EGL device, or the surfaceless platform (device == nullptr).
+struct Candidate {
+  EGLDeviceEXT device = nullptr;
+  std::string extensions, file;  // the device's extensions and DRM device file ("" when none)
+  bool software = false;         // Mesa's software device (llvmpipe)
+};
+
+// Every EGL device, hardware ones first (in the driver's order).
+std::vector<Candidate> egl_devices() {
+  std::vector<Candidate> out;
+  if (!epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_EXT_platform_device") ||
+      !epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_EXT_device_enumeration"))
+    return out;
+  EGLDeviceEXT devices[16];
+  EGLint count = 0;
+  if (!eglQueryDevicesEXT(16, devices, &count)) return out;
+  for (EGLint i = 0; i < count; ++i) {
+    Candidate c;
+    c.device = devices[i];
+    c.extensions = device_string(devices[i], EGL_EXTENSIONS);
+    c.software = has_word(c.extensions, "EGL_MESA_device_software");
+    if (has_word(c.extensions, "EGL_EXT_device_drm")) c.file = device_string(devices[i], EGL_DRM_DEVICE_FILE_EXT);
+    if (c.file.empty() && has_word(c.extensions, "EGL_EXT_device_drm_render_node"))
+      c.file = device_string(devices[i], EGL_DRM_RENDER_NODE_FILE_EXT);
+    out.push_back(c);
+  }
+  std::stable_partition(out.begin(), out.end(), [](const Candidate& c) { return !c.software; });
+  return out;
+}
+
+// The candidates SHADENET_EGL_PLATFORM allows, in the order they are tried.
+std::vector<Candidate> candidates(const std::string& choice) {
+  const bool surfaceless = epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_MESA_platform_surfaceless");
+  std::vector<Candidate> devices = egl_devices(), out;
+  if (choice == "device") return devices;
+  if (choice == "surfaceless") return surfaceless ? std::vector<Candidate>{Candidate{}} : out;
+  for (const auto& d : devices)
+    if (!d.software) out.push_back(d);
+  if (surfaceless) out.push_back(Candidate{});
+  for (const auto& d : devices)
+    if (d.software) out.push_back(d);
+  return out;
+}
+
+std::string platform_choice() {
+  const char* env = std::getenv("SHADENET_EGL_PLATFORM");
+  std::string choice = env && *env ? env : "auto";
+  if (choice != "auto" && choice != "device" && choice != "surfaceless")
+    throw std::runtime_error("SHADENET_EGL_PLATFORM='" + choice + "': unknown EGL platform (valid: auto, device, surfaceless)");
+  return choice;
+}
 
 class EglContext final : public Context {
  public:
   EglContext() {
     if (!epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_EXT_platform_base"))
       throw std::runtime_error("EGL: EGL_EXT_platform_base is missing (is libegl-mesa0 installed?)");
+    const std::string choice = platform_choice();
     std::string tried;
-    if (epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_MESA_platform_surfaceless")) {
-      display_ = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
-      tried += " surfaceless";
-      if (display_ != EGL_NO_DISPLAY && !eglInitialize(display_, nullptr, nullptr)) display_ = EGL_NO_DISPLAY;
-    }
-    if (display_ == EGL_NO_DISPLAY && epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_EXT_platform_device")) {
-      EGLDeviceEXT devices[8];
-      EGLint count = 0;
-      tried += " device";
-      if (eglQueryDevicesEXT(8, devices, &count) && count > 0) {
-        for (EGLint i = 0; i < count && display_ == EGL_NO_DISPLAY; ++i) {
-          display_ = eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr);
-          if (display_ != EGL_NO_DISPLAY && !eglInitialize(display_, nullptr, nullptr)) display_ = EGL_NO_DISPLAY;
-        }
+    for (const Candidate& c : candidates(choice)) {
+      display_ = c.device ? eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, c.device, nullptr)
+                          : eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+      tried += c.device ? (c.software ? " device(software)" : " device(" + (c.file.empty() ? "hardware" : c.file) + ")")
+                        : " surfaceless";
+      if (display_ != EGL_NO_DISPLAY && eglInitialize(display_, nullptr, nullptr)) {
+        info_.platform = c.device ? "device" : "surfaceless";
+        info_.egl_device_extensions = c.extensions;
+        info_.egl_device_file = c.file;
+        break;
       }
+      display_ = EGL_NO_DISPLAY;
     }
     if (display_ == EGL_NO_DISPLAY)
-      throw std::runtime_error("EGL: no display could be initialised (tried:" + tried +
-                               "); install libegl-mesa0 and libgl1-mesa-dri");
+      throw std::runtime_error("EGL: no display could be initialised (SHADENET_EGL_PLATFORM=" + choice + ", tried:" +
+                               (tried.empty() ? " nothing: no EGL device and no surfaceless platform" : tried) +
+                               "); install libegl-mesa0 and libgl1-mesa-dri, or the GPU's driver");
+    const char* vendor = eglQueryString(display_, EGL_VENDOR);
+    const char* version = eglQueryString(display_, EGL_VERSION);
+    info_.egl_vendor = vendor ? vendor : "";
+    info_.egl_version = version ? version : "";
     if (!eglBindAPI(EGL_OPENGL_API)) throw std::runtime_error("EGL: OpenGL API not available");
 
     EGLConfig config = nullptr;

@@ -34,6 +34,7 @@ class GlfwWindow final : public Context {
     }
     glfwMakeContextCurrent(window_);
     glfwSwapInterval(1);
+    info_.platform = "window";
     query_info();
   }
   ~GlfwWindow() override {

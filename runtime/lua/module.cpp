@@ -64,7 +64,7 @@ void install(lua_State* L) {
   // package.preload["shadenet.core"] = the C table; the embedded shadenet.lua requires it.
   lua_getglobal(L, "package");
   lua_getfield(L, -1, "preload");
-  lua_pushcfunction(L, open_core);
+  lua_pushcfunction(L, wrap<open_core>);  // a context that cannot be made is a Lua error, not a crash
   lua_setfield(L, -2, "shadenet.core");
   lua_pop(L, 1);
   lua_getfield(L, -1, "loaders");

@@ -11,14 +11,23 @@ namespace sn::lua {
 
 namespace {
 
+// The same ContextInfo that `shadenet --gl-info` prints (gl::info_text).
 int w_gl_info(lua_State* L) {
   const auto& i = gl::current().info();
-  lua_createtable(L, 0, 5);
-  lua_pushstring(L, i.vendor.c_str()), lua_setfield(L, -2, "vendor");
-  lua_pushstring(L, i.renderer.c_str()), lua_setfield(L, -2, "renderer");
-  lua_pushstring(L, i.version.c_str()), lua_setfield(L, -2, "version");
+  auto str = [L](const char* k, const std::string& v) { lua_pushstring(L, v.c_str()), lua_setfield(L, -2, k); };
+  auto num = [L](const char* k, double v) { lua_pushnumber(L, v), lua_setfield(L, -2, k); };
+  lua_createtable(L, 0, 16);
+  str("vendor", i.vendor), str("renderer", i.renderer), str("version", i.version), str("glsl_version", i.glsl_version);
   lua_pushboolean(L, i.software), lua_setfield(L, -2, "software");
-  lua_pushinteger(L, i.max_shared_memory), lua_setfield(L, -2, "max_shared_memory");
+  str("platform", i.platform), str("egl_vendor", i.egl_vendor), str("egl_version", i.egl_version);
+  str("egl_device_extensions", i.egl_device_extensions), str("egl_device_file", i.egl_device_file);
+  num("max_shared_memory", i.max_shared_memory);
+  lua_createtable(L, 3, 0);
+  for (int k = 0; k < 3; ++k) lua_pushinteger(L, i.max_workgroup_size[k]), lua_rawseti(L, -2, k + 1);
+  lua_setfield(L, -2, "max_workgroup_size");
+  num("max_workgroup_invocations", i.max_workgroup_invocations);
+  num("max_ssbo_size", double(i.max_ssbo_size));  // may exceed 2^31 on a GPU: a double holds it exactly
+  num("max_uniform_block_size", i.max_uniform_block_size);
   return 1;
 }
 

@@ -622,7 +622,7 @@ function E:plot(rel, p)
   p.path = self.R:path(rel)
   local path, dropped = plot.lines(p)
   local w = self.R.written
-  w[#w + 1] = rel
+  w[#w + 1] = path:match("%.gp$") and (rel:gsub("%.png$", ".gp")) or rel  -- SHADENET_PLOTS=later: the script
   w[#w + 1] = (rel:gsub("%.png$", ".csv"))
   if dropped > 0 then
     io.stderr:write(string.format("%s: %s: %d non-finite points left out of the plot\n", self.name, rel, dropped))

@@ -7,11 +7,25 @@ local plot = {}
 
 local function q(s) return '"' .. tostring(s):gsub('\\', '\\\\'):gsub('"', '\\"') .. '"' end
 
+-- SHADENET_PLOTS=later writes each plot's CSV and gnuplot script but does not run gnuplot (a
+-- machine without it: a lent GPU); tools/draw_plots.sh DIR draws them afterwards. The script
+-- names its files without a folder and runs in the plot's folder, so it draws wherever it lies.
+local function plots_later()
+  local v = os.getenv("SHADENET_PLOTS") or ""
+  if v ~= "" and v ~= "now" and v ~= "later" then
+    error("SHADENET_PLOTS='" .. v .. "': unknown value (valid: now, later)", 0)
+  end
+  return v == "later"
+end
+local later = plots_later()  -- checked when a script starts, not after its work
+
 local function run_gnuplot(script, png)
   local gp = png:gsub("%.png$", "") .. ".gp"
   results.write_file(gp, script)
+  if later then return nil end
+  local dir, name = gp:match("^(.*)/([^/]*)$")
   local log = os.tmpname()
-  local status = os.execute("gnuplot " .. string.format("%q", gp) .. " > " .. log .. " 2>&1")
+  local status = os.execute(string.format("cd %q && gnuplot %q > %s 2>&1", dir or ".", name or gp, log))
   local out = results.read_file(log) or ""
   os.remove(log)
   -- LuaJIT returns the raw status (0 = success); Lua 5.2 semantics return true.
@@ -27,11 +41,13 @@ local styles = { lines = "lines lw 2", linespoints = "linespoints lw 2 pt %d ps 
 --             key = "top right", series = { {name, x = {...}, y = {...}, style = "lines",
 --             color = "#rrggbb", dash = 2, point = 6, labels = {...}}, ... } } -> path of the PNG
 -- Non-finite y values are dropped (gnuplot cannot draw them) and counted in the returned
--- second value, so a diverged curve shows as a gap, never as a silent zero.
+-- second value, so a diverged curve shows as a gap, never as a silent zero. With
+-- SHADENET_PLOTS=later the first value is the gnuplot script's path: no PNG yet.
 function plot.lines(p)
   assert(p.path and p.path:match("%.png$"), "plot.lines: path must end in .png")
   assert(p.series and #p.series > 0, "plot.lines: no series")
   local csv_path = p.path:gsub("%.png$", ".csv")
+  local png_name, csv_name = p.path:match("[^/]*$"), csv_path:match("[^/]*$")  -- gnuplot runs in their folder
   local lines = { "series,x,y,label" }
   local dropped = 0
   for _, s in ipairs(p.series) do
@@ -52,7 +68,7 @@ function plot.lines(p)
 
   local g = {
     string.format("set terminal pngcairo size %d,%d font 'DejaVu Sans,10' enhanced", p.width or 800, p.height or 520),
-    "set output " .. q(p.path .. ".tmp.png"),
+    "set output " .. q(png_name .. ".tmp.png"),
     "set datafile separator ','",
     "set key " .. (p.key or "top right") .. " box opaque",
     "set grid xtics ytics lc rgb '#dddddd'",
@@ -73,15 +89,15 @@ function plot.lines(p)
                                                       "' (valid: lines, linespoints, points)", 0)
     style = style:gsub("%%d", tostring(s.point or 7))  -- gnuplot point type: 7 disc, 6 circle, 4 square, ...
     local color = (s.color and (" lc rgb " .. q(s.color)) or "") .. (s.dash and (" dt " .. s.dash) or "")
-    parts[#parts + 1] = string.format("%s skip 1 using 2:%s with %s%s title %s", q(csv_path), sel, style, color, q(s.name))
+    parts[#parts + 1] = string.format("%s skip 1 using 2:%s with %s%s title %s", q(csv_name), sel, style, color, q(s.name))
     if s.labels then
       parts[#parts + 1] = string.format("%s skip 1 using 2:%s:4 with labels offset 0.6,0.6 left font ',8' notitle",
-                                        q(csv_path), sel)
+                                        q(csv_name), sel)
     end
   end
   g[#g + 1] = "plot " .. table.concat(parts, ", \\\n     ")
   g[#g + 1] = "unset output"
-  run_gnuplot(table.concat(g, "\n") .. "\n", p.path)
+  if not run_gnuplot(table.concat(g, "\n") .. "\n", p.path) then return (p.path:gsub("%.png$", ".gp")), dropped end
   local ok, err = os.rename(p.path .. ".tmp.png", p.path)
   if not ok then error("cannot write " .. p.path .. ": " .. tostring(err), 0) end
   return p.path, dropped
