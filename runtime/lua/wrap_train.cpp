@@ -1,12 +1,14 @@
 // sn.train{...}: one training job over many networks (nn/train.h). Everything is checked before
 // any work; the result is one table per network, in the order of `nets`.
 #include <atomic>
+#include <cmath>
 #include <cstdio>
 
 #include "lua/binding.h"
 #include "lua/interrupt.h"
 #include "lua/module.h"
 #include "data/dataset.h"
+#include "io/text.h"
 #include "nn/train.h"
 
 namespace sn::lua {
@@ -73,7 +75,7 @@ void push_result(lua_State* L, const nn::NetResult& r, const nn::JobResult& job)
 }
 
 // sn.train{ nets = {net, ...} | net, data = dataset, epochs = 20, batch = 8,
-//           adam = { lr = 2.5e-4, beta1 = 0.8, beta2 = 0.9, eps = 1e-7 }, seed = 1,
+//           adam = { lr = 2.5e-4, beta1 = 0.8, beta2 = 0.9, eps = 1e-7 }, seed = 1 | {seed per net},
 //           backend = "auto" | "cpu" | "gl", keep = "last" | "best", progress = function(e),
 //           tick = function(t), tick_seconds = 0.1,
 //           loss = "l2" | "l1" | "relative_l2" | "huber" | { "huber", delta = 1 },
@@ -138,9 +140,24 @@ int w_train(lua_State* L) {
   nn::TrainConfig& c = job.config;
   c.epochs = o.int32("epochs", c.epochs);
   c.batch = o.int32("batch", c.batch);
-  const long long seed = o.integer("seed", c.seed);
-  if (seed < 0 || seed > 0xffffffffll) throw Error("sn.train option 'seed' must be in 0..4294967295");
-  c.seed = uint32_t(seed);
+  // The shuffle seed: one for every net, or a table with each net's own.
+  auto as_seed = [](double v, const std::string& what) {
+    if (!(v >= 0 && v <= 4294967295.0 && v == std::floor(v)))
+      throw Error(what + " must be an integer in 0..4294967295, got " + io::number_text(v));
+    return uint32_t(v);
+  };
+  if (lua_istable(L, o.push("seed"))) {
+    const std::vector<double> seeds = o.numbers("seed");
+    if (seeds.size() != job.nets.size())
+      throw Error("sn.train option 'seed': one seed per net, got " + std::to_string(seeds.size()) + " for " +
+                  std::to_string(job.nets.size()) + " nets");
+    for (std::size_t i = 0; i < seeds.size(); ++i)
+      c.seeds.push_back(as_seed(seeds[i], "sn.train option 'seed' entry " + std::to_string(i + 1)));
+    c.seed = c.seeds.empty() ? c.seed : c.seeds[0];
+  } else {
+    c.seed = as_seed(double(o.integer("seed", c.seed)), "sn.train option 'seed'");
+  }
+  lua_pop(L, 1);
   int adam = o.push("adam");
   if (!lua_isnil(L, adam)) {
     Options a(L, adam, "sn.train option 'adam'", {"lr", "beta1", "beta2", "eps"});

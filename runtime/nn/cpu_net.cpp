@@ -286,18 +286,25 @@ struct Gradient {
   }
 };
 
+// Which rows each network of a view reads: rows[h][first + s] for network h's sample s (each
+// its own minibatch: a pair's networks may shuffle with different seeds), or, where rows[h] is
+// null, row first + s.
+using RowLists = const uint32_t* const*;
+SN_INLINE std::size_t row_of(RowLists rows, int h, std::size_t i) { return rows[h] ? rows[h][i] : i; }
+constexpr const uint32_t* kContiguous[2] = {nullptr, nullptr};
+
 // Loads rows into layer 0's activations (input i of sample s at [i][s], for each network of
 // the mode); samples >= n are 0.
 template <class Mode>
-SN_INLINE void gather_inputs(const View<Mode>& V, const float* x, const uint32_t* rows, std::size_t first, int n) {
+SN_INLINE void gather_inputs(const View<Mode>& V, const float* x, RowLists rows, std::size_t first, int n) {
   constexpr int k = Mode::kPar, lanes = kLanesOf<Mode>;
   const int inputs = V.S.in[0];
   float* a0 = reinterpret_cast<float*>(V.act(0));
-  for (int s = 0; s < Mode::kSamples; ++s) {
-    const float* xr = s < n ? x + std::size_t(rows ? rows[first + s] : first + s) * inputs : nullptr;
-    for (int i = 0; i < inputs; ++i)
-      for (int h = 0; h < k; ++h) a0[i * lanes + s * k + h] = xr ? xr[i] : 0.0f;
-  }
+  for (int s = 0; s < Mode::kSamples; ++s)
+    for (int h = 0; h < k; ++h) {
+      const float* xr = s < n ? x + row_of(rows, h, first + s) * inputs : nullptr;
+      for (int i = 0; i < inputs; ++i) a0[i * lanes + s * k + h] = xr ? xr[i] : 0.0f;
+    }
 }
 
 // The forward pass; kTrain also stores f'(z) where backpropagation needs it: for hidden kinds
@@ -372,13 +379,10 @@ SN_INLINE void loss_both(const LossArgs& L, const Vec& e, const Vec& t, Vec& lv,
 
 // Target rows as lanes (0 beyond n) and the lane mask.
 template <class Mode>
-SN_INLINE typename Mode::V gather_target(const float* y, int outputs, int o, const uint32_t* rows, std::size_t first,
-                                         int n) {
+SN_INLINE typename Mode::V gather_target(const float* y, int outputs, int o, RowLists rows, std::size_t first, int n) {
   typename Mode::V t = splat<typename Mode::V>(0.0f);
-  for (int s = 0; s < n; ++s) {
-    const float v = y[std::size_t(rows ? rows[first + s] : first + s) * outputs + o];
-    for (int h = 0; h < Mode::kPar; ++h) t[s * Mode::kPar + h] = v;
-  }
+  for (int s = 0; s < n; ++s)
+    for (int h = 0; h < Mode::kPar; ++h) t[s * Mode::kPar + h] = y[row_of(rows, h, first + s) * outputs + o];
   return t;
 }
 template <class Mode>
@@ -389,7 +393,7 @@ SN_INLINE mask_of<typename Mode::V> lane_mask(int n) {
 }
 
 template <class Isa, class Mode, int H>
-SN_INLINE int step_impl(const View<Mode>& V, const float* x, const float* y, const uint32_t* rows, int batch,
+SN_INLINE int step_impl(const View<Mode>& V, const float* x, const float* y, RowLists rows, int batch,
                         const AdamStep& c, const LossArgs& lf, double* loss_out) {
   using Vec = typename Mode::V;
   using E = typename Mode::E;
@@ -516,13 +520,13 @@ SN_INLINE double loss_impl(const View<Mode>& V, const float* x, const float* y, 
   double sum = 0;
   for (std::size_t first = 0; first < count; first += Mode::kSamples) {
     const int n = count - first < std::size_t(Mode::kSamples) ? int(count - first) : Mode::kSamples;
-    gather_inputs<Mode>(V, x, nullptr, first, n);
+    gather_inputs<Mode>(V, x, kContiguous, first, n);
     forward_block<H, Mode>(V);
     const auto mask = lane_mask<Mode>(n);
     const Vec* yhat = V.act(S.L);
     Vec sq = splat<Vec>(0.0f);
     for (int o = 0; o < outputs; ++o) {
-      const Vec t = gather_target<Mode>(y, outputs, o, nullptr, first, n);
+      const Vec t = gather_target<Mode>(y, outputs, o, kContiguous, first, n);
       Vec diff = yhat[o] - t;
       diff = mask ? diff : splat<Vec>(0.0f);
       Vec lv, lg;
@@ -541,7 +545,7 @@ SN_INLINE void forward_impl(const View<Mode>& V, const float* x, std::size_t cou
   constexpr int B = Mode::kSamples;
   for (std::size_t first = 0; first < count; first += B) {
     const int n = count - first < std::size_t(B) ? int(count - first) : B;
-    gather_inputs<Mode>(V, x, nullptr, first, n);
+    gather_inputs<Mode>(V, x, kContiguous, first, n);
     forward_block<H, Mode>(V);
     const float* yhat = reinterpret_cast<const float*>(V.act(S.L));
     for (int s = 0; s < n; ++s)
@@ -584,7 +588,7 @@ SN_INLINE void counts_impl(const View<Mode>& V, const float* x, std::size_t coun
   std::vector<int32_t> hits(units * lanes, 0);
   for (std::size_t first = 0; first < count; first += Mode::kSamples) {
     const int n = count - first < std::size_t(Mode::kSamples) ? int(count - first) : Mode::kSamples;
-    gather_inputs<Mode>(V, x, nullptr, first, n);
+    gather_inputs<Mode>(V, x, kContiguous, first, n);
     forward_block<H, Mode, true>(V);
     const Mask valid = lane_mask<Mode>(n);
     std::size_t u = 0;
@@ -633,7 +637,7 @@ SN_INLINE void activation_impl(float p, const float* z, std::size_t n, float* f,
 // The entry points per instruction set; everything above inlines into them. One set per
 // kernel: ISA (the tag), ATTR (the function target), WIDE (the inference mode), VEC (the
 // activation test's vectors).
-using StepFn = int (*)(const Arena&, const float*, const float*, const uint32_t*, int, const AdamStep&, const LossArgs&,
+using StepFn = int (*)(const Arena&, const float*, const float*, RowLists, int, const AdamStep&, const LossArgs&,
                        double*);
 using LossFn = double (*)(const Arena&, const float*, const float*, std::size_t, const LossArgs&);
 using ForwardFn = void (*)(const Arena&, const float*, std::size_t, float*);
@@ -653,7 +657,7 @@ struct FlushDenormals {
 
 #define SN_KERNEL_SET(NAME, ISA, ATTR, WIDE, VEC)                                                                   \
   template <int H>                                                                                                  \
-  ATTR int step_##NAME(const Arena& A, const float* x, const float* y, const uint32_t* rows, int batch,            \
+  ATTR int step_##NAME(const Arena& A, const float* x, const float* y, RowLists rows, int batch,                   \
                        const AdamStep& c, const LossArgs& lf, double* l) {                                          \
     FlushDenormals ftz;                                                                                             \
     return step_impl<ISA, One, H>(View<One>(A), x, y, rows, batch, c, lf, l);                                       \
@@ -692,7 +696,7 @@ SN_KERNEL_SET(avx512, Avx512, SN_AVX512, Wide, v16)
 
 // Two networks in lock-step (AVX-512 only).
 template <int H>
-SN_AVX512 int step_pair(const Arena& A, const float* x, const float* y, const uint32_t* rows, int batch,
+SN_AVX512 int step_pair(const Arena& A, const float* x, const float* y, RowLists rows, int batch,
                         const AdamStep& c, const LossArgs& lf, double* l) {
   FlushDenormals ftz;
   return step_impl<Avx512, Pair, H>(View<Pair>(A), x, y, rows, batch, c, lf, l);
@@ -863,7 +867,9 @@ bool CpuNet::step(const float* x, const float* y, const uint32_t* rows, int batc
                   double* loss, DivergenceKind* why) {
   LossArgs lf{loss_.kind, float(loss_.delta)};
   lf.sample_limit[0] = sample_limit_;
-  if (!applied(kernels(layout_->hidden).step(whole(*layout_, arena_, cur_), x, y, rows, batch, adam, lf, loss), why)) return false;
+  const uint32_t* lists[1] = {rows};
+  if (!applied(kernels(layout_->hidden).step(whole(*layout_, arena_, cur_), x, y, lists, batch, adam, lf, loss), why))
+    return false;
   cur_ ^= 1;
   return true;
 }
@@ -916,7 +922,7 @@ CpuNetPair::CpuNetPair(const CpuNet& a, const CpuNet& b) : layout_(std::make_uni
 
 CpuNetPair::~CpuNetPair() { std::free(arena_); }
 
-bool CpuNetPair::step(const float* x, const float* y, const uint32_t* rows, int batch, const AdamStep& adam,
+bool CpuNetPair::step(const float* x, const float* y, const uint32_t* const rows[2], int batch, const AdamStep& adam,
                       double loss[2], bool ok[2], DivergenceKind why[2]) {
   LossArgs lf{loss_.kind, float(loss_.delta)};
   lf.sample_limit[0] = limits_[0];

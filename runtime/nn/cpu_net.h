@@ -3,8 +3,8 @@
 // a multiple of 8 floats so the gradient and Adam loops run on whole registers. The kernels are
 // compiled three times, for x86-64 baseline (SSE2), AVX2+FMA and AVX-512, and the widest the
 // CPU has is picked at run time. The AVX-512 kernel fills its 16 lanes with two networks'
-// minibatches of 8 (CpuNetPair: a sweep trains many networks of one architecture on the same
-// rows), with 16 samples of one network for inference, and with 16 parameters for Adam.
+// minibatches of 8 (CpuNetPair: a sweep trains many networks of one architecture), with 16
+// samples of one network for inference, and with 16 parameters for Adam.
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -95,8 +95,8 @@ class CpuNet {
   float sample_limit_ = std::numeric_limits<float>::infinity();
 };
 
-// Two networks of one architecture and loss, trained in lock-step on the same minibatches by
-// the AVX-512 kernel, 8 samples of each per register. Each network's parameters, losses and
+// Two networks of one architecture and loss, trained in lock-step by the AVX-512 kernel, 8
+// samples of each per register. Each network's parameters, losses and
 // verdicts are bit for bit what CpuNet::step gives it alone (the tests hold them to that).
 class CpuNetPair {
  public:
@@ -107,10 +107,11 @@ class CpuNetPair {
   CpuNetPair(const CpuNetPair&) = delete;
   CpuNetPair& operator=(const CpuNetPair&) = delete;
 
-  // CpuNet::step for both: loss[h], ok[h] and why[h] per network. Returns true when both steps
-  // applied; otherwise neither is applied here, and the pair must be split: get(h, net, ok[h]).
-  bool step(const float* x, const float* y, const uint32_t* rows, int batch, const AdamStep& adam, double loss[2],
-            bool ok[2], DivergenceKind why[2]);
+  // CpuNet::step for both, network h on its own minibatch rows[h] (the same rows, or each
+  // shuffled by its own seed): loss[h], ok[h] and why[h] per network. Returns true when both
+  // steps applied; otherwise neither is applied here, and the pair must be split: get(h, net, ok[h]).
+  bool step(const float* x, const float* y, const uint32_t* const rows[2], int batch, const AdamStep& adam,
+            double loss[2], bool ok[2], DivergenceKind why[2]);
   // Network h's state (parameters, Adam's moments, the last gradient) into `net`; `written`:
   // the parameters the last, refused step wrote (where network h's own step applied).
   void get(int h, CpuNet& net, bool written = false) const;

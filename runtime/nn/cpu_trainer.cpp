@@ -72,7 +72,7 @@ struct Unit {
   std::unique_ptr<CpuNetPair> pair;
 };
 
-// Pairs nets of one architecture and loss on the same rows, where the kernel has the pair mode,
+// Pairs nets of one architecture and loss (each on its own minibatches), where the kernel has the pair mode,
 // as long as every thread still gets a unit: two nets on two threads train faster apart.
 std::vector<Unit> plan_units(const std::vector<std::unique_ptr<CpuNet>>& work,
                              const std::vector<const EncodedRows*>& rows_of, int threads) {
@@ -102,6 +102,7 @@ class CpuBackend : public Backend {
   explicit CpuBackend(int threads) : threads_(threads > 0 ? threads : default_threads()) {}
 
   std::string name() const override { return "cpu"; }
+  bool mixes_seeds() const override { return true; }
   std::string device() const override {
     return cpu_model() + ", " + std::to_string(threads_) + " threads, " + cpu_kernel_name() + " kernel";
   }
@@ -140,14 +141,25 @@ class CpuBackend : public Backend {
 
     const uint32_t n = uint32_t(data.train_count());
     const long long steps = n / uint32_t(cfg.batch);
-    std::vector<uint32_t> rows(static_cast<std::size_t>(steps * cfg.batch));
+    // Each distinct shuffle seed's order of the epoch's rows, and which one each net reads.
+    std::vector<uint32_t> seeds;
+    std::vector<std::size_t> order_of(static_cast<std::size_t>(count));
+    for (int i = 0; i < count; ++i) {
+      const uint32_t seed = cfg.seed_of(std::size_t(i));
+      order_of[i] = std::size_t(std::find(seeds.begin(), seeds.end(), seed) - seeds.begin());
+      if (order_of[i] == seeds.size()) seeds.push_back(seed);
+    }
+    std::vector<std::vector<uint32_t>> orders(seeds.size(), std::vector<uint32_t>(std::size_t(steps * cfg.batch)));
     std::vector<AdamStep> adam(static_cast<std::size_t>(steps));
     long long t = 0;  // Adam's step counter, the same for every net of the run
     WatchBeat beat(cfg.tick ? cfg.tick_seconds : 1.0);  // the tick's, across epochs
     for (int e = 0; e < cfg.epochs; ++e) {
       if (cfg.stop_requested()) break;
-      EpochShuffle perm(cfg.seed, uint32_t(e), n);
-      for (std::size_t k = 0; k < rows.size(); ++k) rows[k] = perm(uint32_t(k));
+      for (std::size_t j = 0; j < seeds.size(); ++j) {
+        EpochShuffle perm(seeds[j], uint32_t(e), n);
+        for (std::size_t k = 0; k < orders[j].size(); ++k) orders[j][k] = perm(uint32_t(k));
+      }
+      auto rows_at = [&](int i, long long s) { return orders[order_of[i]].data() + s * cfg.batch; };
       for (long long s = 0; s < steps; ++s) adam[std::size_t(s)] = AdamStep::at(cfg, ++t);
 
       std::vector<char> finished(static_cast<std::size_t>(count), 0);
@@ -188,8 +200,8 @@ class CpuBackend : public Backend {
           if (cfg.stop_requested()) return interrupt(i, s);
           double loss;
           DivergenceKind why = DivergenceKind::nonfinite;
-          const bool ok = net.step(rows_of[i]->train, data.train_y.data(), rows.data() + s * cfg.batch, cfg.batch,
-                                   adam[std::size_t(s)], &loss, &why);
+          const bool ok =
+              net.step(rows_of[i]->train, data.train_y.data(), rows_at(i, s), cfg.batch, adam[std::size_t(s)], &loss, &why);
           if (!take(i, s, ok, loss, why, sum)) return;
         }
         end_epoch(i, sum);
@@ -209,8 +221,9 @@ class CpuBackend : public Backend {
           double loss[2];
           bool ok[2];
           DivergenceKind why[2] = {DivergenceKind::nonfinite, DivergenceKind::nonfinite};
-          if (!unit.pair->step(rows_of[unit.net[0]]->train, data.train_y.data(), rows.data() + s * cfg.batch, cfg.batch,
-                               adam[std::size_t(s)], loss, ok, why)) {
+          const uint32_t* rows[2] = {rows_at(unit.net[0], s), rows_at(unit.net[1], s)};
+          if (!unit.pair->step(rows_of[unit.net[0]]->train, data.train_y.data(), rows, cfg.batch, adam[std::size_t(s)],
+                               loss, ok, why)) {
             // A net diverged: the pair splits, and the other one goes on alone.
             for (int h = 0; h < 2; ++h) unit.pair->get(h, *work[unit.net[h]], ok[h]);
             unit.pair.reset();

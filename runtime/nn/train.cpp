@@ -101,6 +101,8 @@ void validate(const TrainJob& job) {
     fail("tick_seconds must be in (0, 3600], got " + io::number_text(c.tick_seconds));
   if (d.train_count() < 1) fail("the dataset has no training rows");
   if (d.val_count() < 1) fail("the dataset has no validation rows (split must leave some, e.g. split = 0.8)");
+  if (!c.seeds.empty() && c.seeds.size() != job.nets.size())
+    fail("seeds: one per net, got " + to_string(c.seeds.size()) + " for " + to_string(job.nets.size()) + " nets");
   if (std::size_t(c.batch) > d.train_count())
     fail("batch " + to_string(c.batch) + " is larger than the training set (" + to_string(d.train_count()) +
          " rows)");
@@ -176,6 +178,38 @@ std::string resolve_backend(const std::string& requested, std::string* reason, c
   return "gl";
 }
 
+namespace {
+// A backend that takes one shuffle seed per call (Backend::mixes_seeds) trains each seed's
+// nets in a call of their own, in the order of their first net.
+std::vector<NetResult> train_by_seed(Backend& backend, const std::vector<const Mlp*>& nets, const data::Dataset& d,
+                                     const TrainConfig& cfg, const Progress& progress) {
+  std::vector<NetResult> out(nets.size());
+  std::vector<char> done(nets.size(), 0);
+  for (std::size_t i = 0; i < nets.size(); ++i) {
+    if (done[i]) continue;
+    std::vector<std::size_t> index;  // the call's nets in the job
+    for (std::size_t j = i; j < nets.size(); ++j)
+      if (!done[j] && cfg.seed_of(j) == cfg.seed_of(i)) index.push_back(j), done[j] = 1;
+    TrainConfig one = cfg;
+    one.seed = cfg.seed_of(i);
+    one.seeds.clear();
+    one.initial_val_mse.clear();
+    std::vector<const Mlp*> some;
+    for (std::size_t j : index) some.push_back(nets[j]), one.initial_val_mse.push_back(cfg.initial_val_mse_of(j));
+    Progress mapped;
+    if (progress)
+      mapped = [&](const ProgressEvent& e) {
+        ProgressEvent m = e;
+        m.net = int(index[std::size_t(e.net)]);
+        progress(m);
+      };
+    auto results = backend.train(some, d, one, mapped);
+    for (std::size_t k = 0; k < index.size(); ++k) out[index[k]] = std::move(results[k]);
+  }
+  return out;
+}
+}  // namespace
+
 JobResult train(const TrainJob& job) {
   validate(job);
   JobResult out;
@@ -226,7 +260,9 @@ JobResult train(const TrainJob& job) {
   if (cfg.tick) cfg.tick = guarded(job.config.tick);
 
   const auto t0 = std::chrono::steady_clock::now();
-  out.nets = backend->train(nets, *job.data, cfg, progress);
+  const bool one_seed = std::all_of(cfg.seeds.begin(), cfg.seeds.end(), [&](uint32_t s) { return s == cfg.seed_of(0); });
+  out.nets = one_seed || backend->mixes_seeds() ? backend->train(nets, *job.data, cfg, progress)
+                                                : train_by_seed(*backend, nets, *job.data, cfg, progress);
   out.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (out.nets.size() != nets.size()) throw std::logic_error("backend " + out.backend + " returned wrong result count");
   const long long steps_per_epoch = (long long)(job.data->train_count() / std::size_t(cfg.batch));

@@ -6,6 +6,7 @@
 //    loss of net(x) - y (nn/loss.h; l2, the MSE, by default), in the dataset's (= the network's)
 //    colour space.
 //  - epoch e (0-based) visits the training rows in the order nn::shuffle_index(seed, e, k, n)
+//    (seed: the net's, TrainConfig::seed_of)
 //    for k = 0..n-1 (nn/shuffle.h); step s takes rows k = s*batch .. s*batch+batch-1;
 //    steps per epoch = n / batch (a partial last minibatch is dropped; it changes every epoch).
 //  - Adam (Kingma & Ba, Algorithm 1) with t = 1, 2, ... counted from the start of the run and
@@ -84,7 +85,11 @@ struct TrainConfig {
   int epochs = 20;
   int batch = 8;
   double lr = 2.5e-4, beta1 = 0.8, beta2 = 0.9, eps = 1e-7;  // the thesis' Adam settings
-  uint32_t seed = 1;  // shuffle seed, shared by all nets of the job
+  uint32_t seed = 1;  // shuffle seed of the job's nets
+  // Per net, its own shuffle seed instead (empty: `seed` for all). A net's result depends on its
+  // seed only, never on the job it shares: a sweep's seeds can train in one job.
+  std::vector<uint32_t> seeds;
+  uint32_t seed_of(std::size_t net) const { return seeds.empty() ? seed : seeds[net]; }
   Loss loss;
   DivergenceRule divergence;
   // The job's stop flag (nullptr: never stops early). Backends read it at every step boundary.
@@ -167,6 +172,9 @@ class Backend {
   // shares data.inputs/outputs and colour space, batch <= data.train_count(), data is finite.
   virtual std::vector<NetResult> train(const std::vector<const Mlp*>& nets, const data::Dataset& data,
                                        const TrainConfig& cfg, const Progress& progress) = 0;
+  // Whether train() takes nets of different shuffle seeds (TrainConfig::seeds) in one call; the
+  // job (nn/train.h) gives one seed per call to a backend that does not.
+  virtual bool mixes_seeds() const { return false; }
 };
 
 std::unique_ptr<Backend> make_cpu_backend();
