@@ -1,6 +1,6 @@
 -- The command line every experiment script shares:
 --   shadenet scripts/NAME.lua [--quick] [--shard i/n] [--out DIR] [--backend cpu|gl|auto]
---                             [--data poses|cloth] [--ggx default|thesis] [--help]
+--                             [--data poses|cloth] [--ggx default|thesis] [--runs-per-job N] [--help]
 -- An unknown option is an error listing the valid ones. Without --shard, a Slurm job array
 -- (SLURM_ARRAY_TASK_ID / SLURM_ARRAY_TASK_COUNT) picks the shard, so `sbatch --array=0-7`
 -- (or 1-8) spreads a sweep over 8 machines with no extra flag.
@@ -13,6 +13,7 @@ local common = {
   { flag = "--backend", value = "cpu|gl|auto", help = "training backend (default: the script's choice)" },
   { flag = "--data", value = "poses|cloth", help = "training data: the cloth in 5 poses (default, covers the normal sphere) or the thesis' hanging cloth alone" },
   { flag = "--ggx", value = "default|thesis", help = "GGX ground truth: the gold metal (default) or calibrated to the thesis' all-zeros MSE (diffuse 0.58, ambient 0.2)" },
+  { flag = "--runs-per-job", value = "N", help = "train at most N runs in one job (default: every run that may share one, seeds included; fewer lose less to Ctrl-C)" },
   { flag = "--help", help = "print this help" },
 }
 
@@ -56,7 +57,7 @@ function cli.slurm_shard(getenv)
 end
 
 -- cli.parse(args, name [, extra_flags]) -> options
---   options = { quick, shard = {index, count} | nil, out, backend, data, ggx, name }
+--   options = { quick, shard = {index, count} | nil, out, backend, data, ggx, runs_per_job, name }
 -- `extra_flags` adds script-specific flags, same shape as `common` above (value flags give a
 -- string, others true).
 function cli.parse(args, name, extra, getenv)
@@ -117,6 +118,12 @@ function cli.parse(args, name, extra, getenv)
       error(string.format("%s: unknown --ggx '%s' (valid: default, thesis)", where, o.extra.ggx), 0)
     end
     o.ggx = o.extra.ggx
+  end
+  if o.extra.runs_per_job then
+    o.runs_per_job = tonumber(o.extra.runs_per_job)
+    if not o.runs_per_job or o.runs_per_job < 1 or o.runs_per_job % 1 ~= 0 then
+      error(string.format("%s: --runs-per-job expects a whole number >= 1, got '%s'", where, o.extra.runs_per_job), 0)
+    end
   end
   if o.extra.shard then
     o.shard = cli.parse_shard(o.extra.shard, where)

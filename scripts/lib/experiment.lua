@@ -510,19 +510,20 @@ function exp.render_seconds(net, g, frames, min_seconds)
   end
 end
 
--- Runs that may train in one job: same data, epochs, batch, Adam settings and seed. The seed
--- is also the job's shuffle seed, so a run's result never depends on which runs it shared a
--- job with: shards and resumed sweeps give exactly the unsharded numbers.
+-- Runs that may train in one job: same data, epochs, batch and Adam settings. Each run's seed
+-- is its nets' shuffle seed (sn.train's seed per net), so a run's result never depends on which
+-- runs it shared a job with: shards and resumed sweeps give exactly the unsharded numbers, and
+-- a sweep's seeds train together (the cpu backend pairs nets of one architecture across them).
 function exp.group_key(run)
   local c = run.config
-  return json.encode { c.data, c.epochs, c.batch, c.adam, c.seed, c.backend or "", c.job or "" }
+  return json.encode { c.data, c.epochs, c.batch, c.adam, c.backend or "", c.job or "" }
 end
 
 -- Trains one group; returns one result table per run. tick(fraction) hears how far it is.
 function E:train_group(group, tick)
   local c = group[1].config
   local data = self:data(c.data)
-  local nets, first = {}, {}
+  local nets, first, seeds = {}, {}, {}
   for i, r in ipairs(group) do
     first[i] = #nets + 1
     for k = 1, r.config.copies or 1 do
@@ -531,11 +532,12 @@ function E:train_group(group, tick)
         cfg = setmetatable({ seed = r.config.seed + k - 1 }, { __index = r.config })
       end
       nets[#nets + 1] = exp.make_net(cfg)
+      seeds[#nets] = r.config.seed  -- copies differ in their start, not in their shuffle
     end
   end
   local epochs_done, total = 0, #nets * c.epochs
   local out = self:time("training", sn.train, {
-    nets = nets, data = data, epochs = c.epochs, batch = c.batch, adam = c.adam, seed = c.seed,
+    nets = nets, data = data, epochs = c.epochs, batch = c.batch, adam = c.adam, seed = seeds,
     backend = c.backend or self.backend, keep = "best",
     progress = tick and function()
       epochs_done = epochs_done + 1
@@ -589,7 +591,7 @@ function E:sweep(runs, o)
   local finished, interrupted = sweep:run {
     train = function(group, tick) return self:train_group(group, tick) end,
     group_key = exp.group_key,
-    chunk = o.chunk,
+    chunk = self.opts.runs_per_job or o.chunk,
     score = function(r) return r.best_val_mse end,
     describe = function(run) return exp.arch_name(run.config.hidden) .. " seed " .. run.config.seed end,
   }

@@ -56,9 +56,10 @@ out = C.ok(script, { "--quick", "--out", R })
 assert(out:find("resuming, " .. kept .. " of 72 runs already finished"), "resume message:\n" .. out)
 assert(C.read(R .. "/table.csv") == C.read(A .. "/table.csv"), "a resumed run = an uninterrupted one")
 
--- Ctrl-C after the first training group: exit 130, finished runs kept; the re-run completes.
+-- Ctrl-C after the first training job (of 36 runs: by default all 72 train in one): exit 130,
+-- finished runs kept; the re-run completes.
 local I = root .. "/interrupted"
-local code, iout = C.run_interrupted(script, { "--quick", "--out", I })
+local code, iout = C.run_interrupted(script, { "--quick", "--runs-per-job", "36", "--out", I })
 assert(code == 130, "an interrupted sweep exits 130, got " .. tostring(code) .. ":\n" .. iout)
 assert(iout:find("stopped by Ctrl%-C; 36 of 72 runs finished and kept"), "interrupt message:\n" .. iout)
 out = C.ok(script, { "--quick", "--out", I })
@@ -68,7 +69,7 @@ assert(C.read(I .. "/table.csv") == C.read(A .. "/table.csv"), "interrupted + re
 -- Ctrl-C inside the second group's training: sn.train stops at its next step, the runs it
 -- stopped part-way are not recorded, and the re-run trains them again from the start.
 local T = root .. "/in_training"
-code, iout = C.run_interrupted(script, { "--quick", "--out", T }, 2)
+code, iout = C.run_interrupted(script, { "--quick", "--runs-per-job", "36", "--out", T }, 2)
 assert(code == 130, "interrupted in training: exit 130, got " .. tostring(code) .. ":\n" .. iout)
 assert(iout:find("interrupt: stopping training at the next step", 1, true) and
        iout:find("stopped by Ctrl%-C; 36 of 72 runs finished and kept in [^\n]*; 36 stopped part%-way will train again"),
