@@ -1,5 +1,7 @@
 // shadenet [options] script.lua [args...]: runs a Lua experiment script, headless by default;
 // --watch keeps it live (runtime/live/live_loop.h).
+#include <malloc.h>
+
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -79,6 +81,11 @@ bool shows_a_view(lua_State* L) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // Images and datasets of megabytes come and go by the thousand in a sweep (a render, its
+  // clamp, SSIM's planes per run): kept in the heap instead of mapped and unmapped each time,
+  // their pages are not zeroed by the kernel again and again.
+  mallopt(M_MMAP_THRESHOLD, 256 << 20);
+  mallopt(M_TRIM_THRESHOLD, 512 << 20);
   sn::app::Options opt;
   try {
     opt = sn::app::parse_options(argc, argv);
