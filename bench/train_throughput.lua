@@ -20,8 +20,9 @@
 -- The roofline (cpu backend): "FLOP/step" counted from the kernel per sample-step
 -- (bench/roofline.lua), "GFLOP/s" achieved (total steps/s x FLOP/step), and that as a share of
 -- this machine's measured FP32 FMA peak (build/fma_peak) over the cores the job can use (one
--- per network, at most the machine's threads): "%avx2" against the AVX2 peak the kernel runs
--- at, "%avx512" against the AVX-512 one.
+-- per network, at most the machine's threads): "%avx2" against the AVX2 peak, "%avx512"
+-- against the AVX-512 one. The last lines name each backend's device (the cpu
+-- backend's kernel: avx512, avx2 or sse2; SHADENET_CPU_KERNEL picks one).
 local sn = require "shadenet"
 package.path = (arg[0]:match("^(.*)/[^/]*$") or ".") .. "/?.lua;" .. package.path
 local roofline = require "roofline"
@@ -122,6 +123,7 @@ end
 print(("%-7s %-6s %-11s %-15s %6s %5s %14s %12s %8s %8s %14s %6s %9s %9s %8s %6s %7s"):format("backend", "arch",
   "activation", "encoding", "inputs", "nets", "total steps/s", "per net", "wall s", "cpu s", "steps/cpu-s", "load",
   "peak MiB", "FLOP/step", "GFLOP/s", "%avx2", "%avx512"))
+local devices = {}  -- what each backend ran on (the cpu backend names its kernel)
 for _, backend in ipairs(backends) do
   for _, job in ipairs(jobs) do
     local a, act, enc = job[1], job[2], job[3]
@@ -138,6 +140,7 @@ for _, backend in ipairs(backends) do
       local runs = sn.train { nets = nets, data = data, epochs = epochs, batch = 8, backend = backend,
                               adam = { lr = 2.5e-4, beta1 = 0.8, beta2 = 0.9 } }
       local cpu = os.clock() - c0
+      devices[backend] = runs[1].device
       local steps = 0
       for _, r in ipairs(runs) do steps = steps + r.steps * 8 end
       local wall = runs[1].wall_time
@@ -162,5 +165,8 @@ for _, backend in ipairs(backends) do
       collectgarbage()
     end
   end
+end
+for _, backend in ipairs(backends) do
+  if devices[backend] then print(("%s: %s"):format(backend, devices[backend])) end
 end
 print(("peak resident memory (VmHWM): %.1f MiB"):format(status("VmHWM") / 1024))
