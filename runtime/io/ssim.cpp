@@ -1,5 +1,6 @@
 #include "io/ssim.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -19,12 +20,16 @@ struct Moments {
   double x, y, xx, yy, xy;
 };
 
+// Only the pixels [x0, x1] x [y0, y1] (interior ones: a mask's bounding box) are filtered.
+struct Box {
+  int x0, y0, x1, y1;
+};
 std::vector<Moments> blur_interior(const std::vector<double>& a, const std::vector<double>& b, int w, int h,
-                                   const double* k) {
+                                   const double* k, const Box& box) {
   const int r = kSsimRadius;
   std::vector<Moments> rows(size_t(w) * h), out(size_t(w) * h);
-  for (int y = 0; y < h; ++y)
-    for (int x = r; x < w - r; ++x) {
+  for (int y = box.y0 - r; y <= box.y1 + r; ++y)
+    for (int x = box.x0; x <= box.x1; ++x) {
       Moments m{0, 0, 0, 0, 0};
       for (int d = -r; d <= r; ++d) {
         const size_t i = size_t(y) * w + x + d;
@@ -33,8 +38,8 @@ std::vector<Moments> blur_interior(const std::vector<double>& a, const std::vect
       }
       rows[size_t(y) * w + x] = m;
     }
-  for (int y = r; y < h - r; ++y)
-    for (int x = r; x < w - r; ++x) {
+  for (int y = box.y0; y <= box.y1; ++y)
+    for (int x = box.x0; x <= box.x1; ++x) {
       Moments m{0, 0, 0, 0, 0};
       for (int d = -r; d <= r; ++d) {
         const Moments& q = rows[size_t(y + d) * w + x];
@@ -65,6 +70,15 @@ double ssim(const Image& a, const Image& b, int channels, const Image* mask, int
   for (int d = -kSsimRadius; d <= kSsimRadius; ++d) ksum += k[d + kSsimRadius] = std::exp(-0.5 * d * d / (kSigma * kSigma));
   for (double& v : k) v /= ksum;
 
+  // The interior pixels that are averaged, and their bounding box (all of the interior
+  // without a mask): a mesh covering part of the frame filters only around itself.
+  const int r = kSsimRadius;
+  Box box{w, h, -1, -1};
+  for (int py = r; py < h - r; ++py)
+    for (int px = r; px < w - r; ++px)
+      if (!mask || mask->at(px, py, mask_channel) > 0.5f)
+        box = {std::min(box.x0, px), std::min(box.y0, py), std::max(box.x1, px), std::max(box.y1, py)};
+  if (box.x1 < 0) throw std::invalid_argument("ssim: the mask leaves no pixel at least 5 pixels inside the border");
   const size_t n = size_t(w) * h;
   double total = 0;
   for (int c = 0; c < channels; ++c) {
@@ -75,18 +89,17 @@ double ssim(const Image& a, const Image& b, int channels, const Image* mask, int
         throw std::invalid_argument("ssim: pixel (" + std::to_string(i % w + 1) + ", " + std::to_string(i / w + 1) +
                                     ") channel " + std::to_string(c + 1) + " is not a finite number");
     }
-    const auto m = blur_interior(x, y, w, h, k);
+    const auto m = blur_interior(x, y, w, h, k, box);
     double sum = 0;
     size_t count = 0;
-    for (int py = kSsimRadius; py < h - kSsimRadius; ++py)
-      for (int px = kSsimRadius; px < w - kSsimRadius; ++px) {
+    for (int py = box.y0; py <= box.y1; ++py)
+      for (int px = box.x0; px <= box.x1; ++px) {
         if (mask && mask->at(px, py, mask_channel) <= 0.5f) continue;
         const Moments& q = m[size_t(py) * w + px];
         const double vx = q.xx - q.x * q.x, vy = q.yy - q.y * q.y, cxy = q.xy - q.x * q.y;
         sum += (2 * q.x * q.y + kC1) * (2 * cxy + kC2) / ((q.x * q.x + q.y * q.y + kC1) * (vx + vy + kC2));
         ++count;
       }
-    if (count == 0) throw std::invalid_argument("ssim: the mask leaves no pixel at least 5 pixels inside the border");
     total += sum / double(count);
   }
   return total / channels;

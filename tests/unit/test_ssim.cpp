@@ -50,6 +50,42 @@ TEST(Ssim, EqualImagesAreOneAndAFullMaskChangesNothing) {
   EXPECT_LE(half, 1.0);
 }
 
+// A mask filters only around itself (its bounding box): the mean over a small blob must equal
+// the same mean of per-pixel SSIMs from plain 11x11 window sums.
+TEST(Ssim, AMaskedMeanMatchesDirectWindowSums) {
+  auto [a, b] = pair(2);
+  Image blob(40, 28, 4, 0.f);
+  for (int y = 0; y < 28; ++y)
+    for (int x = 0; x < 40; ++x)
+      if ((x - 24) * (x - 24) + (y - 13) * (y - 13) <= 16) blob.at(x, y, 3) = 1.f;
+  const int r = sn::io::kSsimRadius;
+  double k[2 * sn::io::kSsimRadius + 1], ksum = 0;
+  for (int d = -r; d <= r; ++d) ksum += k[d + r] = std::exp(-0.5 * d * d / (1.5 * 1.5));
+  double want = 0;
+  for (int c = 0; c < 3; ++c) {
+    double sum = 0;
+    int count = 0;
+    for (int y = r; y < 28 - r; ++y)
+      for (int x = r; x < 40 - r; ++x) {
+        if (blob.at(x, y, 3) <= 0.5f) continue;
+        double mx = 0, my = 0, xx = 0, yy = 0, xy = 0;
+        for (int dy = -r; dy <= r; ++dy)
+          for (int dx = -r; dx <= r; ++dx) {
+            const double wgt = k[dx + r] * k[dy + r] / (ksum * ksum), u = a.at(x + dx, y + dy, c), v = b.at(x + dx, y + dy, c);
+            mx += wgt * u, my += wgt * v, xx += wgt * u * u, yy += wgt * v * v, xy += wgt * u * v;
+          }
+        const double c1 = 1e-4, c2 = 9e-4;
+        sum += (2 * mx * my + c1) * (2 * (xy - mx * my) + c2) /
+               ((mx * mx + my * my + c1) * (xx - mx * mx + yy - my * my + c2));
+        ++count;
+      }
+    ASSERT_EQ(count, 49);  // the blob: 49 pixels, all inside
+    want += sum / count / 3;
+  }
+  EXPECT_NEAR(sn::io::ssim(a, b, -1, &blob, 3), want, 1e-12);
+  EXPECT_NE(sn::io::ssim(a, b, -1, &blob, 3), sn::io::ssim(a, b));
+}
+
 TEST(Ssim, RefusesWhatItCannotMeasure) {
   auto [a, b] = pair(0);
   Image small(10, 28, 3);
