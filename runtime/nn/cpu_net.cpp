@@ -300,11 +300,11 @@ SN_INLINE void gather_inputs(const View<Mode>& V, const float* x, RowLists rows,
   constexpr int k = Mode::kPar, lanes = kLanesOf<Mode>;
   const int inputs = V.S.in[0];
   float* a0 = reinterpret_cast<float*>(V.act(0));
+  const float* xr[lanes];  // lane s k + h's row
   for (int s = 0; s < Mode::kSamples; ++s)
-    for (int h = 0; h < k; ++h) {
-      const float* xr = s < n ? x + row_of(rows, h, first + s) * inputs : nullptr;
-      for (int i = 0; i < inputs; ++i) a0[i * lanes + s * k + h] = xr ? xr[i] : 0.0f;
-    }
+    for (int h = 0; h < k; ++h) xr[s * k + h] = s < n ? x + row_of(rows, h, first + s) * inputs : nullptr;
+  for (int i = 0; i < inputs; ++i)
+    for (int l = 0; l < lanes; ++l) a0[i * lanes + l] = xr[l] ? xr[l][i] : 0.0f;
 }
 
 // The forward pass; kTrain also stores f'(z) where backpropagation needs it: for hidden kinds
