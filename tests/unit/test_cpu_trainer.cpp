@@ -6,6 +6,8 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <limits>
 #include <stdexcept>
@@ -49,6 +51,23 @@ struct KernelGuard {  // restores the default kernel
   std::string saved = cpu_kernel_name();
   ~KernelGuard() { use_cpu_kernel(saved); }
 };
+
+// Every kernel test below runs each kernel this CPU has (failures name the kernel): the list
+// follows the CPU's features, widest last, and the default is the widest.
+TEST(CpuKernels, EveryKernelTheCpuHasIsTestedAndTheWidestIsTheDefault) {
+  __builtin_cpu_init();
+  std::vector<std::string> want = {"sse2"};
+  if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) want.push_back("avx2");
+  if (want.size() == 2 && __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
+      __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512bw"))
+    want.push_back("avx512");
+  EXPECT_EQ(cpu_kernels_available(), want);
+  std::string list;
+  for (const auto& k : want) list += (list.empty() ? "" : ", ") + k;
+  std::printf("cpu kernels tested here: %s\n", list.c_str());
+  if (!std::getenv("SHADENET_CPU_KERNEL")) EXPECT_EQ(std::string(cpu_kernel_name()), want.back());
+  EXPECT_THROW(use_cpu_kernel("avx1024"), std::invalid_argument);
+}
 
 TEST(FastTanh, WithinOneMillionthOfStdTanh) {
   double worst = 0;
