@@ -11,11 +11,7 @@ local function make(i)
   -- Two architectures, so that the cpu backend pairs within each; a 4-wide one among 8-wide.
   return sn.mlp { inputs = 6, hidden = i % 4 == 0 and { 4, 4 } or { 8, 8 }, outputs = 3, seed = 100 + i }
 end
-local function same(a, b)
-  local pa, pb = a:params(), b:params()
-  for i = 1, #pa do if pa[i] ~= pb[i] then return false end end
-  return #pa == #pb
-end
+local same = expect.same_params
 
 for _, backend in ipairs(sn.backends()) do
   local together = {}

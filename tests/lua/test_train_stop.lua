@@ -3,17 +3,14 @@
 -- returns what was trained, flagged `interrupted`, with keep = "best" | "last" honoured; an
 -- error in progress keeps the trained weights too; the second Ctrl-C ends the process.
 local sn = require "shadenet"
+local expect = require "expect"
 local C = require "script_check"
 
 local xs, ys = require("smooth_rows")(1200)
 local data = sn.dataset { x = xs, y = ys, split = 0.8, seed = 1 }
 local steps = 120  -- 960 training rows, batch 8
 local function make() return sn.mlp { inputs = 6, hidden = { 12, 12 }, outputs = 3, seed = 4 } end
-local function same(a, b)
-  local pa, pb = a:params(), b:params()
-  for i = 1, #pa do if pa[i] ~= pb[i] then return false end end
-  return #pa == #pb
-end
+local same = expect.same_params
 local adam = { lr = 3e-3 }
 
 for _, backend in ipairs(sn.backends()) do

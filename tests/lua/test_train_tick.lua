@@ -3,15 +3,12 @@
 -- steps advance, it never changes what is trained, and it stops the job like progress does:
 -- "stop" ends it at the next step boundary, an error keeps what was trained and is raised.
 local sn = require "shadenet"
+local expect = require "expect"
 
 local data = sn.dataset.sample { target = sn.lighting.phong {}, n = 200000, seed = 3 }
 local steps = 20000  -- 160,000 training rows, batch 8
 local function make() return sn.mlp { inputs = 6, hidden = { 32, 32, 32 }, outputs = 3, seed = 5 } end
-local function same(a, b)
-  local pa, pb = a:params(), b:params()
-  for i = 1, #pa do if pa[i] ~= pb[i] then return false end end
-  return #pa == #pb
-end
+local same = expect.same_params
 
 for _, backend in ipairs(sn.backends()) do
   local function train(net, o)
