@@ -72,8 +72,9 @@ struct Unit {
   std::unique_ptr<CpuNetPair> pair;
 };
 
-// Pairs nets of one architecture and loss (each on its own minibatches), where the kernel has the pair mode,
-// as long as every thread still gets a unit: two nets on two threads train faster apart.
+// Pairs nets of one architecture and loss (each on its own minibatches) where the kernel has
+// the pair mode, as long as every thread still gets a unit: two nets on two threads train
+// faster apart.
 std::vector<Unit> plan_units(const std::vector<std::unique_ptr<CpuNet>>& work,
                              const std::vector<const EncodedRows*>& rows_of, int threads) {
   const int count = int(work.size());

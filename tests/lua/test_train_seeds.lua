@@ -33,6 +33,28 @@ for _, backend in ipairs(sn.backends()) do
   print(("%s: %s"):format(backend, runs[1].device))
 end
 
+-- A net that diverges mid-epoch inside a pair (the cpu backend's, nets 1 and 2 of 3 on 2
+-- threads): it stops where it stops alone, and its partner goes on alone from the next step.
+local function trio(i)
+  local net = sn.mlp { inputs = 6, hidden = { 8, 8 }, outputs = 3, seed = i, activation = "exponential" }
+  if i == 2 then  -- its weights x2.5: exp overflows after some steps
+    local p = net:params()
+    for k = 1, #p do p[k] = p[k] * 2.5 end
+    net:set_params(p)
+  end
+  return net
+end
+local three = { trio(1), trio(2), trio(3) }
+local runs = sn.train { nets = three, data = data, epochs = 2, batch = 8, backend = "cpu", adam = { lr = 0.01 } }
+assert(runs[2].diverged and runs[2].diverged.step > 1 and not runs[1].diverged and not runs[3].diverged,
+       "net 2 diverges part-way through, the others do not")
+for i = 1, 3 do
+  local alone = trio(i)
+  local run = sn.train { nets = alone, data = data, epochs = 2, batch = 8, backend = "cpu", adam = { lr = 0.01 } }[1]
+  assert(same(three[i], alone), "net " .. i .. " of the trio trains as alone")
+  assert((run.diverged and run.diverged.step) == (runs[i].diverged and runs[i].diverged.step), "diverges at the same step")
+end
+
 expect.fails(function() sn.train { nets = { make(1), make(2) }, data = data, seed = { 1 } } end,
   "sn.train option 'seed': one seed per net, got 1 for 2 nets")
 expect.fails(function() sn.train { nets = { make(1) }, data = data, seed = { -1 } } end,
