@@ -58,10 +58,15 @@ SN_INLINE v8 vsqrt(const v8& x) {
     return v8{lo[0], lo[1], lo[2], lo[3], hi[0], hi[1], hi[2], hi[3]};
   }
 }
+// Only the AVX-512 kernels use 16 lanes. (Clang, which builds the fuzz targets, checks its
+// 512-bit builtin against the template's own target, so there it takes two 8-lane halves.)
 template <class Isa>
 SN_INLINE v16 vsqrt(const v16& x) {
+  static_assert(std::is_same_v<Isa, Avx512>, "16 lanes are the AVX-512 kernels'");
 #ifdef __clang__
-  return (v16)__builtin_ia32_sqrtps512((__v16sf)x, _MM_FROUND_CUR_DIRECTION);
+  const v8 lo = vsqrt<Avx2>(v8(__builtin_shufflevector(x, x, 0, 1, 2, 3, 4, 5, 6, 7)));
+  const v8 hi = vsqrt<Avx2>(v8(__builtin_shufflevector(x, x, 8, 9, 10, 11, 12, 13, 14, 15)));
+  return __builtin_shufflevector(lo, hi, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
 #else
   return (v16)__builtin_ia32_sqrtps512_mask((__v16sf)x, (__v16sf)x, (__mmask16)-1, _MM_FROUND_CUR_DIRECTION);
 #endif
