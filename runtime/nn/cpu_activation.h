@@ -270,5 +270,19 @@ template <class V>
 SN_INLINE void act_both_any(int kind, const V z, float p, V& a, V& g) {
   with_builtin(kind, [&](auto k) { act_both<decltype(k)::value>(z, p, a, g); });
 }
+// kFromOutput and act_grad_a for a kind chosen at run time.
+inline bool from_output_any(int kind) {
+  bool yes = false;
+  with_builtin(kind, [&](auto k) { yes = kFromOutput<decltype(k)::value>; });
+  return yes;
+}
+template <class V>
+SN_INLINE V act_grad_a_any(int kind, const V& a, float p) {
+  V g = a;
+  with_builtin(kind, [&](auto k) {
+    if constexpr (kFromOutput<decltype(k)::value>) g = act_grad_a<decltype(k)::value>(a, p);
+  });
+  return g;
+}
 
 }  // namespace sn::nn::simd

@@ -309,6 +309,28 @@ SN_INLINE void gather_inputs(const View<Mode>& V, const float* x, RowLists rows,
 
 // The forward pass; kTrain also stores f'(z) where backpropagation needs it: for hidden kinds
 // whose derivative does not follow from a (sine, gelu, swish), and for a non-linear output layer.
+// The hidden activation H: a Builtin id compiled into the kernel (tanh, the thesis' and the
+// default, whose step is the one timed), or kAnyHidden, the layout's kind chosen per unit at run
+// time. One kernel for the ten other kinds instead of ten: their code is as before and a switch
+// per unit costs little beside exp, sin or a division, while each instantiation of the kernels
+// costs minutes under the sanitizers.
+constexpr int kAnyHidden = -1;
+template <int H>
+SN_INLINE bool hidden_from_output(const Layout& S) {
+  if constexpr (H == kAnyHidden) return from_output_any(S.hidden);
+  else return kFromOutput<H>;
+}
+template <int H, class V>
+SN_INLINE V hidden_act(const Layout& S, const V& z) {
+  if constexpr (H == kAnyHidden) return act_any(S.hidden, z, S.hp);
+  else return act<H>(z, S.hp);
+}
+template <int H, class V>
+SN_INLINE void hidden_both(const Layout& S, const V z, V& a, V& g) {
+  if constexpr (H == kAnyHidden) act_both_any(S.hidden, z, S.hp, a, g);
+  else act_both<H>(z, S.hp, a, g);
+}
+
 template <int H, class Mode, bool kTrain = false>
 SN_INLINE void forward_block(const View<Mode>& V) {
   using Vec = typename Mode::V;
@@ -319,11 +341,11 @@ SN_INLINE void forward_block(const View<Mode>& V) {
     in_groups<Forward, Mode>(S.out[l], p + S.woff[l] * Mode::kPar, S.inpad[l], p + S.boff[l] * Mode::kPar, S.in[l],
                              V.act(l), z);
     if (l + 1 < S.L) {
-      if constexpr (kTrain && !kFromOutput<H>) {
+      if (kTrain && !hidden_from_output<H>(S)) {
         Vec* g = V.dz(l + 1);
-        for (int o = 0; o < S.out[l]; ++o) act_both<H>(z[o], S.hp, z[o], g[o]);
+        for (int o = 0; o < S.out[l]; ++o) hidden_both<H>(S, z[o], z[o], g[o]);
       } else {
-        for (int o = 0; o < S.out[l]; ++o) z[o] = act<H>(z[o], S.hp);
+        for (int o = 0; o < S.out[l]; ++o) z[o] = hidden_act<H>(S, z[o]);
       }
     } else if (kTrain && S.output != int(Builtin::linear)) {
       Vec* g = V.dz(l + 1);
@@ -337,7 +359,11 @@ SN_INLINE void forward_block(const View<Mode>& V) {
 // f'(z) of unit vector i of hidden width block l, after a training forward pass.
 template <int H, class Mode>
 SN_INLINE typename Mode::V hidden_grad(const View<Mode>& V, int l, int i) {
-  if constexpr (kFromOutput<H>) return act_grad_a<H>(V.act(l)[i], V.S.hp);
+  if constexpr (H == kAnyHidden) {
+    if (from_output_any(V.S.hidden)) return act_grad_a_any(V.S.hidden, V.act(l)[i], V.S.hp);
+  } else if constexpr (kFromOutput<H>) {
+    return act_grad_a<H>(V.act(l)[i], V.S.hp);
+  }
   return V.dz(l)[i];
 }
 
@@ -596,9 +622,10 @@ SN_INLINE void counts_impl(const View<Mode>& V, const float* x, std::size_t coun
       const Vec* a = V.act(l);
       for (int i = 0; i < S.in[l]; ++i, ++u) {
         Mask hit;
-        if constexpr (H == int(Builtin::tanh)) hit = (a[i] > 0.99f) | (a[i] < -0.99f);
-        else if constexpr (H == int(Builtin::sigmoid)) hit = (a[i] < 0.01f) | (a[i] > 0.99f);
-        else if constexpr (H == int(Builtin::relu) || H == int(Builtin::leaky_relu)) hit = a[i] > 0.0f;
+        const int kind = H == kAnyHidden ? S.hidden : H;
+        if (kind == int(Builtin::tanh)) hit = (a[i] > 0.99f) | (a[i] < -0.99f);
+        else if (kind == int(Builtin::sigmoid)) hit = (a[i] < 0.01f) | (a[i] > 0.99f);
+        else if (kind == int(Builtin::relu) || kind == int(Builtin::leaky_relu)) hit = a[i] > 0.0f;
         else {
           const Vec g = hidden_grad<H>(V, l, i);
           hit = (g < 0.01f) & (g > -0.01f);  // flat: the unit passes (almost) no gradient
@@ -717,7 +744,10 @@ struct Kernels {
 template <int H>
 Kernels kernels_for(Kernel k) {
   if (k == Kernel::avx512)
-    return {step_avx512<H>, loss_avx512<H>, forward_avx512<H>, counts_avx512<H>, lanes_avx512<H>, step_pair<H>};
+    // Validation, rows through forward() and unit counts are avx2's 8-lane code: compiled again
+    // with AVX-512 encodings it bought nothing (docs/performance.md), and each instantiation
+    // costs compile time.
+    return {step_avx512<H>, loss_avx2<H>, forward_avx2<H>, counts_avx2<H>, lanes_avx512<H>, step_pair<H>};
   if (k == Kernel::avx2) return {step_avx2<H>, loss_avx2<H>, forward_avx2<H>, counts_avx2<H>, lanes_avx2<H>, nullptr};
   return {step_sse2<H>, loss_sse2<H>, forward_sse2<H>, counts_sse2<H>, lanes_sse2<H>, nullptr};
 }
@@ -755,9 +785,7 @@ Kernel kernel_in_use() { return Kernel(kernel_flag().load(std::memory_order_rela
 
 Kernels kernels(int hidden) {
   const Kernel kind = kernel_in_use();
-  Kernels k{};
-  with_builtin(hidden, [&](auto h) { k = kernels_for<decltype(h)::value>(kind); });
-  return k;
+  return hidden == int(Builtin::tanh) ? kernels_for<int(Builtin::tanh)>(kind) : kernels_for<kAnyHidden>(kind);
 }
 
 }  // namespace
