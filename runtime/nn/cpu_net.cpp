@@ -91,8 +91,8 @@ using Layout = CpuNet::Layout;
 //  One:  8 samples of one network per v8; a weight is broadcast to every lane.
 //  Pair: 8 samples of each of two networks per v16, interleaved (lane 2s + h is sample s of
 //        network h), and their parameters interleaved alike (kPar = 2 floats per parameter): a
-//        weight pair is one 64-bit broadcast. Two networks of one architecture trained on the
-//        same rows (a sweep's) fill AVX-512 registers at batch 8.
+//        weight pair is one 64-bit broadcast. Two networks of one architecture in one job (a
+//        sweep's seeds, each reading its own rows) fill AVX-512 registers at batch 8.
 //  Wide: 16 samples of one network per v16 (inference).
 // G: the weight gradient's vectors, which hold 8 inputs (of each network).
 typedef double v8d __attribute__((vector_size(64)));
