@@ -10,9 +10,9 @@ local common = {
   { flag = "--quick", help = "fewer seeds and epochs, smaller images: a smoke run under a minute" },
   { flag = "--shard", value = "i/n", help = "run only slice i of n of the sweep (1 <= i <= n)" },
   { flag = "--out", value = "DIR", help = "write results to DIR instead of results/NAME" },
-  { flag = "--backend", value = "cpu|gl|auto", help = "training backend (default: the script's choice)" },
-  { flag = "--data", value = "poses|cloth", help = "training data: the cloth in 5 poses (default, covers the normal sphere) or the thesis' hanging cloth alone" },
-  { flag = "--ggx", value = "default|thesis", help = "GGX ground truth: the gold metal (default) or calibrated to the thesis' all-zeros MSE (diffuse 0.58, ambient 0.2)" },
+  { flag = "--backend", choices = { "cpu", "gl", "auto" }, help = "training backend (default: the script's choice)" },
+  { flag = "--data", choices = { "poses", "cloth" }, help = "training data: the cloth in 5 poses (default, covers the normal sphere) or the thesis' hanging cloth alone" },
+  { flag = "--ggx", choices = { "default", "thesis" }, help = "GGX ground truth: the gold metal (default) or calibrated to the thesis' all-zeros MSE (diffuse 0.58, ambient 0.2)" },
   { flag = "--runs-per-job", value = "N", help = "train at most N runs in one job (default: every run that may share one, seeds included; fewer lose less to Ctrl-C)" },
   { flag = "--help", help = "print this help" },
 }
@@ -59,11 +59,12 @@ end
 -- cli.parse(args, name [, extra_flags]) -> options
 --   options = { quick, shard = {index, count} | nil, out, backend, data, ggx, runs_per_job, name }
 -- `extra_flags` adds script-specific flags, same shape as `common` above (value flags give a
--- string, others true).
+-- string, others true; a flag with `choices` takes one of them).
 function cli.parse(args, name, extra, getenv)
   local flags = {}
   for _, f in ipairs(common) do flags[#flags + 1] = f end
   for _, f in ipairs(extra or {}) do flags[#flags + 1] = f end
+  for _, f in ipairs(flags) do f.value = f.value or (f.choices and table.concat(f.choices, "|")) end
   local by_flag = {}
   for _, f in ipairs(flags) do by_flag[f.flag] = f end
   local where = name .. ".lua"
@@ -98,26 +99,18 @@ function cli.parse(args, name, extra, getenv)
   end
   o.quick = o.extra.quick == true
   o.out = o.extra.out
-  if o.extra.backend then
-    local ok = { cpu = true, gl = true, auto = true }
-    if not ok[o.extra.backend] then
-      error(string.format("%s: unknown backend '%s' (valid: cpu, gl, auto)", where, o.extra.backend), 0)
+  -- A flag with choices takes one of them (o.backend, o.data, o.ggx).
+  for _, f in ipairs(flags) do
+    local key = f.flag:sub(3):gsub("-", "_")
+    local v = o.extra[key]
+    if f.choices and v then
+      local known = false
+      for _, c in ipairs(f.choices) do known = known or c == v end
+      if not known then
+        error(string.format("%s: unknown %s '%s' (valid: %s)", where, f.flag, v, table.concat(f.choices, ", ")), 0)
+      end
+      o[key] = v
     end
-    o.backend = o.extra.backend
-  end
-  if o.extra.data then
-    local ok = { poses = true, cloth = true }
-    if not ok[o.extra.data] then
-      error(string.format("%s: unknown --data '%s' (valid: poses, cloth)", where, o.extra.data), 0)
-    end
-    o.data = o.extra.data
-  end
-  if o.extra.ggx then
-    local ok = { default = true, thesis = true }
-    if not ok[o.extra.ggx] then
-      error(string.format("%s: unknown --ggx '%s' (valid: default, thesis)", where, o.extra.ggx), 0)
-    end
-    o.ggx = o.extra.ggx
   end
   if o.extra.runs_per_job then
     o.runs_per_job = tonumber(o.extra.runs_per_job)
