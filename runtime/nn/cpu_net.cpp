@@ -103,9 +103,8 @@ struct One {
   static constexpr int kPar = 1, kSamples = 8;
   static SN_INLINE V w(const float* p) { return splat<V>(*p); }
 };
-struct Wide {
+struct Wide {  // inference only: no gradient
   using V = v16;
-  using G = v8;
   static constexpr int kPar = 1, kSamples = 16;
   static SN_INLINE V w(const float* p) { return splat<V>(*p); }
 };
@@ -143,17 +142,8 @@ SN_INLINE void transpose8(E r[8]) {
   for (int i = 0; i < 8; ++i) r[i] = t[i];
 }
 
-// Sum of lanes h, h + kPar, ... (network h's samples), in one fixed order: a network's sums
-// are the same bits in a pair as alone.
-template <class Mode>
-SN_INLINE float lane_sum(const typename Mode::V& v, int h) {
-  constexpr int k = Mode::kPar;
-  if constexpr (Mode::kSamples == 8)
-    return ((v[h] + v[h + 4 * k]) + (v[h + k] + v[h + 5 * k])) + ((v[h + 2 * k] + v[h + 6 * k]) + (v[h + 3 * k] + v[h + 7 * k]));
-  float s = 0;
-  for (int i = h; i < kLanesOf<Mode>; i += k) s += v[i];
-  return s;
-}
+// The sum of a block's 8 lanes, in the order the bias gradient's transposed sums use.
+SN_INLINE float hsum(const v8& v) { return ((v[0] + v[4]) + (v[1] + v[5])) + ((v[2] + v[6]) + (v[3] + v[7])); }
 
 // Where a kernel finds everything of one network, or of a pair.
 struct Arena {
@@ -476,7 +466,7 @@ SN_INLINE int step_impl(const View<Mode>& V, const float* x, const float* y, Row
       Vec* dl = V.d(cur);
       // Transposed activations for the outer-product gradient (pad columns stay 0), and the
       // bias gradient: each unit's errors summed over the samples, eight units at a time as
-      // sums of transposed rows (lane_sum's order).
+      // sums of transposed rows (hsum's order).
       const Vec* a = V.act(l);
       float* aT = V.at(l);
       for (int c = 0; c < inpad; c += 8) {
@@ -559,7 +549,8 @@ SN_INLINE double loss_impl(const View<Mode>& V, const float* x, const float* y, 
       loss_both(lf, diff, t, lv, lg);
       sq += lv;
     }
-    sum += double(lane_sum<Mode>(sq, 0));
+    static_assert(std::is_same_v<Vec, v8>, "validation runs 8 lanes");
+    sum += double(hsum(sq));
   }
   return count ? sum / (double(count) * outputs) : 0.0;
 }
