@@ -153,7 +153,6 @@ int w_train(lua_State* L) {
                   std::to_string(job.nets.size()) + " nets");
     for (std::size_t i = 0; i < seeds.size(); ++i)
       c.seeds.push_back(as_seed(seeds[i], "sn.train option 'seed' entry " + std::to_string(i + 1)));
-    c.seed = c.seeds.empty() ? c.seed : c.seeds[0];
   } else {
     c.seed = as_seed(double(o.integer("seed", c.seed)), "sn.train option 'seed'");
   }

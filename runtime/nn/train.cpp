@@ -260,9 +260,13 @@ JobResult train(const TrainJob& job) {
   if (cfg.tick) cfg.tick = guarded(job.config.tick);
 
   const auto t0 = std::chrono::steady_clock::now();
-  const bool one_seed = std::all_of(cfg.seeds.begin(), cfg.seeds.end(), [&](uint32_t s) { return s == cfg.seed_of(0); });
-  out.nets = one_seed || backend->mixes_seeds() ? backend->train(nets, *job.data, cfg, progress)
-                                                : train_by_seed(*backend, nets, *job.data, cfg, progress);
+  // One seed in all but form is the job's seed (what every backend reads).
+  if (!cfg.seeds.empty() && std::all_of(cfg.seeds.begin(), cfg.seeds.end(), [&](uint32_t s) { return s == cfg.seeds[0]; })) {
+    cfg.seed = cfg.seeds[0];
+    cfg.seeds.clear();
+  }
+  out.nets = cfg.seeds.empty() || backend->mixes_seeds() ? backend->train(nets, *job.data, cfg, progress)
+                                                         : train_by_seed(*backend, nets, *job.data, cfg, progress);
   out.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (out.nets.size() != nets.size()) throw std::logic_error("backend " + out.backend + " returned wrong result count");
   const long long steps_per_epoch = (long long)(job.data->train_count() / std::size_t(cfg.batch));
