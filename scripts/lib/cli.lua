@@ -1,6 +1,6 @@
 -- The command line every experiment script shares:
 --   shadenet scripts/NAME.lua [--quick] [--shard i/n] [--out DIR] [--backend cpu|gl|auto]
---                             [--data poses|cloth] [--ggx default|thesis] [--runs-per-job N] [--help]
+--                             [--data poses|cloth] [--ggx thesis|gold] [--runs-per-job N] [--help]
 -- An unknown option is an error listing the valid ones. Without --shard, a Slurm job array
 -- (SLURM_ARRAY_TASK_ID / SLURM_ARRAY_TASK_COUNT) picks the shard, so `sbatch --array=0-7`
 -- (or 1-8) spreads a sweep over 8 machines with no extra flag.
@@ -12,7 +12,7 @@ local common = {
   { flag = "--out", value = "DIR", help = "write results to DIR instead of results/NAME" },
   { flag = "--backend", choices = { "cpu", "gl", "auto" }, help = "training backend (default: the script's choice)" },
   { flag = "--data", choices = { "poses", "cloth" }, help = "training data: the cloth in 5 poses (default, covers the normal sphere) or the thesis' hanging cloth alone" },
-  { flag = "--ggx", choices = { "default", "thesis" }, help = "GGX ground truth: the gold metal (default) or calibrated to the thesis' all-zeros MSE (diffuse 0.58, ambient 0.2)" },
+  { flag = "--ggx", choices = { "thesis", "gold" }, help = "GGX ground truth: calibrated to the thesis' all-zeros MSE (the default: the gold metal plus diffuse 0.58, ambient 0.2) or the gold metal alone" },
   { flag = "--runs-per-job", value = "N", help = "train at most N runs in one job (default: every run that may share one, seeds included; fewer lose less to Ctrl-C)" },
   { flag = "--help", help = "print this help" },
 }

