@@ -6,101 +6,150 @@
 #include <string>
 #include <vector>
 
+#define SN_SSIM_INLINE inline __attribute__((always_inline))
+
 namespace sn::io {
 
 namespace {
 
 constexpr double kSigma = 1.5, kC1 = 0.01 * 0.01, kC2 = 0.03 * 0.03;
+constexpr int kR = kSsimRadius, kTaps = 2 * kSsimRadius + 1;
 
-// The window of a pixel at least kSsimRadius from the border never leaves the image, so the
-// averaged pixels need no edge rule ("reflect" in scikit-image): only those are filtered.
-// Horizontal pass over every row for the interior columns, then vertical for the interior rows;
-// the five planes (x, y, x^2, y^2, xy) in one sweep.
-struct Moments {
-  double x, y, xx, yy, xy;
-};
-
-// Only the pixels [x0, x1] x [y0, y1] (interior ones: a mask's bounding box) are filtered.
+// Only the pixels [x0, x1] x [y0, y1] (interior ones: a mask's bounding box) are averaged; their
+// windows never leave the image, so the averaged pixels need no edge rule ("reflect" in
+// scikit-image).
 struct Box {
   int x0, y0, x1, y1;
 };
-std::vector<Moments> blur_interior(const std::vector<double>& a, const std::vector<double>& b, int w, int h,
-                                   const double* k, const Box& box) {
-  const int r = kSsimRadius;
-  std::vector<Moments> rows(size_t(w) * h), out(size_t(w) * h);
-  for (int y = box.y0 - r; y <= box.y1 + r; ++y)
-    for (int x = box.x0; x <= box.x1; ++x) {
-      Moments m{0, 0, 0, 0, 0};
-      for (int d = -r; d <= r; ++d) {
-        const size_t i = size_t(y) * w + x + d;
-        const double kv = k[d + r], va = a[i], vb = b[i];
-        m.x += kv * va, m.y += kv * vb, m.xx += kv * va * va, m.yy += kv * vb * vb, m.xy += kv * va * vb;
+
+// One channel of the box, laid out for the filter: a and b over the box's rows widened by the
+// radius (`rows` of `span` doubles, `span` = width + 2 radius), the mask over the box (1 where
+// averaged, 0 elsewhere and in the padding to a whole vector), and room for the five filtered
+// planes (x, y, x^2, y^2, xy) of the horizontal pass.
+struct Planes {
+  int width, height, rows, span;  // width: the box's, padded to a multiple of 8
+  const double *a, *b, *mask;
+  double* h;  // 5 planes of rows x width
+};
+
+// The channel's SSIM summed over its averaged pixels, in vectors V of doubles. Each plane's
+// taps are summed in the window's order, as a direct sum would.
+template <class V>
+SN_SSIM_INLINE double channel_sum(const Planes& P, const double* k) {
+  constexpr int L = int(sizeof(V) / sizeof(double));
+  typedef V U __attribute__((aligned(8)));  // a vector at any double
+  const size_t plane = size_t(P.rows) * P.width;
+  for (int j = 0; j < P.rows; ++j)
+    for (int x = 0; x < P.width; x += L) {
+      V sx{}, sy{}, sxx{}, syy{}, sxy{};
+      for (int d = 0; d < kTaps; ++d) {
+        const V va = *(const U*)(P.a + size_t(j) * P.span + x + d), vb = *(const U*)(P.b + size_t(j) * P.span + x + d);
+        const V ka = k[d] * va, kb = k[d] * vb;
+        sx += ka, sy += kb, sxx += ka * va, syy += kb * vb, sxy += ka * vb;
       }
-      rows[size_t(y) * w + x] = m;
+      double* o = P.h + size_t(j) * P.width + x;
+      *(U*)o = sx, *(U*)(o + plane) = sy, *(U*)(o + 2 * plane) = sxx, *(U*)(o + 3 * plane) = syy;
+      *(U*)(o + 4 * plane) = sxy;
     }
-  for (int y = box.y0; y <= box.y1; ++y)
-    for (int x = box.x0; x <= box.x1; ++x) {
-      Moments m{0, 0, 0, 0, 0};
-      for (int d = -r; d <= r; ++d) {
-        const Moments& q = rows[size_t(y + d) * w + x];
-        const double kv = k[d + r];
-        m.x += kv * q.x, m.y += kv * q.y, m.xx += kv * q.xx, m.yy += kv * q.yy, m.xy += kv * q.xy;
+  V sum{};
+  for (int y = 0; y < P.height; ++y)
+    for (int x = 0; x < P.width; x += L) {
+      V mx{}, my{}, xx{}, yy{}, xy{};
+      for (int d = 0; d < kTaps; ++d) {
+        const double* q = P.h + size_t(y + d) * P.width + x;
+        mx += k[d] * *(const U*)q, my += k[d] * *(const U*)(q + plane), xx += k[d] * *(const U*)(q + 2 * plane);
+        yy += k[d] * *(const U*)(q + 3 * plane), xy += k[d] * *(const U*)(q + 4 * plane);
       }
-      out[size_t(y) * w + x] = m;
+      const V vx = xx - mx * mx, vy = yy - my * my, cxy = xy - mx * my;
+      const V s = (2 * mx * my + kC1) * (2 * cxy + kC2) / ((mx * mx + my * my + kC1) * (vx + vy + kC2));
+      sum += *(const U*)(P.mask + size_t(y) * P.width + x) * s;
     }
-  return out;
+  double total = 0;
+  for (int i = 0; i < L; ++i) total += sum[i];
+  return total;
+}
+
+using d2 = double __attribute__((vector_size(16)));
+using d8 = double __attribute__((vector_size(64)));
+double channel_sum_sse2(const Planes& P, const double* k) { return channel_sum<d2>(P, k); }
+__attribute__((target("avx512f,avx2,fma"))) double channel_sum_avx512(const Planes& P, const double* k) {
+  return channel_sum<d8>(P, k);
 }
 
 }  // namespace
 
+int ssim_widest_lanes() {
+  __builtin_cpu_init();
+  return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") ? 8 : 2;
+}
+
 double ssim(const Image& a, const Image& b, int channels, const Image* mask, int mask_channel) {
+  static const int lanes = ssim_widest_lanes();
+  return ssim_lanes(lanes, a, b, channels, mask, mask_channel);
+}
+
+double ssim_lanes(int lanes, const Image& a, const Image& b, int channels, const Image* mask, int mask_channel) {
+  if (lanes != 2 && (lanes != 8 || ssim_widest_lanes() < 8))
+    throw std::invalid_argument("ssim: no " + std::to_string(lanes) + "-lane filter on this CPU");
   if (a.width != b.width || a.height != b.height || a.channels != b.channels)
     throw std::invalid_argument("ssim: images differ in size: " + std::to_string(a.width) + "x" + std::to_string(a.height) +
                                 "x" + std::to_string(a.channels) + " vs " + std::to_string(b.width) + "x" +
                                 std::to_string(b.height) + "x" + std::to_string(b.channels));
-  const int w = a.width, h = a.height, win = 2 * kSsimRadius + 1;
-  if (w < win || h < win)
+  const int w = a.width, h = a.height;
+  if (w < kTaps || h < kTaps)
     throw std::invalid_argument("ssim: images of " + std::to_string(w) + "x" + std::to_string(h) +
-                                " are smaller than the " + std::to_string(win) + "x" + std::to_string(win) + " window");
+                                " are smaller than the " + std::to_string(kTaps) + "x" + std::to_string(kTaps) + " window");
   if (channels < 0 || channels > a.channels) channels = a.channels;
   if (mask && (mask->width != w || mask->height != h || mask_channel < 0 || mask_channel >= mask->channels))
     throw std::invalid_argument("ssim: the mask does not match the images (size, or channel " +
                                 std::to_string(mask_channel + 1) + " of " + std::to_string(mask->channels) + ")");
-  double k[2 * kSsimRadius + 1], ksum = 0;
-  for (int d = -kSsimRadius; d <= kSsimRadius; ++d) ksum += k[d + kSsimRadius] = std::exp(-0.5 * d * d / (kSigma * kSigma));
+  double k[kTaps], ksum = 0;
+  for (int d = -kR; d <= kR; ++d) ksum += k[d + kR] = std::exp(-0.5 * d * d / (kSigma * kSigma));
   for (double& v : k) v /= ksum;
 
   // The interior pixels that are averaged, and their bounding box (all of the interior
   // without a mask): a mesh covering part of the frame filters only around itself.
-  const int r = kSsimRadius;
   Box box{w, h, -1, -1};
-  for (int py = r; py < h - r; ++py)
-    for (int px = r; px < w - r; ++px)
-      if (!mask || mask->at(px, py, mask_channel) > 0.5f)
+  size_t count = 0;
+  for (int py = kR; py < h - kR; ++py)
+    for (int px = kR; px < w - kR; ++px)
+      if (!mask || mask->at(px, py, mask_channel) > 0.5f) {
         box = {std::min(box.x0, px), std::min(box.y0, py), std::max(box.x1, px), std::max(box.y1, py)};
-  if (box.x1 < 0) throw std::invalid_argument("ssim: the mask leaves no pixel at least 5 pixels inside the border");
-  const size_t n = size_t(w) * h;
-  double total = 0;
-  for (int c = 0; c < channels; ++c) {
-    std::vector<double> x(n), y(n);
-    for (size_t i = 0; i < n; ++i) {
-      x[i] = a.pixels[i * a.channels + c], y[i] = b.pixels[i * b.channels + c];
-      if (!std::isfinite(x[i]) || !std::isfinite(y[i]))
-        throw std::invalid_argument("ssim: pixel (" + std::to_string(i % w + 1) + ", " + std::to_string(i / w + 1) +
-                                    ") channel " + std::to_string(c + 1) + " is not a finite number");
-    }
-    const auto m = blur_interior(x, y, w, h, k, box);
-    double sum = 0;
-    size_t count = 0;
-    for (int py = box.y0; py <= box.y1; ++py)
-      for (int px = box.x0; px <= box.x1; ++px) {
-        if (mask && mask->at(px, py, mask_channel) <= 0.5f) continue;
-        const Moments& q = m[size_t(py) * w + px];
-        const double vx = q.xx - q.x * q.x, vy = q.yy - q.y * q.y, cxy = q.xy - q.x * q.y;
-        sum += (2 * q.x * q.y + kC1) * (2 * cxy + kC2) / ((q.x * q.x + q.y * q.y + kC1) * (vx + vy + kC2));
         ++count;
       }
-    total += sum / double(count);
+  if (box.x1 < 0) throw std::invalid_argument("ssim: the mask leaves no pixel at least 5 pixels inside the border");
+  for (int c = 0; c < channels; ++c)
+    for (int i = 0; i < w * h; ++i)
+      if (!std::isfinite(a.pixels[size_t(i) * a.channels + c]) || !std::isfinite(b.pixels[size_t(i) * b.channels + c]))
+        throw std::invalid_argument("ssim: pixel (" + std::to_string(i % w + 1) + ", " + std::to_string(i / w + 1) +
+                                    ") channel " + std::to_string(c + 1) + " is not a finite number");
+
+  // One buffer per thread, reused: a table scores thousands of images, and fresh pages for
+  // each would cost more than the filter.
+  Planes P;
+  P.width = (box.x1 - box.x0 + 1 + 7) / 8 * 8;
+  P.height = box.y1 - box.y0 + 1;
+  P.rows = P.height + 2 * kR;
+  P.span = P.width + 2 * kR;
+  const size_t in = size_t(P.rows) * P.span, out = size_t(P.height) * P.width;
+  thread_local std::vector<double> buffer;
+  buffer.assign(2 * in + out + 5 * size_t(P.rows) * P.width, 0.0);
+  double *pa = buffer.data(), *pb = pa + in, *pm = pb + in;
+  P.a = pa, P.b = pb, P.mask = pm, P.h = pm + out;
+  for (int y = box.y0; y <= box.y1; ++y)
+    for (int x = box.x0; x <= box.x1; ++x)
+      pm[size_t(y - box.y0) * P.width + (x - box.x0)] = !mask || mask->at(x, y, mask_channel) > 0.5f ? 1.0 : 0.0;
+  double total = 0;
+  for (int c = 0; c < channels; ++c) {
+    // Columns beyond the image (the padding) stay 0; their pixels are not averaged.
+    for (int j = 0; j < P.rows; ++j)
+      for (int i = 0; i < P.span; ++i) {
+        const int x = box.x0 - kR + i, y = box.y0 - kR + j;
+        const bool inside = x < w;
+        pa[size_t(j) * P.span + i] = inside ? a.pixels[(size_t(y) * w + x) * a.channels + c] : 0.0;
+        pb[size_t(j) * P.span + i] = inside ? b.pixels[(size_t(y) * w + x) * b.channels + c] : 0.0;
+      }
+    total += (lanes == 8 ? channel_sum_avx512(P, k) : channel_sum_sse2(P, k)) / double(count);
   }
   return total / channels;
 }

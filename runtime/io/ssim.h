@@ -18,4 +18,10 @@ constexpr int kSsimRadius = 5;  // the window is 2 * 5 + 1 pixels wide
 // are narrower or lower than the window, or no pixel is left to average.
 double ssim(const Image& a, const Image& b, int channels = -1, const Image* mask = nullptr, int mask_channel = 3);
 
+// ssim with the filter in vectors of `lanes` doubles: 2 (SSE2, every x86-64 CPU) or 8 (AVX-512,
+// where the CPU has it); ssim uses the widest. For tests of each path.
+int ssim_widest_lanes();
+double ssim_lanes(int lanes, const Image& a, const Image& b, int channels = -1, const Image* mask = nullptr,
+                  int mask_channel = 3);
+
 }  // namespace sn::io
