@@ -223,14 +223,16 @@ SN_INLINE void cols_backward(const float* W, int inpad, int out, const typename 
 }
 
 // G[j][:] += sum_s d[j][s] * aT[s][:] for R rows: the weight gradient as outer products, with
-// the minibatch (s) as the reduction and 8 inputs (of each network) per vector.
-template <int R, class Mode>
+// the minibatch (s) as the reduction and 8 inputs (of each network) per vector. kAdd false:
+// G[j][:] = the sum (a minibatch's first block, so the gradient needs no clearing per step).
+template <int R, class Mode, bool kAdd>
 SN_INLINE void rows_gradient(float* G, int inpad, const float* d, const float* aT) {
   using Gv = typename Mode::G;
   constexpr int k = Mode::kPar, lanes = kLanesOf<Mode>;
   for (int c = 0; c < inpad; c += 8) {
     Gv acc[R];
-    for (int j = 0; j < R; ++j) acc[j] = *reinterpret_cast<const Gv*>(G + (std::size_t(j) * inpad + c) * k);
+    for (int j = 0; j < R; ++j)
+      acc[j] = kAdd ? *reinterpret_cast<const Gv*>(G + (std::size_t(j) * inpad + c) * k) : Gv{};
     for (int s = 0; s < Mode::kSamples; ++s) {
       const Gv a = *reinterpret_cast<const Gv*>(aT + (std::size_t(s) * inpad + c) * k);
       for (int j = 0; j < R; ++j) acc[j] += Mode::w(d + j * lanes + s * k) * a;
@@ -269,12 +271,16 @@ struct Backward {
     cols_backward<R, Mode>(W + i * Mode::kPar, inpad, out, d, prev + i);
   }
 };
-template <int R, class Mode>
-struct Gradient {
+template <int R, class Mode, bool kAdd>
+struct GradientOf {
   static SN_INLINE void run(int o, float* G, int inpad, const float* d, const float* aT) {
-    rows_gradient<R, Mode>(G + std::size_t(o) * inpad * Mode::kPar, inpad, d + o * kLanesOf<Mode>, aT);
+    rows_gradient<R, Mode, kAdd>(G + std::size_t(o) * inpad * Mode::kPar, inpad, d + o * kLanesOf<Mode>, aT);
   }
 };
+template <int R, class Mode>
+using Gradient = GradientOf<R, Mode, true>;
+template <int R, class Mode>
+using GradientFirst = GradientOf<R, Mode, false>;
 
 // Which rows each network of a view reads: rows[h][first + s] for network h's sample s (each
 // its own minibatch: a pair's networks may shuffle with different seeds), or, where rows[h] is
@@ -417,8 +423,9 @@ SN_INLINE int step_impl(const View<Mode>& V, const float* x, const float* y, Row
   constexpr int k = Mode::kPar, B = Mode::kSamples;
   const Layout& S = V.S;
   const float* p = V.p();
+  // The gradient is stored by the minibatch's first block and added to by the others: the
+  // floats no block writes (padding) stay 0 from the arena's start.
   float* g = V.g();
-  std::memset(g, 0, S.P * k * sizeof(float));
   const int outputs = S.out[S.L - 1];
   const float scale = 2.0f / float(batch * outputs);  // l2's: d mean(e^2) / d y'
   const float mean = 1.0f / float(batch * outputs);
@@ -482,9 +489,14 @@ SN_INLINE int step_impl(const View<Mode>& V, const float* x, const float* y, Row
         transpose8(r);
         Vec u[8];  // the sums are of floats, whatever the units
         for (int q = 0; q < 8; ++q) u[q] = (Vec)r[q];
-        *reinterpret_cast<Vec*>(gb + c * k) += ((u[0] + u[4]) + (u[1] + u[5])) + ((u[2] + u[6]) + (u[3] + u[7]));
+        const Vec sum = ((u[0] + u[4]) + (u[1] + u[5])) + ((u[2] + u[6]) + (u[3] + u[7]));
+        Vec& to = *reinterpret_cast<Vec*>(gb + c * k);
+        to = first == 0 ? sum : to + sum;
       }
-      in_groups<Gradient, Mode>(out, g + S.woff[l] * k, inpad, reinterpret_cast<const float*>(dl), aT);
+      if (first == 0)
+        in_groups<GradientFirst, Mode>(out, g + S.woff[l] * k, inpad, reinterpret_cast<const float*>(dl), aT);
+      else
+        in_groups<Gradient, Mode>(out, g + S.woff[l] * k, inpad, reinterpret_cast<const float*>(dl), aT);
       if (l == 0) break;
       Vec* prev = V.d(cur ^ 1);
       in_groups<Backward, Mode>(in, p + S.woff[l] * k, inpad, out, dl, prev);
@@ -549,8 +561,12 @@ SN_INLINE double loss_impl(const View<Mode>& V, const float* x, const float* y, 
       loss_both(lf, diff, t, lv, lg);
       sq += lv;
     }
-    static_assert(std::is_same_v<Vec, v8>, "validation runs 8 lanes");
-    sum += double(hsum(sq));
+    if constexpr (kLanesOf<Mode> == 16) {  // two blocks of 8, summed as 8-lane kernels sum them
+      sum += double(hsum(v8(__builtin_shufflevector(sq, sq, 0, 1, 2, 3, 4, 5, 6, 7))));
+      sum += double(hsum(v8(__builtin_shufflevector(sq, sq, 8, 9, 10, 11, 12, 13, 14, 15))));
+    } else {
+      sum += double(hsum(sq));
+    }
   }
   return count ? sum / (double(count) * outputs) : 0.0;
 }
@@ -712,6 +728,13 @@ SN_KERNEL_SET(avx2, Avx2, __attribute__((target("avx2,fma"))), One, v8)
 #define SN_AVX512 __attribute__((target("avx512f,avx512vl,avx512dq,avx512bw,avx2,fma")))
 SN_KERNEL_SET(avx512, Avx512, SN_AVX512, Wide, v16)
 
+// Validation with 16 samples per register (AVX-512 only).
+template <int H>
+SN_AVX512 double loss_wide(const Arena& A, const float* x, const float* y, std::size_t n, const LossArgs& lf) {
+  FlushDenormals ftz;
+  return loss_impl<H>(View<Wide>(A), x, y, n, lf);
+}
+
 // Two networks in lock-step (AVX-512 only).
 template <int H>
 SN_AVX512 int step_pair(const Arena& A, const float* x, const float* y, RowLists rows, int batch,
@@ -735,10 +758,10 @@ struct Kernels {
 template <int H>
 Kernels kernels_for(Kernel k) {
   if (k == Kernel::avx512)
-    // Validation, rows through forward() and unit counts are avx2's 8-lane code: compiled again
-    // with AVX-512 encodings it bought nothing (docs/performance.md), and each instantiation
-    // costs compile time.
-    return {step_avx512<H>, loss_avx2<H>, forward_avx2<H>, counts_avx2<H>, lanes_avx512<H>, step_pair<H>};
+    // Validation runs 16 samples per register; rows through forward() and unit counts are
+    // avx2's 8-lane code: compiled again with AVX-512 encodings it bought nothing
+    // (docs/performance.md), and each instantiation costs compile time.
+    return {step_avx512<H>, loss_wide<H>, forward_avx2<H>, counts_avx2<H>, lanes_avx512<H>, step_pair<H>};
   if (k == Kernel::avx2) return {step_avx2<H>, loss_avx2<H>, forward_avx2<H>, counts_avx2<H>, lanes_avx2<H>, nullptr};
   return {step_sse2<H>, loss_sse2<H>, forward_sse2<H>, counts_sse2<H>, lanes_sse2<H>, nullptr};
 }

@@ -6,6 +6,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <map>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -104,9 +105,11 @@ TEST_P(CpuVsOracle, ForwardWithin1e5) {
   Dataset d = smooth_dataset(37);  // 29 training rows: not a multiple of 8
   const std::size_t n = d.train_count();
   std::vector<double> pd(p.begin(), p.end());
+  std::map<std::string, double> mse;
   for (const auto& k : cpu_kernels_available()) {
     use_cpu_kernel(k);
     CpuNet net(s, p.data());
+    mse[k] = net.mse(d.train_x.data(), d.train_y.data(), n);
     std::vector<float> out(n * 3);
     net.forward(d.train_x.data(), n, out.data());
     double worst = 0;
@@ -117,10 +120,11 @@ TEST_P(CpuVsOracle, ForwardWithin1e5) {
       for (int o = 0; o < 3; ++o) worst = std::max(worst, std::fabs(double(out[r * 3 + o]) - y[o]));
     }
     EXPECT_LE(worst, 1e-5) << k;
-    EXPECT_NEAR(net.mse(d.train_x.data(), d.train_y.data(), n),
-                oracle::mse(s, pd, d.train_x.data(), d.train_y.data(), n), 1e-6)
-        << k;
+    EXPECT_NEAR(mse[k], oracle::mse(s, pd, d.train_x.data(), d.train_y.data(), n), 1e-6) << k;
   }
+  // Validation in 16 lanes (avx512) sums its two halves as the 8-lane kernel sums its blocks:
+  // the same number to the bit, so a table does not depend on the kernel that validated it.
+  if (mse.count("avx512")) EXPECT_EQ(mse["avx512"], mse["avx2"]);
 }
 
 TEST_P(CpuVsOracle, OneAdamStepWithin1e5) {
