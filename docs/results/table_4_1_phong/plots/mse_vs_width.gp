@@ -1,5 +1,5 @@
 set terminal pngcairo size 800,520 font 'DejaVu Sans,10' enhanced
-set output "results/table_4_1_phong/plots/mse_vs_width.png.tmp.png"
+set output "mse_vs_width.png.tmp.png"
 set datafile separator ','
 set key top right box opaque
 set grid xtics ytics lc rgb '#dddddd'
@@ -10,11 +10,11 @@ set ylabel "median min. validation MSE"
 set logscale y
 set format y '%.0e'
 set xtics 2
-plot "results/table_4_1_phong/plots/mse_vs_width.csv" skip 1 using 2:(strcol(1) eq "2 layers" ? $3 : NaN) with linespoints lw 2 pt 7 ps 0.8 title "2 layers", \
-     "results/table_4_1_phong/plots/mse_vs_width.csv" skip 1 using 2:(strcol(1) eq "4 layers" ? $3 : NaN) with linespoints lw 2 pt 7 ps 0.8 title "4 layers", \
-     "results/table_4_1_phong/plots/mse_vs_width.csv" skip 1 using 2:(strcol(1) eq "6 layers" ? $3 : NaN) with linespoints lw 2 pt 7 ps 0.8 title "6 layers", \
-     "results/table_4_1_phong/plots/mse_vs_width.csv" skip 1 using 2:(strcol(1) eq "8 layers" ? $3 : NaN) with linespoints lw 2 pt 7 ps 0.8 title "8 layers", \
-     "results/table_4_1_phong/plots/mse_vs_width.csv" skip 1 using 2:(strcol(1) eq "10 layers" ? $3 : NaN) with linespoints lw 2 pt 7 ps 0.8 title "10 layers", \
-     "results/table_4_1_phong/plots/mse_vs_width.csv" skip 1 using 2:(strcol(1) eq "12 layers" ? $3 : NaN) with linespoints lw 2 pt 7 ps 0.8 title "12 layers", \
-     "results/table_4_1_phong/plots/mse_vs_width.csv" skip 1 using 2:(strcol(1) eq "thesis (all depths)" ? $3 : NaN) with points pt 7 ps 1.0 lc rgb "#999999" title "thesis (all depths)"
+plot "mse_vs_width.csv" skip 1 using 2:(strcol(1) eq "2 layers" ? $3 : NaN) with linespoints lw 2 pt 7 ps 0.8 title "2 layers", \
+     "mse_vs_width.csv" skip 1 using 2:(strcol(1) eq "4 layers" ? $3 : NaN) with linespoints lw 2 pt 7 ps 0.8 title "4 layers", \
+     "mse_vs_width.csv" skip 1 using 2:(strcol(1) eq "6 layers" ? $3 : NaN) with linespoints lw 2 pt 7 ps 0.8 title "6 layers", \
+     "mse_vs_width.csv" skip 1 using 2:(strcol(1) eq "8 layers" ? $3 : NaN) with linespoints lw 2 pt 7 ps 0.8 title "8 layers", \
+     "mse_vs_width.csv" skip 1 using 2:(strcol(1) eq "10 layers" ? $3 : NaN) with linespoints lw 2 pt 7 ps 0.8 title "10 layers", \
+     "mse_vs_width.csv" skip 1 using 2:(strcol(1) eq "12 layers" ? $3 : NaN) with linespoints lw 2 pt 7 ps 0.8 title "12 layers", \
+     "mse_vs_width.csv" skip 1 using 2:(strcol(1) eq "thesis (all depths)" ? $3 : NaN) with points pt 7 ps 1.0 lc rgb "#999999" title "thesis (all depths)"
 unset output
