@@ -48,6 +48,7 @@ function exp.start(name, args, o)
     load_at_start = results.load_average(),
   }, E)
   exp.model_params.ggx = exp.ggx_presets[self.ggx_choice]
+  exp.ggx_used = false  -- this experiment's notes name the GGX only if it uses one
   local shard = opts.shard and string.format(" shard %d/%d%s", opts.shard.index, opts.shard.count,
                                              opts.shard.from and " (" .. opts.shard.from .. ")" or "") or ""
   print(string.format("%s%s%s: results in %s/", name, opts.quick and " --quick" or "", shard, R.dir))

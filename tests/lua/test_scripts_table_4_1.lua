@@ -37,6 +37,7 @@ assert(cell(12, 12) < cell(2, 2) / 1.4, "12x12 learns Phong better than 2x2")
 assert(info.quick == true and info.backend.used == "cpu" and info.environment.gl.renderer, "run.json records mode, backend, renderer")
 local md = C.read(A .. "/table.md")
 assert(md:find("| hidden layers \\ width |", 1, true) and md:find("(0.002158)", 1, true), "markdown grid with thesis values")
+assert(not md:find("GGX", 1, true), "a Phong table's notes name no GGX")
 
 -- Sharded in two, merged: the same table.
 local S1, S2, M = root .. "/s1", root .. "/s2", root .. "/merged"
