@@ -7,7 +7,8 @@
 #     --relocate      make a carried build/ work in this copy of the repository (below)
 #     --build         configure and build build/ (Release) first; by default build/ must exist
 #     --skip S,...    leave steps out: gl_info, train, render, tables_4_5_4_7, table_4_1, ctest
-#     --libs DIR      prepend DIR to LD_LIBRARY_PATH (runtime libraries carried to the machine)
+#     --libs DIR      prepend DIR to LD_LIBRARY_PATH (runtime libraries carried to the machine:
+#                     tools/pack_runtime.sh packs them)
 #     --shared DIR    the shared meshes folder (../shared) when it is not beside the repository
 #
 # Steps, each with a time limit, timed, its output in OUTDIR/NAME.log; one failing or running out

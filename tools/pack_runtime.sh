@@ -1,0 +1,81 @@
+#!/usr/bin/env bash
+# What a machine without shadenet's dependencies needs to run it (the lent GPU machines: README.md,
+# "On a GPU"), packed in parts small enough for one device call each (a call carries at most
+# 64 MiB, the repository's 16 MiB included): the shared libraries build/shadenet and
+# build/tests/shadenet_unit load beyond the C runtime and the GL loaders, and the build's
+# programs and test files (build/ without CMake's objects and the core library).
+#
+#   tools/pack_runtime.sh [--part-mib N] [--level L] [--list] OUTDIR
+#     --part-mib N   each part at most N MiB (default 40)
+#     --level L      xz level (default 6: about 90 MB in all; 0 packs in seconds, larger)
+#     --list         print the libraries that would be packed, pack nothing
+#
+# writes OUTDIR/runtime.tar.xz.part-aa, -ab, ... and OUTDIR/MANIFEST (each library, its size,
+# each part's sha256). Left out, because the other machine has its own and a foreign copy would
+# break it: glibc's libraries and the loader, libstdc++ and libgcc_s (newer there), and the
+# GL/EGL loaders (glvnd: NVIDIA's driver or the carried .gl packages). xz, because Python's lzma
+# unpacks it where no xz command is. On the other machine, with every part in one folder DIR:
+#
+#   cat DIR/runtime.tar.xz.part-* | xz -d | tar -x -C /opt/shadenet   # lib/ and build/
+#   ln -s /opt/shadenet/build build
+#   tools/gpu_bench.sh --relocate --libs /opt/shadenet/lib OUTDIR
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+part_mib=40 level=6 list=0
+usage() { sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//'; }
+while [ $# -gt 0 ]; do
+  case $1 in
+    --part-mib) part_mib=${2:?--part-mib needs a number of MiB}; shift ;;
+    --level) level=${2:?--level needs an xz level, 0-9}; shift ;;
+    --list) list=1 ;;
+    -h|--help) usage; exit 0 ;;
+    -*) echo "pack_runtime.sh: unknown option '$1' (valid: --part-mib N, --level L, --list, --help)" >&2; exit 2 ;;
+    *) break ;;
+  esac
+  shift
+done
+[[ $part_mib =~ ^[1-9][0-9]*$ ]] || { echo "pack_runtime.sh: --part-mib must be a whole number of MiB, got '$part_mib'" >&2; exit 2; }
+[[ $level =~ ^[0-9]$ ]] || { echo "pack_runtime.sh: --level must be 0-9, got '$level'" >&2; exit 2; }
+if [ $list = 0 ]; then
+  [ $# -eq 1 ] || { echo "pack_runtime.sh: expected one OUTDIR after the options (got $#)" >&2; usage >&2; exit 2; }
+fi
+
+programs=(build/shadenet build/tests/shadenet_unit)
+for p in "${programs[@]}"; do
+  [ -x "$p" ] || { echo "pack_runtime.sh: $p is missing: build first (README.md)" >&2; exit 1; }
+done
+
+# The libraries ldd resolves for the programs ("name path"), less the ones the other machine brings.
+keep='^(linux-vdso|ld-linux|libc|libm|libmvec|libpthread|libdl|librt|libresolv|libutil|libanl|libstdc\+\+|libgcc_s|libGL|libEGL|libGLX|libGLdispatch|libOpenGL|libGLES)[.-]'
+missing=$(ldd "${programs[@]}" | awk '/not found/ { print $1 }' | sort -u)
+[ -z "$missing" ] || { echo "pack_runtime.sh: ldd finds no $missing here" >&2; exit 1; }
+libs=$(ldd "${programs[@]}" | awk '$2 == "=>" && $3 ~ /^\// { print $1, $3 }' | sort -u |
+       while read -r name path; do
+         [[ $name =~ $keep ]] || echo "$name $path"
+       done)
+if [ $list = 1 ]; then
+  echo "$libs" | cut -d' ' -f2
+  exit 0
+fi
+
+out=$1
+mkdir -p "$out"
+stage=$(mktemp -d)
+trap 'rm -rf "$stage"' EXIT
+mkdir "$stage/lib"
+# Each library's file under the name the programs ask for.
+echo "$libs" | while read -r name path; do cp -L "$path" "$stage/lib/$name"; done
+count=$(ls "$stage/lib" | wc -l)
+rm -f "$out"/runtime.tar.xz.part-* "$out/MANIFEST"
+# With the libraries, the build's programs and CTest files (the test suite runs from build/),
+# not its objects and the core library.
+skip=(--exclude=CMakeFiles --exclude='*.a' --exclude='*.o')
+tar -c -C "$stage" lib -C "$PWD" "${skip[@]}" build | xz -T0 -"$level" | split -b "${part_mib}M" - "$out/runtime.tar.xz.part-"
+bytes=$(du -scb "$stage/lib" "${skip[@]}" build | tail -1 | cut -f1)
+{
+  echo "# tools/pack_runtime.sh: $count libraries and build/, $bytes bytes unpacked, xz -$level, parts of at most $part_mib MiB"
+  (cd "$stage/lib" && ls -l --time-style=+ | awk 'NR > 1 { print $5, "lib/" $NF }')
+  (cd "$out" && sha256sum runtime.tar.xz.part-*)
+} >"$out/MANIFEST"
+echo "pack_runtime.sh: $count libraries and build/ ($((bytes / 1048576)) MiB) in $(ls "$out"/runtime.tar.xz.part-* | wc -l) parts under $out/"
