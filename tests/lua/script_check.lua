@@ -36,6 +36,20 @@ function C.run(script, args, env)
   return code, out
 end
 
+-- Runs a shell command: true when it exits 0.
+function C.sh(cmd)
+  local status = os.execute(cmd)
+  return status == 0 or status == true
+end
+
+-- A shell command's output, stdout and stderr.
+function C.output(cmd)
+  local p = io.popen(cmd .. " 2>&1")
+  local text = p:read("*a")
+  p:close()
+  return text
+end
+
 -- Runs and asserts success.
 function C.ok(script, args, env)
   local code, out = C.run(script, args, env)

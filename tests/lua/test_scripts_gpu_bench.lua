@@ -6,10 +6,7 @@ local sn = require "shadenet"
 local C = require "script_check"
 local results = require "lib.results"
 
-local function sh(cmd)
-  local status = os.execute(cmd)
-  return status == 0 or status == true
-end
+local sh = C.sh
 local function read(path) return assert(results.read_file(path), path .. " is missing") end
 
 local base = C.tmpdir("gpu_bench")

@@ -2,18 +2,7 @@
 -- archive whose libraries are every one the programs load beyond the C runtime and the GL
 -- loaders, and whose build/ runs from the unpacked libraries alone; bad options are refused.
 local C = require "script_check"
-local results = require "lib.results"
-
-local function sh(cmd)
-  local status = os.execute(cmd)
-  return status == 0 or status == true
-end
-local function out_of(cmd)
-  local p = io.popen(cmd .. " 2>&1")
-  local text = p:read("*a")
-  p:close()
-  return text
-end
+local sh, out_of = C.sh, C.output
 
 local base = C.tmpdir("pack_runtime")
 local listed = {}
@@ -28,7 +17,7 @@ end
 -- Parts of at most 30 MiB at the fastest level; their sha256 in the manifest.
 local parts = base .. "/parts"
 assert(sh(("tools/pack_runtime.sh --level 0 --part-mib 30 %s > %s/pack.out 2>&1"):format(parts, base)),
-       results.read_file(base .. "/pack.out"))
+       C.read(base .. "/pack.out"))
 local sizes = out_of("stat -c %s " .. parts .. "/runtime.tar.xz.part-*")
 local n = 0
 for size in sizes:gmatch("%d+") do
