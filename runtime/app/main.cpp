@@ -82,7 +82,7 @@ bool shows_a_view(lua_State* L) {
 
 int main(int argc, char** argv) {
   // Images and datasets of megabytes come and go by the thousand in a sweep (a render, its
-  // clamp, SSIM's planes per run): kept in the heap instead of mapped and unmapped each time,
+  // clamp per unseen view): kept in the heap instead of mapped and unmapped each time,
   // their pages are not zeroed by the kernel again and again.
   mallopt(M_MMAP_THRESHOLD, 256 << 20);
   mallopt(M_TRIM_THRESHOLD, 512 << 20);
