@@ -95,6 +95,11 @@ std::vector<Unit> plan_units(const std::vector<std::unique_ptr<CpuNet>>& work,
       }
     units.push_back(std::move(u));
   }
+  // Largest first: the threads take units in this order, and a large one taken last would leave
+  // the other threads idle at every epoch's end (a sweep lists its small networks first).
+  std::stable_sort(units.begin(), units.end(), [&](const Unit& a, const Unit& b) {
+    return work[a.net[0]]->spec().param_count() > work[b.net[0]]->spec().param_count();
+  });
   return units;
 }
 
