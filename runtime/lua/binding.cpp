@@ -16,6 +16,24 @@ thread_local lua_State* g_running = nullptr;  // the thread of the innermost gua
 
 lua_State* running_state(lua_State* fallback) { return g_running ? g_running : fallback; }
 
+void owned_allocated(lua_State* L, std::size_t bytes) {
+  // Garbage renders held at most: a few hundred of a table's, and far below a sweep's memory.
+  constexpr double kOwnedPerCollect = 64.0 * (1 << 20);
+  if (bytes == 0) return;
+  static const char kKey = 0;  // its address keys the count in the registry
+  lua_pushlightuserdata(L, const_cast<char*>(&kKey));
+  lua_rawget(L, LUA_REGISTRYINDEX);
+  double since = lua_tonumber(L, -1) + double(bytes);
+  lua_pop(L, 1);
+  if (since >= kOwnedPerCollect) {
+    lua_gc(L, LUA_GCCOLLECT, 0);
+    since = 0;
+  }
+  lua_pushlightuserdata(L, const_cast<char*>(&kKey));
+  lua_pushnumber(L, since);
+  lua_rawset(L, LUA_REGISTRYINDEX);
+}
+
 int guarded(lua_State* L, int (*f)(lua_State*)) {
   lua_State* outer = g_running;
   g_running = L;
