@@ -191,11 +191,16 @@ Image clamp_colors(const Image& img, float lo, float hi) {
   if (!(lo <= hi)) throw std::runtime_error("clamp: lo must be <= hi");
   Image out = img;
   const int n = std::min(3, img.channels);
-  for (std::size_t p = 0; p < out.pixels.size(); p += size_t(img.channels))
-    for (int k = 0; k < n; ++k) {
-      float& v = out.pixels[p + size_t(k)];
-      if (v == v) v = std::clamp(v, lo, hi);
-    }
+  // Branch-free, so it vectorizes; NaN stays NaN (both comparisons are false).
+  const auto clamp = [lo, hi](float v) { return v < lo ? lo : hi < v ? hi : v; };
+  float* px = out.pixels.data();
+  const std::size_t count = out.pixels.size() / size_t(img.channels);
+  if (img.channels == 4)
+    for (std::size_t p = 0; p < count; ++p)
+      for (int k = 0; k < 3; ++k) px[4 * p + k] = clamp(px[4 * p + k]);
+  else
+    for (std::size_t p = 0; p < count; ++p)
+      for (int k = 0; k < n; ++k) px[p * img.channels + k] = clamp(px[p * img.channels + k]);
   return out;
 }
 

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -118,10 +120,23 @@ double ssim_lanes(int lanes, const Image& a, const Image& b, int channels, const
         ++count;
       }
   if (box.x1 < 0) throw std::invalid_argument("ssim: the mask leaves no pixel at least 5 pixels inside the border");
-  for (int c = 0; c < channels; ++c)
-    for (int i = 0; i < w * h; ++i)
-      if (!std::isfinite(a.pixels[size_t(i) * a.channels + c]) || !std::isfinite(b.pixels[size_t(i) * b.channels + c]))
-        throw std::invalid_argument("ssim: pixel (" + std::to_string(i % w + 1) + ", " + std::to_string(i / w + 1) +
+  // Non-finite pixels are errors. A pass over every float in integer bit tests (which vectorize)
+  // first; only when it finds one does the scan by channel name it (or find it in a channel
+  // not compared).
+  const auto any_nonfinite = [](const std::vector<float>& v) {
+    uint32_t bad = 0;
+    for (const float f : v) {
+      uint32_t u;
+      std::memcpy(&u, &f, sizeof u);
+      bad |= uint32_t((u & 0x7f800000u) == 0x7f800000u);
+    }
+    return bad != 0;
+  };
+  if (any_nonfinite(a.pixels) || any_nonfinite(b.pixels))
+    for (int c = 0; c < channels; ++c)
+      for (int i = 0; i < w * h; ++i)
+        if (!std::isfinite(a.pixels[size_t(i) * a.channels + c]) || !std::isfinite(b.pixels[size_t(i) * b.channels + c]))
+          throw std::invalid_argument("ssim: pixel (" + std::to_string(i % w + 1) + ", " + std::to_string(i / w + 1) +
                                     ") channel " + std::to_string(c + 1) + " is not a finite number");
 
   // One buffer per thread, reused: a table scores thousands of images, and fresh pages for
@@ -142,13 +157,13 @@ double ssim_lanes(int lanes, const Image& a, const Image& b, int channels, const
   double total = 0;
   for (int c = 0; c < channels; ++c) {
     // Columns beyond the image (the padding) stay 0; their pixels are not averaged.
-    for (int j = 0; j < P.rows; ++j)
-      for (int i = 0; i < P.span; ++i) {
-        const int x = box.x0 - kR + i, y = box.y0 - kR + j;
-        const bool inside = x < w;
-        pa[size_t(j) * P.span + i] = inside ? a.pixels[(size_t(y) * w + x) * a.channels + c] : 0.0;
-        pb[size_t(j) * P.span + i] = inside ? b.pixels[(size_t(y) * w + x) * b.channels + c] : 0.0;
-      }
+    const int x0 = box.x0 - kR, inside = std::min(P.span, w - x0);
+    for (int j = 0; j < P.rows; ++j) {
+      const size_t row = size_t(box.y0 - kR + j) * w + x0;
+      const float *ra = a.pixels.data() + row * a.channels + c, *rb = b.pixels.data() + row * b.channels + c;
+      double *oa = pa + size_t(j) * P.span, *ob = pb + size_t(j) * P.span;
+      for (int i = 0; i < inside; ++i) oa[i] = ra[size_t(i) * a.channels], ob[i] = rb[size_t(i) * b.channels];
+    }
     total += (lanes == 8 ? channel_sum_avx512(P, k) : channel_sum_sse2(P, k)) / double(count);
   }
   return total / channels;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <string>
 
 #include "io/ssim.h"
 
@@ -100,8 +101,18 @@ TEST(Ssim, RefusesWhatItCannotMeasure) {
   EXPECT_THROW(sn::io::ssim(a, small), std::invalid_argument);
   Image none(40, 28, 4, 0.f);
   EXPECT_THROW(sn::io::ssim(a, b, -1, &none, 3), std::invalid_argument);
+  // A channel not compared may hold anything; a compared one is named with the pixel.
+  b.at(7, 2, 2) = INFINITY;
+  EXPECT_NO_THROW(sn::io::ssim(a, b, 2));
   a.at(3, 4, 1) = std::nanf("");
-  EXPECT_THROW(sn::io::ssim(a, b), std::invalid_argument);
+  try {
+    sn::io::ssim(a, b, 2);
+    ADD_FAILURE() << "a NaN was compared";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("pixel (4, 5) channel 2 is not a finite number"), std::string::npos) << e.what();
+  }
+  a.at(3, 4, 1) = 0.5f;
+  EXPECT_THROW(sn::io::ssim(a, b), std::invalid_argument);  // the infinity in channel 3
 }
 
 }  // namespace
