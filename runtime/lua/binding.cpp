@@ -1,5 +1,6 @@
 #include "lua/binding.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -17,15 +18,17 @@ thread_local lua_State* g_running = nullptr;  // the thread of the innermost gua
 lua_State* running_state(lua_State* fallback) { return g_running ? g_running : fallback; }
 
 void owned_allocated(lua_State* L, std::size_t bytes) {
-  // Garbage renders held at most: a few hundred of a table's, and far below a sweep's memory.
-  constexpr double kOwnedPerCollect = 64.0 * (1 << 20);
+  // Garbage held at most: 64 MB (a few hundred of a table's renders), or the Lua heap's size
+  // where that is larger, so a big heap is traversed no more often than its own growth would
+  // make the collector do.
   if (bytes == 0) return;
+  const double limit = std::max(64.0 * (1 << 20), 1024.0 * lua_gc(L, LUA_GCCOUNT, 0));
   static const char kKey = 0;  // its address keys the count in the registry
   lua_pushlightuserdata(L, const_cast<char*>(&kKey));
   lua_rawget(L, LUA_REGISTRYINDEX);
   double since = lua_tonumber(L, -1) + double(bytes);
   lua_pop(L, 1);
-  if (since >= kOwnedPerCollect) {
+  if (since >= limit) {
     lua_gc(L, LUA_GCCOLLECT, 0);
     since = 0;
   }

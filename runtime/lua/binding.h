@@ -61,7 +61,7 @@ std::size_t owned_bytes(const T& t) {
 // Tells the collector that `bytes` more are held by new userdata (owned_bytes). Stepping it as if
 // they were Lua's own allocations made it run a full cycle every dozen renders (the Lua heap
 // is a few MB, a render a few hundred KB): a fifth of a table's unseen-mesh evaluation. It
-// collects once the owned bytes since its last full cycle reach kOwnedPerCollect instead.
+// collects once the owned bytes since its last full cycle reach 64 MB or the Lua heap's size.
 void owned_allocated(lua_State* L, std::size_t bytes);
 
 template <class T>
