@@ -17,16 +17,26 @@ local common = {
   { flag = "--help", help = "print this help" },
 }
 
+-- What a flag takes: its value's name, its choices ("a|b"), or nil (a switch).
+local function value_of(f)
+  return f.value or (f.choices and table.concat(f.choices, "|"))
+end
+
+-- "--flag VALUE", or "--flag" for a switch.
+local function shown(f)
+  return value_of(f) and (f.flag .. " " .. value_of(f)) or f.flag
+end
+
 local function valid_list(flags)
   local names = {}
-  for _, f in ipairs(flags) do names[#names + 1] = f.value and (f.flag .. " " .. f.value) or f.flag end
+  for _, f in ipairs(flags) do names[#names + 1] = shown(f) end
   return table.concat(names, ", ")
 end
 
 function cli.usage(name, flags)
   local lines = { string.format("usage: shadenet scripts/%s.lua [options]", name), "options:" }
   for _, f in ipairs(flags) do
-    lines[#lines + 1] = string.format("  %-24s %s", f.value and (f.flag .. " " .. f.value) or f.flag, f.help)
+    lines[#lines + 1] = string.format("  %-24s %s", shown(f), f.help)
   end
   return table.concat(lines, "\n")
 end
@@ -64,7 +74,6 @@ function cli.parse(args, name, extra, getenv)
   local flags = {}
   for _, f in ipairs(common) do flags[#flags + 1] = f end
   for _, f in ipairs(extra or {}) do flags[#flags + 1] = f end
-  for _, f in ipairs(flags) do f.value = f.value or (f.choices and table.concat(f.choices, "|")) end
   local by_flag = {}
   for _, f in ipairs(flags) do by_flag[f.flag] = f end
   local where = name .. ".lua"
@@ -79,13 +88,13 @@ function cli.parse(args, name, extra, getenv)
       error(string.format("%s: unknown option '%s' (valid: %s)", where, a, valid_list(flags)), 0)
     end
     local v = true
-    if f.value then
+    if value_of(f) then
       v = inline
       if not v then
         i = i + 1
         v = args[i]
       end
-      if not v or v == "" then error(string.format("%s: %s needs a value (%s)", where, flag, f.value), 0) end
+      if not v or v == "" then error(string.format("%s: %s needs a value (%s)", where, flag, value_of(f)), 0) end
     elseif inline then
       error(string.format("%s: %s takes no value", where, flag), 0)
     end
