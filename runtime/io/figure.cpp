@@ -194,13 +194,8 @@ Image clamp_colors(const Image& img, float lo, float hi) {
   // Branch-free, so it vectorizes; NaN stays NaN (both comparisons are false).
   const auto clamp = [lo, hi](float v) { return v < lo ? lo : hi < v ? hi : v; };
   float* px = out.pixels.data();
-  const std::size_t count = out.pixels.size() / size_t(img.channels);
-  if (img.channels == 4)
-    for (std::size_t p = 0; p < count; ++p)
-      for (int k = 0; k < 3; ++k) px[4 * p + k] = clamp(px[4 * p + k]);
-  else
-    for (std::size_t p = 0; p < count; ++p)
-      for (int k = 0; k < n; ++k) px[p * img.channels + k] = clamp(px[p * img.channels + k]);
+  for (std::size_t p = 0; p < out.pixels.size(); p += size_t(img.channels))
+    for (int k = 0; k < n; ++k) px[p + k] = clamp(px[p + k]);
   return out;
 }
 
