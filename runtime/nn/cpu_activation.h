@@ -22,6 +22,9 @@ typedef int v8i __attribute__((vector_size(32)));
 typedef float v16 __attribute__((vector_size(64)));
 typedef int v16i __attribute__((vector_size(64)));
 #define SN_INLINE inline __attribute__((always_inline))
+// A lambda's body is a function of its own, outside the kernel's instruction-set target: only
+// when always inlined does it compile (and run) with the kernel's instructions.
+#define SN_INLINE_LAMBDA __attribute__((always_inline))
 
 // The lane mask type of a vector (what its comparisons give).
 template <class V>
@@ -263,23 +266,23 @@ SN_INLINE void with_builtin(int kind, F&& f) {
 template <class V>
 SN_INLINE V act_any(int kind, const V& z, float p) {
   V a;
-  with_builtin(kind, [&](auto k) { a = act<decltype(k)::value>(z, p); });
+  with_builtin(kind, [&](auto k) SN_INLINE_LAMBDA { a = act<decltype(k)::value>(z, p); });
   return a;
 }
 template <class V>
 SN_INLINE void act_both_any(int kind, const V z, float p, V& a, V& g) {
-  with_builtin(kind, [&](auto k) { act_both<decltype(k)::value>(z, p, a, g); });
+  with_builtin(kind, [&](auto k) SN_INLINE_LAMBDA { act_both<decltype(k)::value>(z, p, a, g); });
 }
 // kFromOutput and act_grad_a for a kind chosen at run time.
 inline bool from_output_any(int kind) {
   bool yes = false;
-  with_builtin(kind, [&](auto k) { yes = kFromOutput<decltype(k)::value>; });
+  with_builtin(kind, [&](auto k) SN_INLINE_LAMBDA { yes = kFromOutput<decltype(k)::value>; });
   return yes;
 }
 template <class V>
 SN_INLINE V act_grad_a_any(int kind, const V& a, float p) {
   V g = a;
-  with_builtin(kind, [&](auto k) {
+  with_builtin(kind, [&](auto k) SN_INLINE_LAMBDA {
     if constexpr (kFromOutput<decltype(k)::value>) g = act_grad_a<decltype(k)::value>(a, p);
   });
   return g;

@@ -175,12 +175,12 @@ struct View {
   Vec* d(int i) const { return reinterpret_cast<Vec*>(scratch + S.o_d[i]); }
 };
 
-// z[j] = b[j] + sum_i W[j][i] a[i] for R rows at once (R independent FMA chains). The
-// accumulators are named variables, not an array: GCC kept an array acc[R] in memory for R < 8
-// (a store and a load around every FMA; 4x4 networks ran at half speed).
-template <int R, class Mode>
+// put(j, b[j] + sum_i W[j][i] a[i]) for R rows at once (R independent FMA chains; put applies the
+// activation and stores). The accumulators are named variables, not an array: GCC kept an array
+// acc[R] in memory for R < 8 (a store and a load around every FMA; 4x4 networks ran at half speed).
+template <int R, class Mode, class Put>
 SN_INLINE void rows_forward(const float* W, int inpad, const float* b, int in, const typename Mode::V* a,
-                            typename Mode::V* z) {
+                            const Put& put) {
   using Vec = typename Mode::V;
   constexpr int k = Mode::kPar;
   const std::size_t st = std::size_t(inpad) * k;
@@ -201,19 +201,21 @@ SN_INLINE void rows_forward(const float* W, int inpad, const float* b, int in, c
     if constexpr (R > 6) c6 += Mode::w(w + 6 * st) * ai;
     if constexpr (R > 7) c7 += Mode::w(w + 7 * st) * ai;
   }
-  if constexpr (R > 0) z[0] = c0;
-  if constexpr (R > 1) z[1] = c1;
-  if constexpr (R > 2) z[2] = c2;
-  if constexpr (R > 3) z[3] = c3;
-  if constexpr (R > 4) z[4] = c4;
-  if constexpr (R > 5) z[5] = c5;
-  if constexpr (R > 6) z[6] = c6;
-  if constexpr (R > 7) z[7] = c7;
+  if constexpr (R > 0) put(0, c0);
+  if constexpr (R > 1) put(1, c1);
+  if constexpr (R > 2) put(2, c2);
+  if constexpr (R > 3) put(3, c3);
+  if constexpr (R > 4) put(4, c4);
+  if constexpr (R > 5) put(5, c5);
+  if constexpr (R > 6) put(6, c6);
+  if constexpr (R > 7) put(7, c7);
 }
 
-// prev[j] = sum_o W[o][j] d[o] for R columns at once.
-template <int R, class Mode>
-SN_INLINE void cols_backward(const float* W, int inpad, int out, const typename Mode::V* d, typename Mode::V* prev) {
+// prev[j] = f'(z_j) sum_o W[o][j] d[o] for R columns at once (grad(j): f'(z_j), applied before
+// the store: a separate pass would store, load and store every unit again).
+template <int R, class Mode, class Grad>
+SN_INLINE void cols_backward(const float* W, int inpad, int out, const typename Mode::V* d, typename Mode::V* prev,
+                             const Grad& grad) {
   using Vec = typename Mode::V;
   constexpr int k = Mode::kPar;
   Vec acc[R];
@@ -222,7 +224,7 @@ SN_INLINE void cols_backward(const float* W, int inpad, int out, const typename 
     const Vec dv = d[o];
     for (int j = 0; j < R; ++j) acc[j] += Mode::w(W + (std::size_t(o) * inpad + j) * k) * dv;
   }
-  for (int j = 0; j < R; ++j) prev[j] = acc[j];
+  for (int j = 0; j < R; ++j) prev[j] = acc[j] * grad(j);
 }
 
 // G[j][:] += sum_s d[j][s] * aT[s][:] for R rows: the weight gradient as outer products, with
@@ -263,15 +265,18 @@ SN_INLINE void in_groups(int n, Args&&... args) {
 template <int R, class Mode>
 struct Forward {
   using Vec = typename Mode::V;
-  static SN_INLINE void run(int o, const float* W, int inpad, const float* b, int in, const Vec* a, Vec* z) {
-    rows_forward<R, Mode>(W + std::size_t(o) * inpad * Mode::kPar, inpad, b + o * Mode::kPar, in, a, z + o);
+  template <class Put>
+  static SN_INLINE void run(int o, const float* W, int inpad, const float* b, int in, const Vec* a, const Put& put) {
+    rows_forward<R, Mode>(W + std::size_t(o) * inpad * Mode::kPar, inpad, b + o * Mode::kPar, in, a,
+                          [&](int j, const Vec& c) SN_INLINE_LAMBDA { put(o + j, c); });
   }
 };
 template <int R, class Mode>
 struct Backward {
   using Vec = typename Mode::V;
-  static SN_INLINE void run(int i, const float* W, int inpad, int out, const Vec* d, Vec* prev) {
-    cols_backward<R, Mode>(W + i * Mode::kPar, inpad, out, d, prev + i);
+  template <class Grad>
+  static SN_INLINE void run(int i, const float* W, int inpad, int out, const Vec* d, Vec* prev, const Grad& grad) {
+    cols_backward<R, Mode>(W + i * Mode::kPar, inpad, out, d, prev + i, [&](int j) SN_INLINE_LAMBDA { return grad(i + j); });
   }
 };
 template <int R, class Mode, bool kAdd>
@@ -337,9 +342,22 @@ SN_INLINE void forward_block(const View<Mode>& V) {
   const float* p = V.p();
   for (int l = 0; l < S.L; ++l) {
     Vec* z = V.act(l + 1);
-    in_groups<Forward, Mode>(S.out[l], p + S.woff[l] * Mode::kPar, S.inpad[l], p + S.boff[l] * Mode::kPar, S.in[l],
-                             V.act(l), z);
-    if (l + 1 < S.L) {
+    auto layer = [&](const auto& put) SN_INLINE_LAMBDA {
+      in_groups<Forward, Mode>(S.out[l], p + S.woff[l] * Mode::kPar, S.inpad[l], p + S.boff[l] * Mode::kPar,
+                               S.in[l], V.act(l), put);
+    };
+    const bool hidden = l + 1 < S.L;
+    if constexpr (H != kAnyHidden && kFromOutput<H>) {
+      // A compiled-in kind is applied as the sums leave the registers (a pass of its own
+      // stores and loads every unit again: 4% of an 8x8 step). The kinds chosen at run time
+      // keep that pass: their switch, inlined at every row, would bloat each kernel tenfold.
+      if (hidden) {
+        layer([&](int o, const Vec& c) SN_INLINE_LAMBDA { z[o] = act<H>(c, S.hp); });
+        continue;
+      }
+    }
+    layer([&](int o, const Vec& c) SN_INLINE_LAMBDA { z[o] = c; });
+    if (hidden) {
       if (kTrain && !hidden_from_output<H>(S)) {
         Vec* g = V.dz(l + 1);
         for (int o = 0; o < S.out[l]; ++o) hidden_both<H>(S, z[o], z[o], g[o]);
@@ -502,8 +520,8 @@ SN_INLINE int step_impl(const View<Mode>& V, const float* x, const float* y, Row
         in_groups<Gradient, Mode>(out, g + S.woff[l] * k, inpad, reinterpret_cast<const float*>(dl), aT);
       if (l == 0) break;
       Vec* prev = V.d(cur ^ 1);
-      in_groups<Backward, Mode>(in, p + S.woff[l] * k, inpad, out, dl, prev);
-      for (int i = 0; i < in; ++i) prev[i] *= hidden_grad<H>(V, l, i);
+      in_groups<Backward, Mode>(in, p + S.woff[l] * k, inpad, out, dl, prev,
+                                [&](int i) SN_INLINE_LAMBDA { return hidden_grad<H>(V, l, i); });
       cur ^= 1;
     }
   }
