@@ -33,7 +33,7 @@ std::size_t round16(std::size_t n) { return (n + 15) & ~std::size_t(15); }
 // multiple of 8 (32 bytes; a pair's, of 16), and a copy is rounded up to 16 floats for Adam's
 // 16-lane vectors (rounding each layer instead cost 10% more Adam work for 8x8). A pair of
 // networks interleaves two such copies float by float. The scratch (activations, their
-// derivatives, transposes, errors) has room for 16 lanes per unit, in multiples of 16.
+// derivatives, transposes, errors, targets) has room for 16 lanes per unit, in multiples of 16.
 struct CpuNet::Layout {
   int L = 0;
   int in[kMaxHidden + 1] = {}, out[kMaxHidden + 1] = {}, inpad[kMaxHidden + 1] = {};
@@ -44,7 +44,7 @@ struct CpuNet::Layout {
   int maxw = 0;
   // o_dz: f'(z) of every unit, same offsets as the activations (stored by a training forward
   // pass for hidden kinds that need z, and for the output layer).
-  std::size_t o_dz = 0, o_at = 0, o_d[2] = {}, scratch = 0;
+  std::size_t o_dz = 0, o_at = 0, o_d[2] = {}, o_t = 0, scratch = 0;  // o_t: a block's targets
   int hidden = int(Builtin::tanh), output = int(Builtin::linear);  // Builtin ids (SIMD code)
   float hp = 0, op = 0;  // their parameters
 
@@ -80,6 +80,7 @@ struct CpuNet::Layout {
     o_at = o, o += at;
     o_d[0] = o, o += d;
     o_d[1] = o, o += d;
+    o_t = o, o += round16(std::size_t(out[L - 1]) * kMaxLanes);
     scratch = o;
   }
   // Parameter copies 0 and 1, Adam's m and v, the gradient: 5 P floats per network.
@@ -173,6 +174,7 @@ struct View {
   Vec* dz(int l) const { return reinterpret_cast<Vec*>(scratch + S.o_dz + S.aoff[l]); }
   float* at(int l) const { return scratch + S.o_at + S.toff[l]; }
   Vec* d(int i) const { return reinterpret_cast<Vec*>(scratch + S.o_d[i]); }
+  Vec* t() const { return reinterpret_cast<Vec*>(scratch + S.o_t); }
 };
 
 // put(j, b[j] + sum_i W[j][i] a[i]) for R rows at once (R independent FMA chains; put applies the
@@ -297,18 +299,26 @@ using RowLists = const uint32_t* const*;
 SN_INLINE std::size_t row_of(RowLists rows, int h, std::size_t i) { return rows[h] ? rows[h][i] : i; }
 constexpr const uint32_t* kContiguous[2] = {nullptr, nullptr};
 
-// Loads rows into layer 0's activations (input i of sample s at [i][s], for each network of
-// the mode); samples >= n are 0.
+// Loads `width` floats of each sample's row of src into dst, lane-major (float i of sample s
+// at [i][s], for each network of the mode); samples >= n are 0. The inputs go to layer 0's
+// activations, the targets to their own block (gathered with the inputs, before the forward
+// pass: their cache misses then overlap it).
+template <class Mode>
+SN_INLINE void gather_rows(float* dst, const float* src, int width, RowLists rows, std::size_t first, int n) {
+  constexpr int k = Mode::kPar, lanes = kLanesOf<Mode>;
+  const float* sr[lanes];  // lane s k + h's row
+  for (int s = 0; s < Mode::kSamples; ++s)
+    for (int h = 0; h < k; ++h) sr[s * k + h] = s < n ? src + row_of(rows, h, first + s) * width : nullptr;
+  for (int i = 0; i < width; ++i)
+    for (int l = 0; l < lanes; ++l) dst[i * lanes + l] = sr[l] ? sr[l][i] : 0.0f;
+}
 template <class Mode>
 SN_INLINE void gather_inputs(const View<Mode>& V, const float* x, RowLists rows, std::size_t first, int n) {
-  constexpr int k = Mode::kPar, lanes = kLanesOf<Mode>;
-  const int inputs = V.S.in[0];
-  float* a0 = reinterpret_cast<float*>(V.act(0));
-  const float* xr[lanes];  // lane s k + h's row
-  for (int s = 0; s < Mode::kSamples; ++s)
-    for (int h = 0; h < k; ++h) xr[s * k + h] = s < n ? x + row_of(rows, h, first + s) * inputs : nullptr;
-  for (int i = 0; i < inputs; ++i)
-    for (int l = 0; l < lanes; ++l) a0[i * lanes + l] = xr[l] ? xr[l][i] : 0.0f;
+  gather_rows<Mode>(reinterpret_cast<float*>(V.act(0)), x, V.S.in[0], rows, first, n);
+}
+template <class Mode>
+SN_INLINE void gather_targets(const View<Mode>& V, const float* y, RowLists rows, std::size_t first, int n) {
+  gather_rows<Mode>(reinterpret_cast<float*>(V.t()), y, V.S.out[V.S.L - 1], rows, first, n);
 }
 
 // The forward pass; kTrain also stores f'(z) where backpropagation needs it: for hidden kinds
@@ -420,14 +430,7 @@ SN_INLINE void loss_both(const LossArgs& L, const Vec& e, const Vec& t, Vec& lv,
   }
 }
 
-// Target rows as lanes (0 beyond n) and the lane mask.
-template <class Mode>
-SN_INLINE typename Mode::V gather_target(const float* y, int outputs, int o, RowLists rows, std::size_t first, int n) {
-  typename Mode::V t = splat<typename Mode::V>(0.0f);
-  for (int s = 0; s < n; ++s)
-    for (int h = 0; h < Mode::kPar; ++h) t[s * Mode::kPar + h] = y[row_of(rows, h, first + s) * outputs + o];
-  return t;
-}
+// The lanes of the first n samples (of each network).
 template <class Mode>
 SN_INLINE mask_of<typename Mode::V> lane_mask(int n) {
   mask_of<typename Mode::V> lanes;
@@ -459,13 +462,14 @@ SN_INLINE int step_impl(const View<Mode>& V, const float* x, const float* y, Row
     const int n = batch - first < B ? batch - first : B;
     Vec sq = splat<Vec>(0.0f), se = splat<Vec>(0.0f);
     gather_inputs<Mode>(V, x, rows, std::size_t(first), n);
+    gather_targets<Mode>(V, y, rows, std::size_t(first), n);
     forward_block<H, Mode, true>(V);
     // Output error: d = dloss/dy' * act'(y').
     const auto mask = lane_mask<Mode>(n);
     Vec* d = V.d(0);
     const Vec* yhat = V.act(S.L);
     for (int o = 0; o < outputs; ++o) {
-      const Vec t = gather_target<Mode>(y, outputs, o, rows, std::size_t(first), n);
+      const Vec t = V.t()[o];
       Vec diff = yhat[o] - t;
       diff = mask ? diff : splat<Vec>(0.0f);
       Vec gr;
@@ -570,12 +574,13 @@ SN_INLINE double loss_impl(const View<Mode>& V, const float* x, const float* y, 
   for (std::size_t first = 0; first < count; first += Mode::kSamples) {
     const int n = count - first < std::size_t(Mode::kSamples) ? int(count - first) : Mode::kSamples;
     gather_inputs<Mode>(V, x, kContiguous, first, n);
+    gather_targets<Mode>(V, y, kContiguous, first, n);
     forward_block<H, Mode>(V);
     const auto mask = lane_mask<Mode>(n);
     const Vec* yhat = V.act(S.L);
     Vec sq = splat<Vec>(0.0f);
     for (int o = 0; o < outputs; ++o) {
-      const Vec t = gather_target<Mode>(y, outputs, o, kContiguous, first, n);
+      const Vec t = V.t()[o];
       Vec diff = yhat[o] - t;
       diff = mask ? diff : splat<Vec>(0.0f);
       Vec lv, lg;
