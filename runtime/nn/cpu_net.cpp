@@ -278,7 +278,8 @@ struct Backward {
   using Vec = typename Mode::V;
   template <class Grad>
   static SN_INLINE void run(int i, const float* W, int inpad, int out, const Vec* d, Vec* prev, const Grad& grad) {
-    cols_backward<R, Mode>(W + i * Mode::kPar, inpad, out, d, prev + i, [&](int j) SN_INLINE_LAMBDA { return grad(i + j); });
+    cols_backward<R, Mode>(W + i * Mode::kPar, inpad, out, d, prev + i,
+                           [&](int j) SN_INLINE_LAMBDA { return grad(i + j); });
   }
 };
 template <int R, class Mode, bool kAdd>
