@@ -11,7 +11,7 @@
 
 #include "nn/cpu_net.h"
 #include "nn/encoding.h"
-#include "nn/parallel.h"
+#include "io/parallel.h"
 #include "shading/color.h"
 
 namespace sn::nn {
@@ -97,7 +97,7 @@ std::size_t cpu_render(const Mlp& net, const scene::GBuffer& g, const RenderInpu
   const shading::ColorSpace color = net.spec.color;
   const int bands = (bh + kBandRows - 1) / kBandRows;
   // A user's encoding (a Lua function) runs on this thread alone.
-  const int threads = single_threaded(encodings) ? 1 : std::max(1, std::min(default_threads(), bands));
+  const int threads = single_threaded(encodings) ? 1 : std::max(1, std::min(io::default_threads(), bands));
   std::atomic<int> next{0};
   std::atomic<std::size_t> nonfinite{0};
   std::vector<const float*> src(na);
@@ -110,7 +110,7 @@ std::size_t cpu_render(const Mlp& net, const scene::GBuffer& g, const RenderInpu
   auto dst_of = [&](int x, int y) {
     return whole ? dst0 - std::size_t(y) * row_step + std::size_t(x) : std::size_t(y) * row_step + std::size_t(x);
   };
-  parallel_for(threads, threads, [&](int) {
+  io::parallel_for(threads, threads, [&](int) {
     CpuNet cpu(net.spec, net.params.data());
     std::vector<float> x(std::size_t(kChunkBlocks) * kLanes * std::size_t(first));
     std::vector<float> raw(static_cast<std::size_t>(in)), encoded(static_cast<std::size_t>(first));  // one pixel's, when encoding

@@ -8,19 +8,10 @@
 #include <string>
 
 #include "nn/cpu_net.h"
-#include "nn/parallel.h"
+#include "io/parallel.h"
 #include "nn/shuffle.h"
 
 namespace sn::nn {
-
-int default_threads() {
-  if (const char* env = std::getenv("SHADENET_THREADS")) {
-    int n = std::atoi(env);
-    if (n > 0) return n;
-  }
-  unsigned hw = std::thread::hardware_concurrency();
-  return hw ? int(hw) : 1;
-}
 
 namespace {
 
@@ -53,7 +44,7 @@ std::unique_ptr<EncodedRows> encode_data(const std::vector<InputEncoding>& encs,
   constexpr std::size_t kBlock = 4096;
   const std::size_t nt = (d.train_count() + kBlock - 1) / kBlock, nv = (d.val_count() + kBlock - 1) / kBlock;
   // A user's encoding (a Lua function) runs on this thread alone.
-  parallel_for(int(nt + nv), single_threaded(encs) ? 1 : threads, [&](int b) {
+  io::parallel_for(int(nt + nv), single_threaded(encs) ? 1 : threads, [&](int b) {
     const bool train = std::size_t(b) < nt;
     const std::size_t first = (train ? std::size_t(b) : std::size_t(b) - nt) * kBlock;
     const std::size_t count = std::min(kBlock, (train ? d.train_count() : d.val_count()) - first);
@@ -105,7 +96,7 @@ std::vector<Unit> plan_units(const std::vector<std::unique_ptr<CpuNet>>& work,
 
 class CpuBackend : public Backend {
  public:
-  explicit CpuBackend(int threads) : threads_(threads > 0 ? threads : default_threads()) {}
+  explicit CpuBackend(int threads) : threads_(threads > 0 ? threads : io::default_threads()) {}
 
   std::string name() const override { return "cpu"; }
   bool mixes_seeds() const override { return true; }
@@ -134,7 +125,7 @@ class CpuBackend : public Backend {
       }
       rows_of[i] = r;
     }
-    parallel_for(count, threads_, [&](int i) {
+    io::parallel_for(count, threads_, [&](int i) {
       work[i] = std::make_unique<CpuNet>(nets[i]->spec, nets[i]->params.data());
       work[i]->set_loss(cfg.loss);
       const double given = cfg.initial_val_mse_of(std::size_t(i));
@@ -158,7 +149,7 @@ class CpuBackend : public Backend {
     std::vector<std::vector<uint32_t>> orders(seeds.size(), std::vector<uint32_t>(std::size_t(steps * cfg.batch)));
     std::vector<AdamStep> adam(static_cast<std::size_t>(steps));
     long long t = 0;  // Adam's step counter, the same for every net of the run
-    WatchBeat beat(cfg.tick ? cfg.tick_seconds : 1.0);  // the tick's, across epochs
+    io::WatchBeat beat(cfg.tick ? cfg.tick_seconds : 1.0);  // the tick's, across epochs
     for (int e = 0; e < cfg.epochs; ++e) {
       if (cfg.stop_requested()) break;
       for (std::size_t j = 0; j < seeds.size(); ++j) {
@@ -248,14 +239,14 @@ class CpuBackend : public Backend {
       };
       if (cfg.tick) {
         // The nets train on threads of their own; this thread ticks.
-        parallel_for_watched(int(units.size()), threads_, beat, train_epoch, [&] {
+        io::parallel_for_watched(int(units.size()), threads_, beat, train_epoch, [&] {
           long long sum = 0, nets = 0;
           for (const auto& a : applied)
             if (long long v = a.load(std::memory_order_relaxed); v >= 0) sum += v, ++nets;
           cfg.tick(TickEvent{e + 1, cfg.epochs, nets ? sum / nets : steps, steps});
         });
       } else {
-        parallel_for(int(units.size()), threads_, train_epoch);
+        io::parallel_for(int(units.size()), threads_, train_epoch);
       }
       if (progress)
         for (int i = 0; i < count; ++i)

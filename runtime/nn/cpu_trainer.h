@@ -8,7 +8,7 @@
 
 namespace sn::nn {
 
-// threads <= 0: default_threads() (nn/parallel.h).
+// threads <= 0: io::default_threads() (io/parallel.h).
 std::unique_ptr<Backend> make_cpu_backend(int threads);
 
 }  // namespace sn::nn

@@ -14,7 +14,7 @@
 #include "nn/cpu_net.h"
 #include "nn/encoding.h"
 #include "nn/diagnostics.h"
-#include "nn/parallel.h"
+#include "io/parallel.h"
 
 namespace sn::nn {
 
@@ -229,10 +229,10 @@ JobResult train(const TrainJob& job) {
   const data::Dataset& d = *job.data;
   cfg.initial_val_mse.assign(nets.size(), std::numeric_limits<double>::quiet_NaN());
   // A user's encoding (a Lua function) encodes rows on this thread only.
-  int threads = default_threads();
+  int threads = io::default_threads();
   for (const Mlp* n : nets)
     if (single_threaded(n->spec.encodings)) threads = 1;
-  parallel_for(int(nets.size()), threads, [&](int i) {
+  io::parallel_for(int(nets.size()), threads, [&](int i) {
     const MlpSpec& s = nets[std::size_t(i)]->spec;
     if (activation_def(s.activation).simd < 0 || activation_def(s.output_activation).simd < 0) return;
     CpuNet net(s, nets[std::size_t(i)]->params.data());
@@ -292,7 +292,7 @@ JobResult train(const TrainJob& job) {
     if (job.keep == Keep::best && r.best_epoch > 0) net.params = r.best_params;
     net.touch();
   }
-  parallel_for(int(nets.size()), threads, [&](int i) {
+  io::parallel_for(int(nets.size()), threads, [&](int i) {
     out.nets[i].dead_units = dead_unit_fractions(*job.nets[i], d.val_x.data(), d.val_count());
     out.nets[i].stuck_outputs = stuck_outputs(*job.nets[i], d.val_x.data(), d.val_count());
   });

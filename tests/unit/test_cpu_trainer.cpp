@@ -3,8 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <atomic>
-#include <chrono>
 #include <cmath>
 #include <map>
 #include <cstdio>
@@ -12,7 +10,6 @@
 #include <cstring>
 #include <limits>
 #include <stdexcept>
-#include <thread>
 
 #include <xmmintrin.h>
 
@@ -22,7 +19,6 @@
 #include "nn/fast_tanh.h"
 #include "nn/init.h"
 #include "nn/oracle.h"
-#include "nn/parallel.h"
 #include "nn_spec_of.h"
 #include "nn/train.h"
 
@@ -416,41 +412,6 @@ TEST(CpuTrainer, DivergedNetStopsWithFiniteWeightsOthersGoOn) {
   EXPECT_EQ(big.steps, big.diverged->step - 1);
   for (float v : big.final_params) ASSERT_TRUE(std::isfinite(v));
   EXPECT_NE(big.final_params, blowup.params);
-}
-
-// The caller watches on its own thread while the work runs elsewhere; a throwing watch() is
-// not called again, the work still finishes, then its exception comes out.
-TEST(ParallelForWatched, CallerWatchesWhileWorkersWork) {
-  const auto caller = std::this_thread::get_id();
-  std::atomic<int> done{0}, on_caller{0};
-  int watches = 0;
-  WatchBeat beat(0.005);
-  parallel_for_watched(
-      4, 2, beat,
-      [&](int) {
-        if (std::this_thread::get_id() == caller) ++on_caller;
-        std::this_thread::sleep_for(std::chrono::milliseconds(40));
-        ++done;
-      },
-      [&] {
-        EXPECT_EQ(std::this_thread::get_id(), caller);
-        ++watches;
-      });
-  EXPECT_EQ(done, 4);
-  EXPECT_EQ(on_caller, 0);
-  EXPECT_GE(watches, 5);  // 80 ms of work, a watch every 5 ms
-
-  watches = 0;
-  done = 0;
-  EXPECT_THROW(parallel_for_watched(
-                   2, 2, beat, [&](int) { std::this_thread::sleep_for(std::chrono::milliseconds(30)), ++done; },
-                   [&] {
-                     ++watches;
-                     throw std::runtime_error("watch failed");
-                   }),
-               std::runtime_error);
-  EXPECT_EQ(watches, 1);
-  EXPECT_EQ(done, 2);
 }
 
 TEST(Diagnostics, DeadReluAndSaturatedTanhUnits) {

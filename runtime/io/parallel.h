@@ -11,7 +11,7 @@
 #include <thread>
 #include <vector>
 
-namespace sn::nn {
+namespace sn::io {
 
 // Threads for work over independent networks: SHADENET_THREADS if set, else the hardware's.
 int default_threads();
@@ -106,4 +106,4 @@ void parallel_for_watched(int n, int threads, WatchBeat& beat, Fn&& fn, Watch&& 
   if (watch_error) std::rethrow_exception(watch_error);
 }
 
-}  // namespace sn::nn
+}  // namespace sn::io
