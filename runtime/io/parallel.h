@@ -1,12 +1,14 @@
 // Runs fn(i) for i in [0, n) on up to `threads` threads (the caller's included), handing out
 // indices one at a time so uneven work balances. The first exception is rethrown after all
-// threads have stopped.
+// threads have stopped. The other threads wait between calls (starting threads for each call
+// cost more than a small image's render); a call made while another holds them starts its own.
 #pragma once
 #include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
 #include <exception>
+#include <functional>
 #include <mutex>
 #include <thread>
 #include <vector>
@@ -39,17 +41,25 @@ struct WorkQueue {
     }
   }
 };
+
+// Runs work() on the caller and on `helpers` waiting threads (started on first need), and returns
+// once every one of them has left it; false, having run nothing, when another call holds them.
+bool run_on_pool(int helpers, const std::function<void()>& work);
 }  // namespace detail
 
 template <class Fn>
 void parallel_for(int n, int threads, Fn&& fn) {
   detail::WorkQueue<Fn> q(n, fn);
   const int extra = std::max(0, std::min(threads, n) - 1);
-  std::vector<std::thread> pool;
-  pool.reserve(std::size_t(extra));
-  for (int t = 0; t < extra; ++t) pool.emplace_back([&] { q.run(); });
-  q.run();
-  for (auto& t : pool) t.join();
+  if (extra == 0) {
+    q.run();
+  } else if (!detail::run_on_pool(extra, [&] { q.run(); })) {
+    std::vector<std::thread> pool;
+    pool.reserve(std::size_t(extra));
+    for (int t = 0; t < extra; ++t) pool.emplace_back([&] { q.run(); });
+    q.run();
+    for (auto& t : pool) t.join();
+  }
   if (q.error) std::rethrow_exception(q.error);
 }
 

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <stdexcept>
 #include <thread>
+#include <vector>
 
 using namespace sn::io;
 
@@ -43,4 +44,43 @@ TEST(ParallelForWatched, CallerWatchesWhileWorkersWork) {
                std::runtime_error);
   EXPECT_EQ(watches, 1);
   EXPECT_EQ(done, 2);
+}
+
+// Every index runs once, call after call, and the threads that helped one call wait for the
+// next: a helper's thread-local count passes 1 only if it is the same thread (threads started
+// per call would each count 1).
+TEST(ParallelFor, EveryIndexOnceOnThreadsThatStay) {
+  const auto caller = std::this_thread::get_id();
+  std::atomic<int> most{0};
+  for (int call = 0; call < 20; ++call) {
+    std::vector<std::atomic<int>> hits(37);
+    parallel_for(37, 3, [&](int i) {
+      ++hits[size_t(i)];
+      if (std::this_thread::get_id() != caller) {
+        thread_local int calls_here = 0, last_call = -1;
+        if (last_call != call) last_call = call, ++calls_here;
+        for (int m = most; m < calls_here && !most.compare_exchange_weak(m, calls_here);) {
+        }
+      }
+      std::this_thread::sleep_for(std::chrono::microseconds(200));  // so that the helpers get some
+    });
+    for (int i = 0; i < 37; ++i) ASSERT_EQ(hits[size_t(i)], 1) << "index " << i << ", call " << call;
+  }
+  EXPECT_GT(most, 1);
+}
+
+// A parallel_for inside another (the pool is held) starts threads of its own; an exception
+// comes out of the call that threw it, and the pool works after it.
+TEST(ParallelFor, NestedCallsAndExceptions) {
+  std::atomic<int> inner{0};
+  parallel_for(4, 2, [&](int) { parallel_for(5, 2, [&](int) { ++inner; }); });
+  EXPECT_EQ(inner, 20);
+  EXPECT_THROW(parallel_for(8, 2,
+                            [&](int i) {
+                              if (i == 3) throw std::runtime_error("index 3");
+                            }),
+               std::runtime_error);
+  std::atomic<int> after{0};
+  parallel_for(16, 2, [&](int) { ++after; });
+  EXPECT_EQ(after, 16);
 }
