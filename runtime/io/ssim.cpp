@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "io/parallel.h"
+
 #define SN_SSIM_INLINE inline __attribute__((always_inline))
 
 namespace sn::io {
@@ -16,6 +18,7 @@ namespace {
 
 constexpr double kSigma = 1.5, kC1 = 0.01 * 0.01, kC2 = 0.03 * 0.03;
 constexpr int kR = kSsimRadius, kTaps = 2 * kSsimRadius + 1;
+constexpr int kBandRows = 32;  // averaged rows per unit of work (about: the box splits evenly)
 
 // Only the pixels [x0, x1] x [y0, y1] (interior ones: a mask's bounding box) are averaged; their
 // windows never leave the image, so the averaged pixels need no edge rule ("reflect" in
@@ -139,32 +142,46 @@ double ssim_lanes(int lanes, const Image& a, const Image& b, int channels, const
           throw std::invalid_argument("ssim: pixel (" + std::to_string(i % w + 1) + ", " + std::to_string(i / w + 1) +
                                     ") channel " + std::to_string(c + 1) + " is not a finite number");
 
-  // One buffer per thread, reused: a table scores thousands of images, and fresh pages for
-  // each would cost more than the filter.
-  Planes P;
-  P.width = (box.x1 - box.x0 + 1 + 7) / 8 * 8;
-  P.height = box.y1 - box.y0 + 1;
-  P.rows = P.height + 2 * kR;
-  P.span = P.width + 2 * kR;
-  const size_t in = size_t(P.rows) * P.span, out = size_t(P.height) * P.width;
-  thread_local std::vector<double> buffer;
-  buffer.assign(2 * in + out + 5 * size_t(P.rows) * P.width, 0.0);
-  double *pa = buffer.data(), *pb = pa + in, *pm = pb + in;
-  P.a = pa, P.b = pb, P.mask = pm, P.h = pm + out;
-  for (int y = box.y0; y <= box.y1; ++y)
-    for (int x = box.x0; x <= box.x1; ++x)
-      pm[size_t(y - box.y0) * P.width + (x - box.x0)] = !mask || mask->at(x, y, mask_channel) > 0.5f ? 1.0 : 0.0;
-  double total = 0;
-  for (int c = 0; c < channels; ++c) {
+  // The box in bands of rows, each filtered on its own (its horizontal pass also covers the
+  // radius above and below it): the (channel, band) units run on the threads, and their sums
+  // add in a fixed order, so the value does not depend on how many threads ran.
+  const int width = (box.x1 - box.x0 + 1 + 7) / 8 * 8, height = box.y1 - box.y0 + 1;
+  const int bands = std::max(1, (height + kBandRows / 2) / kBandRows);
+  const int band_rows = (height + bands - 1) / bands;
+  std::vector<double> sums(size_t(channels) * size_t(bands));
+  parallel_for(channels * bands, default_threads(), [&](int u) {
+    const int c = u / bands, y0 = box.y0 + (u % bands) * band_rows;
+    Planes P;
+    P.width = width;
+    P.height = std::min(band_rows, box.y1 + 1 - y0);
+    P.rows = P.height + 2 * kR;
+    P.span = P.width + 2 * kR;
+    // One buffer per thread, reused: a table scores thousands of images, and fresh pages for
+    // each would cost more than the filter. The planes of the horizontal pass are written whole.
+    const size_t in = size_t(P.rows) * P.span, out = size_t(P.height) * P.width;
+    thread_local std::vector<double> buffer;
+    buffer.resize(2 * in + out + 5 * size_t(P.rows) * P.width);
+    std::fill_n(buffer.begin(), 2 * in + out, 0.0);
+    double *pa = buffer.data(), *pb = pa + in, *pm = pb + in;
+    P.a = pa, P.b = pb, P.mask = pm, P.h = pm + out;
+    for (int y = y0; y < y0 + P.height; ++y)
+      for (int x = box.x0; x <= box.x1; ++x)
+        pm[size_t(y - y0) * P.width + (x - box.x0)] = !mask || mask->at(x, y, mask_channel) > 0.5f ? 1.0 : 0.0;
     // Columns beyond the image (the padding) stay 0; their pixels are not averaged.
     const int x0 = box.x0 - kR, inside = std::min(P.span, w - x0);
     for (int j = 0; j < P.rows; ++j) {
-      const size_t row = size_t(box.y0 - kR + j) * w + x0;
+      const size_t row = size_t(y0 - kR + j) * w + x0;
       const float *ra = a.pixels.data() + row * a.channels + c, *rb = b.pixels.data() + row * b.channels + c;
       double *oa = pa + size_t(j) * P.span, *ob = pb + size_t(j) * P.span;
       for (int i = 0; i < inside; ++i) oa[i] = ra[size_t(i) * a.channels], ob[i] = rb[size_t(i) * b.channels];
     }
-    total += (lanes == 8 ? channel_sum_avx512(P, k) : channel_sum_sse2(P, k)) / double(count);
+    sums[size_t(u)] = lanes == 8 ? channel_sum_avx512(P, k) : channel_sum_sse2(P, k);
+  });
+  double total = 0;
+  for (int c = 0; c < channels; ++c) {
+    double sum = 0;
+    for (int band = 0; band < bands; ++band) sum += sums[size_t(c) * size_t(bands) + size_t(band)];
+    total += sum / double(count);
   }
   return total / channels;
 }

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <stdexcept>
 #include <string>
 
@@ -15,10 +16,10 @@ namespace {
 using sn::io::Image;
 
 // kind 0: a plus a cosine ripple; 1: a darkened (0.8 a + 0.05); 2: a shifted, sheared pattern.
-std::pair<Image, Image> pair(int kind) {
-  Image a(40, 28, 3), b(40, 28, 3);
-  for (int y = 0; y < 28; ++y)
-    for (int x = 0; x < 40; ++x)
+std::pair<Image, Image> pair(int kind, int w = 40, int h = 28) {
+  Image a(w, h, 3), b(w, h, 3);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
       for (int c = 0; c < 3; ++c) {
         const double va = 0.5 + 0.4 * std::sin(0.3 * x + 0.2 * y + c);
         const double vb = kind == 0   ? va + 0.1 * std::cos(0.7 * x - 0.4 * y + 2 * c)
@@ -57,24 +58,19 @@ TEST(Ssim, EqualImagesAreOneAndAFullMaskChangesNothing) {
   EXPECT_LE(half, 1.0);
 }
 
-// A mask filters only around itself (its bounding box): the mean over a small blob must equal
-// the same mean of per-pixel SSIMs from plain 11x11 window sums.
-TEST(Ssim, AMaskedMeanMatchesDirectWindowSums) {
-  auto [a, b] = pair(2);
-  Image blob(40, 28, 4, 0.f);
-  for (int y = 0; y < 28; ++y)
-    for (int x = 0; x < 40; ++x)
-      if ((x - 24) * (x - 24) + (y - 13) * (y - 13) <= 16) blob.at(x, y, 3) = 1.f;
-  const int r = sn::io::kSsimRadius;
+// The mean SSIM over the mask's interior pixels from plain 11x11 window sums (the oracle); `count`:
+// how many pixels it averaged.
+double direct_ssim(const Image& a, const Image& b, const Image& mask, int* count) {
+  const int r = sn::io::kSsimRadius, w = a.width, h = a.height;
   double k[2 * sn::io::kSsimRadius + 1], ksum = 0;
   for (int d = -r; d <= r; ++d) ksum += k[d + r] = std::exp(-0.5 * d * d / (1.5 * 1.5));
   double want = 0;
   for (int c = 0; c < 3; ++c) {
     double sum = 0;
-    int count = 0;
-    for (int y = r; y < 28 - r; ++y)
-      for (int x = r; x < 40 - r; ++x) {
-        if (blob.at(x, y, 3) <= 0.5f) continue;
+    *count = 0;
+    for (int y = r; y < h - r; ++y)
+      for (int x = r; x < w - r; ++x) {
+        if (mask.at(x, y, 3) <= 0.5f) continue;
         double mx = 0, my = 0, xx = 0, yy = 0, xy = 0;
         for (int dy = -r; dy <= r; ++dy)
           for (int dx = -r; dx <= r; ++dx) {
@@ -84,14 +80,52 @@ TEST(Ssim, AMaskedMeanMatchesDirectWindowSums) {
         const double c1 = 1e-4, c2 = 9e-4;
         sum += (2 * mx * my + c1) * (2 * (xy - mx * my) + c2) /
                ((mx * mx + my * my + c1) * (xx - mx * mx + yy - my * my + c2));
-        ++count;
+        ++*count;
       }
-    ASSERT_EQ(count, 49);  // the blob: 49 pixels, all inside
-    want += sum / count / 3;
+    want += sum / *count / 3;
   }
+  return want;
+}
+
+// A mask filters only around itself (its bounding box): the mean over a small blob must equal
+// the same mean of per-pixel SSIMs from plain 11x11 window sums.
+TEST(Ssim, AMaskedMeanMatchesDirectWindowSums) {
+  auto [a, b] = pair(2);
+  Image blob(40, 28, 4, 0.f);
+  for (int y = 0; y < 28; ++y)
+    for (int x = 0; x < 40; ++x)
+      if ((x - 24) * (x - 24) + (y - 13) * (y - 13) <= 16) blob.at(x, y, 3) = 1.f;
+  int count = 0;
+  const double want = direct_ssim(a, b, blob, &count);
+  ASSERT_EQ(count, 49);  // the blob: 49 pixels, all inside
   for (int lanes : {2, 8})
     if (lanes <= sn::io::ssim_widest_lanes()) EXPECT_NEAR(sn::io::ssim_lanes(lanes, a, b, -1, &blob, 3), want, 1e-12) << lanes;
   EXPECT_NE(sn::io::ssim(a, b, -1, &blob, 3), sn::io::ssim(a, b));
+}
+
+// A tall mask is filtered in bands of rows on several threads: still the direct sums' value,
+// and the same number to the bit on one thread as on three.
+TEST(Ssim, BandsOnThreadsGiveTheDirectValue) {
+  auto [a, b] = pair(0, 48, 150);
+  Image ring(48, 150, 4, 0.f);
+  for (int y = 0; y < 150; ++y)
+    for (int x = 0; x < 48; ++x) {
+      const int d = (x - 22) * (x - 22) + (y - 70) * (y - 70) / 4;
+      if (d >= 36 && d <= 300) ring.at(x, y, 3) = 1.f;
+    }
+  int count = 0;
+  const double want = direct_ssim(a, b, ring, &count);
+  ASSERT_GT(count, 1000);
+  std::string was = std::getenv("SHADENET_THREADS") ? std::getenv("SHADENET_THREADS") : "";
+  double got[2];
+  for (int t : {0, 1}) {
+    setenv("SHADENET_THREADS", t ? "3" : "1", 1);
+    got[t] = sn::io::ssim(a, b, -1, &ring, 3);
+    EXPECT_NEAR(got[t], want, 1e-12);
+  }
+  if (was.empty()) unsetenv("SHADENET_THREADS");
+  else setenv("SHADENET_THREADS", was.c_str(), 1);
+  EXPECT_EQ(got[0], got[1]);
 }
 
 TEST(Ssim, RefusesWhatItCannotMeasure) {
