@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 
 namespace sn::io {
@@ -187,15 +188,40 @@ Image grid(const std::vector<Panel>& panels, const GridStyle& s) {
   return out;
 }
 
+namespace {
+// Clamps channels [0, n) of `count` pixels of C channels; a constant C lets the loop vectorize.
+// Branch-free; NaN stays NaN (both comparisons are false).
+template <int C>
+void clamp_pixels(float* px, std::size_t count, int n, float lo, float hi) {
+  float l[C], h[C];  // the channels past n are left as they are: clamped to the whole line
+  for (int k = 0; k < C; ++k)
+    l[k] = k < n ? lo : -std::numeric_limits<float>::infinity(), h[k] = k < n ? hi : std::numeric_limits<float>::infinity();
+  for (std::size_t p = 0; p < count; ++p)
+    for (int k = 0; k < C; ++k) {
+      const float v = px[p * C + k];
+      px[p * C + k] = v < l[k] ? l[k] : h[k] < v ? h[k] : v;
+    }
+}
+}  // namespace
+
 Image clamp_colors(const Image& img, float lo, float hi) {
   if (!(lo <= hi)) throw std::runtime_error("clamp: lo must be <= hi");
   Image out = img;
   const int n = std::min(3, img.channels);
-  // Branch-free, so it vectorizes; NaN stays NaN (both comparisons are false).
-  const auto clamp = [lo, hi](float v) { return v < lo ? lo : hi < v ? hi : v; };
+  const std::size_t count = std::size_t(img.width) * std::size_t(img.height);
   float* px = out.pixels.data();
-  for (std::size_t p = 0; p < out.pixels.size(); p += size_t(img.channels))
-    for (int k = 0; k < n; ++k) px[p + k] = clamp(px[p + k]);
+  switch (img.channels) {
+    case 1: clamp_pixels<1>(px, count, n, lo, hi); break;
+    case 2: clamp_pixels<2>(px, count, n, lo, hi); break;
+    case 3: clamp_pixels<3>(px, count, n, lo, hi); break;
+    case 4: clamp_pixels<4>(px, count, n, lo, hi); break;
+    default:
+      for (std::size_t p = 0; p < count; ++p)
+        for (int k = 0; k < n; ++k) {
+          float& v = px[p * std::size_t(img.channels) + std::size_t(k)];
+          v = v < lo ? lo : hi < v ? hi : v;
+        }
+  }
   return out;
 }
 

@@ -183,4 +183,17 @@ TEST(Figure, ClampKeepsAlphaAndNaN) {
   EXPECT_EQ(c.at(0, 0, 2), 0.25f);
   EXPECT_EQ(c.at(0, 0, 3), 7.f);  // alpha untouched
   EXPECT_TRUE(std::isnan(c.at(1, 0, 0)));
+  // Every channel count (each has its own loop): colour channels 1..3 clamped to [lo, hi], the
+  // others as they were, infinities included.
+  for (int channels = 1; channels <= 5; ++channels) {
+    Image m(7, 3, channels);
+    for (std::size_t i = 0; i < m.pixels.size(); ++i) m.pixels[i] = float(int(i % 11) - 4) * 0.3f;
+    m.at(6, 2, channels - 1) = INFINITY;
+    Image got = clamp_colors(m, -0.5f, 0.7f);
+    for (std::size_t i = 0; i < m.pixels.size(); ++i) {
+      const float v = m.pixels[i];
+      const float want = int(i % std::size_t(channels)) < 3 ? std::min(0.7f, std::max(-0.5f, v)) : v;
+      ASSERT_EQ(got.pixels[i], want) << channels << " channels, float " << i;
+    }
+  }
 }
