@@ -1,9 +1,10 @@
 // Compacts a G-buffer (runtime/scene/gather.cpp): each covered pixel (coverage in .w of the
-// first attachment) takes the next slot of an atomic counter and copies its ATTRIBUTES
-// attachments there, so later passes touch covered pixels only.
+// first attachment) inside the box that can hold them takes the next slot of an atomic counter
+// and copies its ATTRIBUTES attachments there, so later passes touch covered pixels only.
 layout(local_size_x = 8, local_size_y = 8) in;
 
 uniform sampler2D u_attributes[ATTRIBUTES];
+uniform ivec4 u_box;  // x0, y0, x1, y1 (exclusive): where covered pixels can be
 
 layout(std430, binding = 0) buffer Counter { uint count; };
 layout(std430, binding = 1) writeonly buffer Pixels { uint pixels[]; };
@@ -28,9 +29,9 @@ layout(std430, binding = 7) writeonly buffer Attribute5 { vec4 attribute5[]; };
 #endif
 
 void main() {
-  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  ivec2 p = u_box.xy + ivec2(gl_GlobalInvocationID.xy);
+  if (p.x >= u_box.z || p.y >= u_box.w) return;
   ivec2 size = textureSize(u_attributes[0], 0);
-  if (p.x >= size.x || p.y >= size.y) return;
   vec4 first = texelFetch(u_attributes[0], p, 0);
   if (!(first.w > 0.5)) return;  // background
   uint i = atomicAdd(count, 1u);

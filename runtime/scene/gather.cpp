@@ -2,6 +2,7 @@
 
 #include <epoxy/gl.h>
 
+#include <algorithm>
 #include <string>
 
 #include "gl/program.h"
@@ -9,7 +10,10 @@
 namespace sn::scene {
 
 Samples gather(const GBuffer& g) {
-  const std::size_t capacity = std::size_t(g.width) * g.height;
+  // Only the box can hold covered pixels: the buffers (cleared on creation) and the dispatch
+  // are that big, not the frame.
+  const PixelBox box = g.box();
+  const std::size_t capacity = std::max<std::size_t>(1, std::size_t(std::max(0, box.width())) * std::max(0, box.height()));
   const int n = int(g.attributes.size());
   gl::ProgramDesc desc;
   desc.compute = "gather.comp";
@@ -27,10 +31,12 @@ Samples gather(const GBuffer& g) {
     units.push_back(a);
   }
   prog->set_uniform("u_attributes", units);
+  prog->set_uniform("u_box", {double(box.x0), double(box.y0), double(box.x1), double(box.y1)});
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, counter.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, s.pixels->id());
   for (int a = 0; a < n; ++a) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(2 + a), s.attributes[a]->id());
-  gl::dispatch(*prog, unsigned((g.width + 7) / 8), unsigned((g.height + 7) / 8));
+  if (box.width() > 0 && box.height() > 0)
+    gl::dispatch(*prog, unsigned((box.width() + 7) / 8), unsigned((box.height() + 7) / 8));
   uint32_t count = 0;
   counter.download(&count, 0, 1);
   s.count = count;

@@ -108,25 +108,36 @@ TEST(GBuffer, RasterisesOnlyTheRequestedAttributesInOrder) {
   EXPECT_THROW(g1.attachment("uv"), std::invalid_argument);
 }
 
+// The gather runs over the box that can hold covered pixels: the whole frame for the sphere
+// that fills it, a box inside it for a small sphere off the centre.
 TEST(GBuffer, GatherCompactsExactlyTheCoveredPixels) {
   gl::current();
   Fixture f;
-  auto g = scene::render_gbuffer({{&f.sphere}}, f.camera, W, H, {"normal", "view"});
-  io::Image n = g.target->read(0), v = g.target->read(1);
-  std::size_t covered = 0;
-  for (int y = 0; y < H; ++y)
-    for (int x = 0; x < W; ++x) covered += n.at(x, y, 3) > 0.5f;
-  auto s = scene::gather(g);
-  ASSERT_EQ(s.count, covered);
-  auto pixels = scene::download_pixels(s);
-  auto sn_ = scene::download_vec4(*s.attributes[0], s.count), sv = scene::download_vec4(*s.attributes[1], s.count);
-  std::set<uint32_t> seen;
-  for (std::size_t i = 0; i < s.count; ++i) {
-    ASSERT_TRUE(seen.insert(pixels[i]).second) << "pixel gathered twice";
-    int x = int(pixels[i] % W), y = H - 1 - int(pixels[i] / W);  // GL rows run bottom-up
-    for (int c = 0; c < 4; ++c) {
-      ASSERT_EQ(sn_[i * 4 + c], n.at(x, y, c));
-      ASSERT_EQ(sv[i * 4 + c], v.at(x, y, c));
+  const glm::dmat4 small = glm::scale(glm::translate(glm::dmat4(1.0), {0.6, -0.4, 0.0}), dvec3(0.3));
+  for (const glm::dmat4& model : {glm::dmat4(1.0), small}) {
+    auto g = scene::render_gbuffer({{&f.sphere, model}}, f.camera, W, H, {"normal", "view"});
+    if (model != glm::dmat4(1.0)) {
+      ASSERT_TRUE(g.bounded);
+      EXPECT_TRUE(g.covers.x0 > 0 && g.covers.y0 > 0 && g.covers.x1 < W && g.covers.y1 < H)
+          << g.covers.x0 << " " << g.covers.y0 << " " << g.covers.x1 << " " << g.covers.y1;
+    }
+    io::Image n = g.target->read(0), v = g.target->read(1);
+    std::size_t covered = 0;
+    for (int y = 0; y < H; ++y)
+      for (int x = 0; x < W; ++x) covered += n.at(x, y, 3) > 0.5f;
+    ASSERT_GT(covered, 20u);
+    auto s = scene::gather(g);
+    ASSERT_EQ(s.count, covered);
+    auto pixels = scene::download_pixels(s);
+    auto sn_ = scene::download_vec4(*s.attributes[0], s.count), sv = scene::download_vec4(*s.attributes[1], s.count);
+    std::set<uint32_t> seen;
+    for (std::size_t i = 0; i < s.count; ++i) {
+      ASSERT_TRUE(seen.insert(pixels[i]).second) << "pixel gathered twice";
+      int x = int(pixels[i] % W), y = H - 1 - int(pixels[i] / W);  // GL rows run bottom-up
+      for (int c = 0; c < 4; ++c) {
+        ASSERT_EQ(sn_[i * 4 + c], n.at(x, y, c));
+        ASSERT_EQ(sv[i * 4 + c], v.at(x, y, c));
+      }
     }
   }
 }
