@@ -148,6 +148,14 @@ double ssim_lanes(int lanes, const Image& a, const Image& b, int channels, const
   const int width = (box.x1 - box.x0 + 1 + 7) / 8 * 8, height = box.y1 - box.y0 + 1;
   const int bands = std::max(1, (height + kBandRows / 2) / kBandRows);
   const int band_rows = (height + bands - 1) / bands;
+  // The averaged pixels as 1 (0 elsewhere and in the padding), once for every channel and band.
+  // (The threads read it through `plane`: in the lambda, `averaged` would be each thread's own.)
+  thread_local std::vector<double> averaged;
+  averaged.assign(size_t(width) * size_t(height), 0.0);
+  double* const plane = averaged.data();
+  for (int y = box.y0; y <= box.y1; ++y)
+    for (int x = box.x0; x <= box.x1; ++x)
+      plane[size_t(y - box.y0) * size_t(width) + size_t(x - box.x0)] = !mask || mask->at(x, y, mask_channel) > 0.5f;
   std::vector<double> sums(size_t(channels) * size_t(bands));
   parallel_for(channels * bands, default_threads(), [&](int u) {
     const int c = u / bands, y0 = box.y0 + (u % bands) * band_rows;
@@ -157,23 +165,21 @@ double ssim_lanes(int lanes, const Image& a, const Image& b, int channels, const
     P.rows = P.height + 2 * kR;
     P.span = P.width + 2 * kR;
     // One buffer per thread, reused: a table scores thousands of images, and fresh pages for
-    // each would cost more than the filter. The planes of the horizontal pass are written whole.
-    const size_t in = size_t(P.rows) * P.span, out = size_t(P.height) * P.width;
+    // each would cost more than the filter. Every float of it is written before it is read.
+    const size_t in = size_t(P.rows) * P.span;
     thread_local std::vector<double> buffer;
-    buffer.resize(2 * in + out + 5 * size_t(P.rows) * P.width);
-    std::fill_n(buffer.begin(), 2 * in + out, 0.0);
-    double *pa = buffer.data(), *pb = pa + in, *pm = pb + in;
-    P.a = pa, P.b = pb, P.mask = pm, P.h = pm + out;
-    for (int y = y0; y < y0 + P.height; ++y)
-      for (int x = box.x0; x <= box.x1; ++x)
-        pm[size_t(y - y0) * P.width + (x - box.x0)] = !mask || mask->at(x, y, mask_channel) > 0.5f ? 1.0 : 0.0;
-    // Columns beyond the image (the padding) stay 0; their pixels are not averaged.
+    buffer.resize(2 * in + 5 * size_t(P.rows) * P.width);
+    double *pa = buffer.data(), *pb = pa + in;
+    P.a = pa, P.b = pb, P.h = pb + in;
+    P.mask = plane + size_t(y0 - box.y0) * size_t(width);
+    // Columns beyond the image (the padding) are 0; their pixels are not averaged.
     const int x0 = box.x0 - kR, inside = std::min(P.span, w - x0);
     for (int j = 0; j < P.rows; ++j) {
       const size_t row = size_t(y0 - kR + j) * w + x0;
       const float *ra = a.pixels.data() + row * a.channels + c, *rb = b.pixels.data() + row * b.channels + c;
       double *oa = pa + size_t(j) * P.span, *ob = pb + size_t(j) * P.span;
       for (int i = 0; i < inside; ++i) oa[i] = ra[size_t(i) * a.channels], ob[i] = rb[size_t(i) * b.channels];
+      std::fill(oa + inside, oa + P.span, 0.0), std::fill(ob + inside, ob + P.span, 0.0);
     }
     sums[size_t(u)] = lanes == 8 ? channel_sum_avx512(P, k) : channel_sum_sse2(P, k);
   });
