@@ -152,17 +152,22 @@ double mse(const Image& a, const Image& b, int channels, const Image* mask, int 
   if (mask && (mask_channel < 0 || mask_channel >= mask->channels))
     throw std::invalid_argument("mse: mask channel " + std::to_string(mask_channel + 1) + " outside the mask's channels 1.." +
                                 std::to_string(mask->channels));
+  // A pixel's squares are summed first, then added to the total: one addition per pixel on the
+  // total's dependency chain instead of one per channel.
   double sum = 0;
   size_t n = 0;
-  for (int y = 0; y < a.height; ++y)
-    for (int x = 0; x < a.width; ++x) {
-      if (mask && mask->at(x, y, mask_channel) <= 0.5f) continue;
-      for (int c = 0; c < channels; ++c) {
-        double d = double(a.at(x, y, c)) - b.at(x, y, c);
-        sum += d * d;
-      }
-      ++n;
+  const size_t pixels = size_t(a.width) * size_t(a.height), step = size_t(a.channels);
+  for (size_t p = 0; p < pixels; ++p) {
+    if (mask && mask->pixels[p * size_t(mask->channels) + size_t(mask_channel)] <= 0.5f) continue;
+    const float *pa = a.pixels.data() + p * step, *pb = b.pixels.data() + p * step;
+    double here = 0;
+    for (int c = 0; c < channels; ++c) {
+      const double d = double(pa[c]) - pb[c];
+      here += d * d;
     }
+    sum += here;
+    ++n;
+  }
   return n ? sum / (double(n) * channels) : 0.0;
 }
 
