@@ -308,7 +308,7 @@ function E:unseen_error(net, desc)
       end
       u.gbuffers[v] = u.gbuffers[v] or u.scene:gbuffer { view = v, attributes = { "normal", "view" } }
       local mine = self:time("unseen", function() return sn.image.clamp(net:render(u.gbuffers[v])) end)
-      mse = mse + sn.image.mse(truth, mine, { channels = 3, mask = truth })
+      mse = mse + self:time("unseen", sn.image.mse, truth, mine, { channels = 3, mask = truth })
       ssim = ssim + self:time("unseen", sn.image.ssim, truth, mine, { channels = 3, mask = truth })
     end
     mse, ssim = mse / #exp.unseen_views, ssim / #exp.unseen_views
