@@ -7,7 +7,7 @@
 -- output:
 --   forward     sum over layers of 2 w[l] w[l+1], and f(z) on every hidden unit
 --   loss        4 per output (error, its square, the scaled gradient)
---   gradient    sum of 2 w[l+1] inpad[l] (inpad = w rounded up to 8: the outer products run
+--   gradient    sum of 2 w[l+1] inpad[l] (inpad = w rounded up to 4: the outer products run
 --               over the padded inputs), plus 1 per bias
 --   backward    sum over l >= 1 of 2 w[l+1] w[l], plus per hidden unit 1 (times f'(z)) and
 --               the cost of f'(z) where it is taken from f(z)
@@ -36,11 +36,11 @@ function R.flop_per_sample_step(widths, activation)
   local flop, matmul, params = 4 * widths[L + 1], 0, 0
   for l = 0, L - 1 do
     local i, o = widths[l + 1], widths[l + 2]
-    local inpad = round_up(i, 8)
+    local inpad = round_up(i, 4)
     matmul = matmul + 2 * i * o + 2 * o * inpad + (l > 0 and 2 * o * i or 0)
     flop = flop + o  -- the bias gradient
     if l > 0 then flop = flop + i * (cost[1] + 1 + cost[2]) end  -- f(z) forward, f'(z) backward
-    params = params + o * inpad + round_up(o, 8)
+    params = round_up(params + o * inpad, 8) + round_up(o, 8)  -- each layer's biases from a multiple of 8
   end
   return flop + matmul + 15 * round_up(params, 16) / 8, matmul
 end

@@ -23,24 +23,28 @@ namespace {
 using namespace simd;
 
 constexpr int kMaxLanes = 16;  // the widest vectors' lanes (v16): the scratch is sized for them
+std::size_t round4(std::size_t n) { return (n + 3) & ~std::size_t(3); }
 std::size_t round8(std::size_t n) { return (n + 7) & ~std::size_t(7); }
 std::size_t round16(std::size_t n) { return (n + 15) & ~std::size_t(15); }
 
 }  // namespace
 
 // Padded offsets, in floats. Parameters (per network): layer l = rows [out][inpad] (inpad = in
-// rounded up to 8, pad columns stay 0), then biases [round8(out)]; so every layer starts at a
-// multiple of 8 (32 bytes; a pair's, of 16), and a copy is rounded up to 16 floats for Adam's
-// 16-lane vectors (rounding each layer instead cost 10% more Adam work for 8x8). A pair of
-// networks interleaves two such copies float by float. The scratch (activations, their
-// derivatives, transposes, errors, targets) has room for 16 lanes per unit, in multiples of 16.
+// rounded up to 4, pad columns stay 0; the weight gradient runs over them in vectors of 8 inputs
+// and a last one of 4, so rounding to 8 made Adam and the gradient of widths 10 and 12 work on
+// a quarter to three eighths of pad), then biases [round8(out)] from a multiple of 8; so every
+// layer and bias block starts at a multiple of 8 (32 bytes; a pair's, of 16), and a copy is
+// rounded up to 16 floats for Adam's 16-lane vectors (rounding each layer instead cost 10% more
+// Adam work for 8x8). A pair of networks interleaves two such copies float by float. The scratch
+// (activations, their derivatives, transposes, errors, targets) has room for 16 lanes per unit,
+// in multiples of 16; its transposed activations have rows of tpad = in rounded up to 8.
 struct CpuNet::Layout {
   int L = 0;
-  int in[kMaxHidden + 1] = {}, out[kMaxHidden + 1] = {}, inpad[kMaxHidden + 1] = {};
+  int in[kMaxHidden + 1] = {}, out[kMaxHidden + 1] = {}, inpad[kMaxHidden + 1] = {}, tpad[kMaxHidden + 1] = {};
   std::size_t woff[kMaxHidden + 1] = {}, boff[kMaxHidden + 1] = {};  // within a parameter copy
   std::size_t P = 0;  // floats per parameter copy of one network
   std::size_t aoff[kMaxHidden + 2] = {};  // activations of layer l (width(l) x 16), from the scratch
-  std::size_t toff[kMaxHidden + 1] = {};  // transposed activations (16 x inpad), from o_at
+  std::size_t toff[kMaxHidden + 1] = {};  // transposed activations (16 x tpad), from o_at
   int maxw = 0;
   // o_dz: f'(z) of every unit, same offsets as the activations (stored by a training forward
   // pass for hidden kinds that need z, and for the output layer).
@@ -62,12 +66,13 @@ struct CpuNet::Layout {
     for (int l = 0; l < L; ++l) {
       in[l] = s.width(l);
       out[l] = s.width(l + 1);
-      inpad[l] = int(round8(in[l]));
+      inpad[l] = int(round4(in[l]));
+      tpad[l] = int(round8(in[l]));
       woff[l] = P;
-      boff[l] = P + std::size_t(out[l]) * inpad[l];
+      boff[l] = round8(P + std::size_t(out[l]) * inpad[l]);
       P = boff[l] + round8(out[l]);
       toff[l] = at;
-      at += round16(std::size_t(kMaxLanes) * inpad[l]);
+      at += round16(std::size_t(kMaxLanes) * tpad[l]);
     }
     P = round16(P);
     for (int l = 0; l <= L; ++l) {
@@ -98,14 +103,18 @@ using Layout = CpuNet::Layout;
 //        weight pair is one 64-bit broadcast. Two networks of one architecture in one job (a
 //        sweep's seeds, each reading its own rows) fill AVX-512 registers at batch 8.
 //  Wide: 16 samples of one network per v16 (inference).
-// G: the weight gradient's vectors, which hold 8 inputs (of each network).
+// G: the weight gradient's vectors, which hold 8 inputs (of each network); Gh: 4 inputs.
 typedef double v8d __attribute__((vector_size(64)));
+typedef float v4 __attribute__((vector_size(16)));
+typedef double v4d __attribute__((vector_size(32)));
 struct One {
   using V = v8;
   using G = v8;
+  using Gh = v4;  // 4 inputs: a row's last vector when its inputs are 4 more than a multiple of 8
   using E = v8;  // a vector as 8 units of kPar floats (the transposes' view)
   static constexpr int kPar = 1, kSamples = 8;
   static SN_INLINE V w(const float* p) { return splat<V>(*p); }
+  static SN_INLINE Gh wh(const float* p) { return Gh{*p, *p, *p, *p}; }
 };
 struct Wide {  // inference only: no gradient
   using V = v16;
@@ -115,12 +124,18 @@ struct Wide {  // inference only: no gradient
 struct Pair {
   using V = v16;
   using G = v16;
+  using Gh = v8;
   using E = v8d;
   static constexpr int kPar = 2, kSamples = 8;
   static SN_INLINE V w(const float* p) {
     double d;
     std::memcpy(&d, p, sizeof d);
     return (V)v8d{d, d, d, d, d, d, d, d};  // one vbroadcastsd from memory (splat's shuffle made two)
+  }
+  static SN_INLINE Gh wh(const float* p) {
+    double d;
+    std::memcpy(&d, p, sizeof d);
+    return (Gh)v4d{d, d, d, d};
   }
 };
 template <class Mode>
@@ -229,23 +244,34 @@ SN_INLINE void cols_backward(const float* W, int inpad, int out, const typename 
   for (int j = 0; j < R; ++j) prev[j] = acc[j] * grad(j);
 }
 
-// G[j][:] += sum_s d[j][s] * aT[s][:] for R rows: the weight gradient as outer products, with
-// the minibatch (s) as the reduction and 8 inputs (of each network) per vector. kAdd false:
-// G[j][:] = the sum (a minibatch's first block, so the gradient needs no clearing per step).
-template <int R, class Mode, bool kAdd>
-SN_INLINE void rows_gradient(float* G, int inpad, const float* d, const float* aT) {
-  using Gv = typename Mode::G;
+// G[j][c..c+N) (+)= sum_s d[j][s] * aT[s][c..c+N) for R rows, N = the inputs of a vector Gv
+// (of each network). G's rows (inpad floats) start anywhere a multiple of 4 floats falls.
+template <int R, class Mode, bool kAdd, class Gv, class W>
+SN_INLINE void rows_gradient_at(int c, float* G, int inpad, int tpad, const float* d, const float* aT, const W& w) {
+  typedef Gv Gu __attribute__((aligned(16)));
   constexpr int k = Mode::kPar, lanes = kLanesOf<Mode>;
-  for (int c = 0; c < inpad; c += 8) {
-    Gv acc[R];
-    for (int j = 0; j < R; ++j)
-      acc[j] = kAdd ? *reinterpret_cast<const Gv*>(G + (std::size_t(j) * inpad + c) * k) : Gv{};
-    for (int s = 0; s < Mode::kSamples; ++s) {
-      const Gv a = *reinterpret_cast<const Gv*>(aT + (std::size_t(s) * inpad + c) * k);
-      for (int j = 0; j < R; ++j) acc[j] += Mode::w(d + j * lanes + s * k) * a;
-    }
-    for (int j = 0; j < R; ++j) *reinterpret_cast<Gv*>(G + (std::size_t(j) * inpad + c) * k) = acc[j];
+  Gv acc[R];
+  for (int j = 0; j < R; ++j) acc[j] = kAdd ? *reinterpret_cast<const Gu*>(G + (std::size_t(j) * inpad + c) * k) : Gv{};
+  for (int s = 0; s < Mode::kSamples; ++s) {
+    const Gv a = *reinterpret_cast<const Gv*>(aT + (std::size_t(s) * tpad + c) * k);
+    for (int j = 0; j < R; ++j) acc[j] += w(d + j * lanes + s * k) * a;
   }
+  for (int j = 0; j < R; ++j) *reinterpret_cast<Gu*>(G + (std::size_t(j) * inpad + c) * k) = acc[j];
+}
+
+// G[j][:] += sum_s d[j][s] * aT[s][:] for R rows: the weight gradient as outer products, with
+// the minibatch (s) as the reduction and 8 inputs (of each network) per vector, 4 in the last
+// one where inpad is not a multiple of 8. kAdd false: G[j][:] = the sum (a minibatch's first
+// block, so the gradient needs no clearing per step). aT's rows are tpad floats (aligned).
+template <int R, class Mode, bool kAdd>
+SN_INLINE void rows_gradient(float* G, int inpad, int tpad, const float* d, const float* aT) {
+  int c = 0;
+  for (; c + 8 <= inpad; c += 8)
+    rows_gradient_at<R, Mode, kAdd, typename Mode::G>(c, G, inpad, tpad, d, aT,
+                                                     [](const float* p) SN_INLINE_LAMBDA { return Mode::w(p); });
+  if (c < inpad)
+    rows_gradient_at<R, Mode, kAdd, typename Mode::Gh>(c, G, inpad, tpad, d, aT,
+                                                      [](const float* p) SN_INLINE_LAMBDA { return Mode::wh(p); });
 }
 
 // Runs F<R, Mode>(first, R) over [0, n) in groups of 8 and one remainder group.
@@ -284,8 +310,8 @@ struct Backward {
 };
 template <int R, class Mode, bool kAdd>
 struct GradientOf {
-  static SN_INLINE void run(int o, float* G, int inpad, const float* d, const float* aT) {
-    rows_gradient<R, Mode, kAdd>(G + std::size_t(o) * inpad * Mode::kPar, inpad, d + o * kLanesOf<Mode>, aT);
+  static SN_INLINE void run(int o, float* G, int inpad, int tpad, const float* d, const float* aT) {
+    rows_gradient<R, Mode, kAdd>(G + std::size_t(o) * inpad * Mode::kPar, inpad, tpad, d + o * kLanesOf<Mode>, aT);
   }
 };
 template <int R, class Mode>
@@ -495,18 +521,18 @@ SN_INLINE int step_impl(const View<Mode>& V, const float* x, const float* y, Row
       }
     int cur = 0;
     for (int l = S.L - 1; l >= 0; --l) {
-      const int in = S.in[l], out = S.out[l], inpad = S.inpad[l];
+      const int in = S.in[l], out = S.out[l], inpad = S.inpad[l], tpad = S.tpad[l];
       Vec* dl = V.d(cur);
       // Transposed activations for the outer-product gradient (pad columns stay 0), and the
       // bias gradient: each unit's errors summed over the samples, eight units at a time as
       // sums of transposed rows (hsum's order).
       const Vec* a = V.act(l);
       float* aT = V.at(l);
-      for (int c = 0; c < inpad; c += 8) {
+      for (int c = 0; c < tpad; c += 8) {
         E r[8];
         for (int q = 0; q < 8; ++q) r[q] = c + q < in ? (E)a[c + q] : E{};
         transpose8(r);
-        for (int s = 0; s < B; ++s) *reinterpret_cast<E*>(aT + (std::size_t(s) * inpad + c) * k) = r[s];
+        for (int s = 0; s < B; ++s) *reinterpret_cast<E*>(aT + (std::size_t(s) * tpad + c) * k) = r[s];
       }
       float* gb = g + S.boff[l] * k;
       for (int c = 0; c < out; c += 8) {
@@ -520,9 +546,9 @@ SN_INLINE int step_impl(const View<Mode>& V, const float* x, const float* y, Row
         to = first == 0 ? sum : to + sum;
       }
       if (first == 0)
-        in_groups<GradientFirst, Mode>(out, g + S.woff[l] * k, inpad, reinterpret_cast<const float*>(dl), aT);
+        in_groups<GradientFirst, Mode>(out, g + S.woff[l] * k, inpad, tpad, reinterpret_cast<const float*>(dl), aT);
       else
-        in_groups<Gradient, Mode>(out, g + S.woff[l] * k, inpad, reinterpret_cast<const float*>(dl), aT);
+        in_groups<Gradient, Mode>(out, g + S.woff[l] * k, inpad, tpad, reinterpret_cast<const float*>(dl), aT);
       if (l == 0) break;
       Vec* prev = V.d(cur ^ 1);
       in_groups<Backward, Mode>(in, p + S.woff[l] * k, inpad, out, dl, prev,
