@@ -15,7 +15,7 @@
 
 namespace sn::io {
 
-// Threads for work over independent networks: SHADENET_THREADS if set, else the hardware's.
+// Threads for work that splits (networks, image bands): SHADENET_THREADS if set, else the hardware's.
 int default_threads();
 
 namespace detail {
