@@ -127,14 +127,18 @@ struct Pair {
   using Gh = v8;
   using E = v8d;
   static constexpr int kPar = 2, kSamples = 8;
-  static SN_INLINE V w(const float* p) {
+  // A weight pair as one double, broadcast: one vbroadcastsd from memory (splat's shuffle made two).
+  static SN_INLINE double pair_at(const float* p) {
     double d;
     std::memcpy(&d, p, sizeof d);
-    return (V)v8d{d, d, d, d, d, d, d, d};  // one vbroadcastsd from memory (splat's shuffle made two)
+    return d;
+  }
+  static SN_INLINE V w(const float* p) {
+    const double d = pair_at(p);
+    return (V)v8d{d, d, d, d, d, d, d, d};
   }
   static SN_INLINE Gh wh(const float* p) {
-    double d;
-    std::memcpy(&d, p, sizeof d);
+    const double d = pair_at(p);
     return (Gh)v4d{d, d, d, d};
   }
 };
