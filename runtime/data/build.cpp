@@ -87,76 +87,106 @@ std::shared_ptr<Dataset> build_dataset(const scene::Scene& s, const DatasetReque
   int in_width = 0;
   for (const auto& a : r.inputs) in_width += widths.emplace_back(is_varied(r, a) ? 1 : scene::attribute_width(a));
 
-  struct Row {
-    uint64_t key;  // pose << 48 | view << 32 | pixel
-    std::size_t at;
+  // Each distinct (pose, view) rendered once, in key order; a pair listed c times puts each of
+  // its rows c times in a row into the order below (as sorting c identical renders would).
+  struct ViewRows {
+    uint64_t key;  // pose << 48 | view << 32
+    int pose, view, copies;
+    std::vector<uint32_t> pixels;             // y * width + x, per gathered slot
+    std::vector<uint32_t> order;              // the slots by pixel
+    std::vector<std::vector<float>> values;   // per attribute: 4 floats per slot
   };
-  std::vector<Row> rows;
-  std::vector<float> xs, ys;  // per gathered sample: in_width inputs, 3 targets
-  for (int pose : poses) for (int v : views) {
-    scene::GBuffer g = s.gbuffer(v, attributes, pose);
-    scene::Samples smp = scene::gather(g);
-    if (smp.count == 0) continue;
-    gl::Buffer targets(gl::ElemType::vec4, smp.count);
-    auto pixels = scene::download_pixels(smp);
-    auto key_of = [&](std::size_t i) { return (uint64_t(pose) << 48) | (uint64_t(v) << 32) | pixels[i]; };
-    // The varied parameters per sample, one vec4 each (the shader's lighting_vary).
-    std::vector<float> varied;
-    std::shared_ptr<gl::Buffer> varied_buffer;
-    shading::Varied per_row;
-    if (!r.vary.empty()) {
-      varied.assign(smp.count * 4, 0.0f);
-      for (std::size_t i = 0; i < smp.count; ++i)
-        for (std::size_t k = 0; k < r.vary.size(); ++k)
-          varied[i * 4 + k] = float(varied_value(r.seed, key_of(i), k, r.vary[k]));
-      varied_buffer = std::make_shared<gl::Buffer>(gl::ElemType::vec4, smp.count);
-      varied_buffer->upload(varied.data(), 0, varied.size());
-      for (const auto& x : r.vary) per_row.params.push_back(x.name);
-      per_row.values = varied_buffer.get();
+  std::vector<ViewRows> groups;
+  for (int pose : poses) for (int v : views)
+    groups.push_back({(uint64_t(pose) << 48) | (uint64_t(v) << 32), pose, v, 1, {}, {}, {}});
+  std::stable_sort(groups.begin(), groups.end(), [](const ViewRows& a, const ViewRows& b) { return a.key < b.key; });
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < groups.size(); ++i) {
+    if (kept > 0 && groups[kept - 1].key == groups[i].key) {
+      ++groups[kept - 1].copies;
+      continue;
     }
-    shading::SampleBuffers model_in;
-    for (const auto& a : shading::model_attributes(r.target)) model_in[a] = smp.attributes[index_of(a)].get();
-    shading::evaluate(r.target, s.light, model_in, targets, smp.count, r.color, false, r.vary.empty() ? nullptr : &per_row);
-    auto t = scene::download_vec4(targets, smp.count);
-    std::vector<std::vector<float>> in;  // per input: 4 floats per sample
-    for (const auto& a : r.inputs) {
-      if (!is_varied(r, a)) {
-        in.push_back(scene::download_vec4(*smp.attributes[index_of(a)], smp.count));
-        continue;
-      }
-      std::size_t k = 0;
-      while (r.vary[k].name != a) ++k;
-      std::vector<float> column(smp.count * 4, 0.0f);
-      for (std::size_t i = 0; i < smp.count; ++i) column[i * 4] = varied[i * 4 + k];
-      in.push_back(std::move(column));
-    }
-    std::size_t base = ys.size() / 3;
-    for (std::size_t i = 0; i < smp.count; ++i) {
-      rows.push_back({key_of(i), base + i});
-      for (std::size_t k = 0; k < r.inputs.size(); ++k)
-        for (int c = 0; c < widths[k]; ++c) xs.push_back(in[k][i * 4 + c]);
-      for (int c = 0; c < 3; ++c) ys.push_back(t[i * 4 + c]);
-    }
+    groups[kept++] = groups[i];
   }
-  g_last_covered = rows.size();
-  if (rows.empty())
+  groups.resize(kept);
+
+  // Rasterise and gather every view; only the sampled rows are shaded, below. first[g]: the
+  // (pose, view, pixel) order's first row of group g.
+  std::vector<std::size_t> first;
+  std::size_t covered = 0;
+  for (auto& g : groups) {
+    first.push_back(covered);
+    scene::Samples smp = scene::gather(s.gbuffer(g.view, attributes, g.pose));
+    if (smp.count == 0) continue;
+    g.pixels = scene::download_pixels(smp);
+    for (const auto& a : smp.attributes) g.values.push_back(scene::download_vec4(*a, smp.count));
+    // The GPU's slot order is a race; the pixel order is not.
+    std::vector<uint64_t> by_pixel(smp.count);
+    for (std::size_t i = 0; i < smp.count; ++i) by_pixel[i] = (uint64_t(g.pixels[i]) << 32) | i;
+    std::sort(by_pixel.begin(), by_pixel.end());
+    g.order.resize(smp.count);
+    for (std::size_t i = 0; i < smp.count; ++i) g.order[i] = uint32_t(by_pixel[i]);
+    covered += smp.count * std::size_t(g.copies);
+  }
+  g_last_covered = covered;
+  if (covered == 0)
     throw std::invalid_argument("the dataset has no covered pixels: the mesh is outside every camera view (" +
                                 std::to_string(views.size()) + (views.size() == 1 ? " view" : " views") +
                                 (poses.size() > 1 ? " x " + std::to_string(poses.size()) + " poses" : "") + " of " +
                                 std::to_string(s.width) + "x" +
                                 std::to_string(s.height) + "); frame it with views = sn.orbit{...} or move the cameras");
 
-  // The GPU's slot order is a race; (pose, view, pixel) is not.
-  std::sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) { return a.key < b.key; });
   SplitMix rng{r.seed};
-  std::vector<std::size_t> perm(rows.size());
+  std::vector<std::size_t> perm(covered);
   std::iota(perm.begin(), perm.end(), 0);
   for (std::size_t i = perm.size(); i > 1; --i) std::swap(perm[i - 1], perm[rng.below(i)]);
-  std::size_t m = r.samples == 0 ? rows.size() : std::min(r.samples, rows.size());
+  std::size_t m = r.samples == 0 ? covered : std::min(r.samples, covered);
   std::size_t n_train = std::size_t(std::llround(r.split * double(m)));
   if (n_train == 0 || n_train == m)
     throw std::invalid_argument("dataset: " + std::to_string(m) + " samples split " + io::number_text(r.split) +
                                 " leaves no " + (n_train == 0 ? "training" : "validation") + " rows");
+
+  // The sampled rows: group and slot of each, in sample order.
+  struct Pick {
+    const ViewRows* g;
+    uint32_t slot;
+    uint64_t key() const { return g->key | g->pixels[slot]; }
+    const float* at(int attribute) const { return g->values[std::size_t(attribute)].data() + std::size_t(slot) * 4; }
+  };
+  std::vector<Pick> picks(m);
+  for (std::size_t j = 0; j < m; ++j) {
+    const std::size_t k = std::size_t(std::upper_bound(first.begin(), first.end(), perm[j]) - first.begin()) - 1;
+    const ViewRows& g = groups[k];
+    picks[j] = {&g, g.order[(perm[j] - first[k]) / std::size_t(g.copies)]};
+  }
+
+  // The ground truth of the sampled rows, in one dispatch.
+  std::vector<std::unique_ptr<gl::Buffer>> model_buffers;
+  shading::SampleBuffers model_in;
+  for (const auto& a : shading::model_attributes(r.target)) {
+    std::vector<float> column(m * 4);
+    for (std::size_t j = 0; j < m; ++j) std::copy_n(picks[j].at(index_of(a)), 4, column.data() + j * 4);
+    auto& b = model_buffers.emplace_back(std::make_unique<gl::Buffer>(gl::ElemType::vec4, m));
+    b->upload(column.data(), 0, column.size());
+    model_in[a] = b.get();
+  }
+  // The varied parameters per row, one vec4 each (the shader's lighting_vary).
+  std::vector<float> varied;
+  std::unique_ptr<gl::Buffer> varied_buffer;
+  shading::Varied per_row;
+  if (!r.vary.empty()) {
+    varied.assign(m * 4, 0.0f);
+    for (std::size_t j = 0; j < m; ++j)
+      for (std::size_t k = 0; k < r.vary.size(); ++k)
+        varied[j * 4 + k] = float(varied_value(r.seed, picks[j].key(), k, r.vary[k]));
+    varied_buffer = std::make_unique<gl::Buffer>(gl::ElemType::vec4, m);
+    varied_buffer->upload(varied.data(), 0, varied.size());
+    for (const auto& x : r.vary) per_row.params.push_back(x.name);
+    per_row.values = varied_buffer.get();
+  }
+  gl::Buffer targets(gl::ElemType::vec4, m);
+  shading::evaluate(r.target, s.light, model_in, targets, m, r.color, false, r.vary.empty() ? nullptr : &per_row);
+  const auto t = scene::download_vec4(targets, m);
 
   auto d = std::make_shared<Dataset>();
   d->inputs = in_width;
@@ -164,12 +194,21 @@ std::shared_ptr<Dataset> build_dataset(const scene::Scene& s, const DatasetReque
   d->color = r.color;
   d->input_names = r.inputs;
   d->conditions = r.vary;
+  d->train_x.reserve(n_train * std::size_t(in_width)), d->val_x.reserve((m - n_train) * std::size_t(in_width));
+  d->train_y.reserve(n_train * 3), d->val_y.reserve((m - n_train) * 3);
   for (std::size_t j = 0; j < m; ++j) {
-    std::size_t at = rows[perm[j]].at;
     auto& x = j < n_train ? d->train_x : d->val_x;
     auto& y = j < n_train ? d->train_y : d->val_y;
-    x.insert(x.end(), xs.begin() + at * in_width, xs.begin() + (at + 1) * in_width);
-    y.insert(y.end(), ys.begin() + at * 3, ys.begin() + (at + 1) * 3);
+    for (std::size_t k = 0; k < r.inputs.size(); ++k) {
+      if (!is_varied(r, r.inputs[k])) {
+        x.insert(x.end(), picks[j].at(index_of(r.inputs[k])), picks[j].at(index_of(r.inputs[k])) + widths[k]);
+        continue;
+      }
+      std::size_t v = 0;
+      while (r.vary[v].name != r.inputs[k]) ++v;
+      x.push_back(varied[j * 4 + v]);
+    }
+    y.insert(y.end(), t.begin() + std::ptrdiff_t(j * 4), t.begin() + std::ptrdiff_t(j * 4 + 3));
   }
   return d;
 }

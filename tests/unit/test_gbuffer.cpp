@@ -259,6 +259,40 @@ TEST(Dataset, SplitIsDeterministicPerSeedAndSamplesCapTheRows) {
   EXPECT_EQ(c->train_count(), 800u);
 }
 
+// Only the sampled rows are shaded: each must still be the twin of its own inputs. A view listed
+// twice puts its rows in twice.
+TEST(Dataset, SampledRowsAreTheTwinOfTheirInputsAndARepeatedViewCountsTwice) {
+  gl::current();
+  auto s = sphere_scene();
+  data::DatasetRequest r;
+  r.target = shading::default_params("phong");
+  r.samples = 0;
+  auto covered = [&](std::vector<int> views) {
+    r.views = std::move(views);
+    data::build_dataset(s, r);
+    return data::last_covered_pixels();
+  };
+  const std::size_t first = covered({0}), second = covered({1});
+  ASSERT_GT(first, 100u);
+  EXPECT_EQ(covered({1, 0, 1}), first + 2 * second);
+  r.samples = 300;
+  auto d = data::build_dataset(s, r);
+  ASSERT_EQ(d->train_count() + d->val_count(), 300u);
+  int checked = 0;
+  for (int set = 0; set < 2; ++set) {
+    const auto& x = set ? d->val_x : d->train_x;
+    const auto& y = set ? d->val_y : d->train_y;
+    for (std::size_t i = 0; i < x.size() / 6; ++i) {
+      dvec3 n(x[i * 6], x[i * 6 + 1], x[i * 6 + 2]), v(x[i * 6 + 3], x[i * 6 + 4], x[i * 6 + 5]);
+      if (shading::near_discontinuity(r.target, s.light, n, v, 1e-4)) continue;
+      dvec3 t = shading::shade(r.target, s.light, n, v);
+      for (int c = 0; c < 3; ++c) ASSERT_NEAR(y[i * 3 + c], t[c], 1e-5);
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 280);
+}
+
 TEST(Dataset, ZeroCoveredPixelsIsAnErrorNotAnEmptyDataset) {
   gl::current();
   auto s = sphere_scene();
