@@ -2,6 +2,8 @@
 // indices one at a time so uneven work balances. The first exception is rethrown after all
 // threads have stopped. The other threads wait between calls (starting threads for each call
 // cost more than a small image's render); a call made while another holds them starts its own.
+// A call from inside fn (a render inside a batch of renders) runs on its caller alone: the
+// threads are already busy with the outer work.
 #pragma once
 #include <algorithm>
 #include <atomic>
@@ -19,6 +21,9 @@ namespace sn::io {
 int default_threads();
 
 namespace detail {
+// Whether this thread is running a parallel_for's work.
+inline thread_local bool t_in_work = false;
+
 // Hands out the indices [0, n) one at a time to whichever thread calls run(); keeps the first
 // exception and stops handing out work after it.
 template <class Fn>
@@ -30,6 +35,8 @@ struct WorkQueue {
   std::exception_ptr error;
   std::mutex error_mutex;
   void run() {
+    const bool outer = t_in_work;
+    t_in_work = true;
     for (int i; (i = next.fetch_add(1)) < n;) {
       try {
         fn(i);
@@ -39,6 +46,7 @@ struct WorkQueue {
         next = n;
       }
     }
+    t_in_work = outer;
   }
 };
 
@@ -50,7 +58,7 @@ bool run_on_pool(int helpers, const std::function<void()>& work);
 template <class Fn>
 void parallel_for(int n, int threads, Fn&& fn) {
   detail::WorkQueue<Fn> q(n, fn);
-  const int extra = std::max(0, std::min(threads, n) - 1);
+  const int extra = detail::t_in_work ? 0 : std::max(0, std::min(threads, n) - 1);
   if (extra == 0) {
     q.run();
   } else if (!detail::run_on_pool(extra, [&] { q.run(); })) {

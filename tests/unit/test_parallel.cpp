@@ -72,9 +72,16 @@ TEST(ParallelFor, EveryIndexOnceOnThreadsThatStay) {
 // A parallel_for inside another (the pool is held) starts threads of its own; an exception
 // comes out of the call that threw it, and the pool works after it.
 TEST(ParallelFor, NestedCallsAndExceptions) {
-  std::atomic<int> inner{0};
-  parallel_for(4, 2, [&](int) { parallel_for(5, 2, [&](int) { ++inner; }); });
+  std::atomic<int> inner{0}, elsewhere{0};
+  parallel_for(4, 2, [&](int) {
+    const auto outer = std::this_thread::get_id();
+    parallel_for(5, 2, [&](int) {
+      ++inner;
+      if (std::this_thread::get_id() != outer) ++elsewhere;
+    });
+  });
   EXPECT_EQ(inner, 20);
+  EXPECT_EQ(elsewhere, 0);  // the inner calls ran on their callers: the threads had the outer work
   EXPECT_THROW(parallel_for(8, 2,
                             [&](int i) {
                               if (i == 3) throw std::runtime_error("index 3");
