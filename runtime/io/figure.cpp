@@ -204,12 +204,11 @@ void clamp_pixels(float* px, std::size_t count, int n, float lo, float hi) {
 }
 }  // namespace
 
-Image clamp_colors(const Image& img, float lo, float hi) {
+Image clamp_colors(Image img, float lo, float hi) {
   if (!(lo <= hi)) throw std::runtime_error("clamp: lo must be <= hi");
-  Image out = img;
   const int n = std::min(3, img.channels);
   const std::size_t count = std::size_t(img.width) * std::size_t(img.height);
-  float* px = out.pixels.data();
+  float* px = img.pixels.data();
   switch (img.channels) {
     case 1: clamp_pixels<1>(px, count, n, lo, hi); break;
     case 2: clamp_pixels<2>(px, count, n, lo, hi); break;
@@ -222,7 +221,7 @@ Image clamp_colors(const Image& img, float lo, float hi) {
           v = v < lo ? lo : hi < v ? hi : v;
         }
   }
-  return out;
+  return img;
 }
 
 Image crop(const Image& img, int x, int y, int w, int h) {

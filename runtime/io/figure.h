@@ -51,9 +51,9 @@ struct GridStyle {
 // 1- and 2-channel panels are shown as grey. The result has 3 channels.
 Image grid(const std::vector<Panel>& panels, const GridStyle& style);
 
-// A copy with the first min(3, channels) channels clamped to [lo, hi], as a display shows them;
-// NaN stays NaN (a broken pixel must stay visible), alpha is kept.
-Image clamp_colors(const Image& img, float lo = 0.f, float hi = 1.f);
+// `img` with the first min(3, channels) channels clamped to [lo, hi], as a display shows them;
+// NaN stays NaN (a broken pixel must stay visible), alpha is kept. (Pass a temporary, and no copy is made.)
+Image clamp_colors(Image img, float lo = 0.f, float hi = 1.f);
 
 // The part of `img` at (x, y) of size w x h (0-based, top-left); throws when it leaves the image.
 Image crop(const Image& img, int x, int y, int w, int h);

@@ -17,6 +17,7 @@
 #include "nn/gl_forward.h"
 #include "nn/mlp_render.h"
 #include "nn/render.h"
+#include "nn/render_errors.h"
 #include "nn/trainer.h"
 #include "scene/gbuffer.h"
 
@@ -265,6 +266,68 @@ int w_render(lua_State* L) {
   return 1;
 }
 
+// sn.render_errors{ nets = {net, ...} | net, views = { {gbuffer = G, truth = Image}, ... },
+//                   nonfinite = "warn" | "error" | "ignore" }
+//   -> errors[i][k] = { mse, ssim, nonfinite } of nets[i] rendered over views[k].gbuffer, clamped
+// to [0, 1], against views[k].truth (RGBA, alpha = the covered pixels compared): what
+// net:render, sn.image.clamp, sn.image.mse and sn.image.ssim give one at a time, for many
+// networks at once on every thread (nn/render_errors.h). NaN or infinite pixels are reported
+// as net:render reports them.
+int w_render_errors(lua_State* L) {
+  Options o(L, 1, "sn.render_errors", {"nets", "views", "nonfinite"});
+  const NonFinite mode = NonFinite(o.choice("nonfinite", {"warn", "error", "ignore"}, 0));
+  std::vector<std::shared_ptr<Mlp>> nets;
+  const int ni = o.push("nets");
+  if (test_type(L, ni, kType)) {
+    nets.push_back(check_shared<Mlp>(L, ni, kType));
+  } else if (lua_istable(L, ni)) {
+    for (int i = 1; i <= int(lua_objlen(L, ni)); ++i) {
+      lua_rawgeti(L, ni, i);
+      if (!test_type(L, -1, kType))
+        throw Error(o.where("nets") + ": element " + std::to_string(i) + " is " + type_name_at(L, -1) + ", not an Mlp");
+      nets.push_back(check_shared<Mlp>(L, -1, kType));
+      lua_pop(L, 1);
+    }
+  } else {
+    throw Error(o.where("nets") + ": an Mlp or a table of them expected, got " + type_name_at(L, ni));
+  }
+  const int vi = o.push("views");  // stays on the stack: its G-buffers and images stay alive
+  if (!lua_istable(L, vi)) throw Error(o.where("views") + ": a table of { gbuffer = G, truth = Image } expected");
+  std::vector<nn::TruthView> views;
+  for (int k = 1; k <= int(lua_objlen(L, vi)); ++k) {
+    lua_rawgeti(L, vi, k);
+    const std::string where = o.where("views") + " element " + std::to_string(k);
+    if (!lua_istable(L, -1)) throw Error(where + ": { gbuffer = G, truth = Image } expected, got " + type_name_at(L, -1));
+    lua_getfield(L, -1, "gbuffer");
+    if (!test_type(L, -1, "GBuffer")) throw Error(where + ": 'gbuffer' must be a GBuffer, got " + type_name_at(L, -1));
+    const scene::GBuffer* g = &check<scene::GBuffer>(L, -1, "GBuffer");
+    lua_getfield(L, -2, "truth");
+    if (!test_type(L, -1, "Image")) throw Error(where + ": 'truth' must be an Image, got " + type_name_at(L, -1));
+    views.push_back({g, &check<io::Image>(L, -1, "Image")});
+    lua_pop(L, 3);
+  }
+  const std::vector<nn::RenderError> e = nn::render_errors({nets.begin(), nets.end()}, views);
+  lua_createtable(L, int(nets.size()), 0);
+  for (std::size_t i = 0; i < nets.size(); ++i) {
+    std::size_t bad = 0;
+    lua_createtable(L, int(views.size()), 0);
+    for (std::size_t k = 0; k < views.size(); ++k) {
+      const nn::RenderError& r = e[i * views.size() + k];
+      bad += r.nonfinite;
+      lua_createtable(L, 0, 3);
+      lua_pushnumber(L, r.mse), lua_setfield(L, -2, "mse");
+      lua_pushnumber(L, r.ssim), lua_setfield(L, -2, "ssim");
+      lua_pushinteger(L, lua_Integer(r.nonfinite)), lua_setfield(L, -2, "nonfinite");
+      lua_rawseti(L, -2, int(k + 1));
+    }
+    lua_rawseti(L, -2, int(i + 1));
+    std::size_t pixels = 0;
+    for (const auto& v : views) pixels += std::size_t(v.gbuffer->width) * std::size_t(v.gbuffer->height);
+    report_nonfinite(nets[i], "sn.render_errors", bad, pixels, "pixels", "", mode);
+  }
+  return 1;
+}
+
 // sn.render_info() -> { backend = "gl" | "cpu", reason = why that one, nonfinite = covered pixels
 // that came out NaN or infinite (absent when gl drew into a target: nothing was read back),
 // read_ms, network_ms = the cpu backend's time by stage } of the last net:render (nil before one).
@@ -312,6 +375,8 @@ void open_mlp_gl(lua_State* L) {
   lua_setfield(L, -2, "mlp_weight_uploads");
   lua_pushcfunction(L, wrap<w_render_info>);
   lua_setfield(L, -2, "render_info");
+  lua_pushcfunction(L, wrap<w_render_errors>);
+  lua_setfield(L, -2, "render_errors");
 }
 
 }  // namespace sn::lua

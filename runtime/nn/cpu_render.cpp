@@ -26,8 +26,8 @@ double now() { return std::chrono::duration<double>(std::chrono::steady_clock::n
 
 // Host copies of the attachments, kept between renders: a fresh 11 MB buffer per frame would
 // cost page faults and zeroing on every one.
-std::vector<std::vector<float>>& scratch() {
-  static std::vector<std::vector<float>> s;
+GBufferTexels& scratch() {
+  static GBufferTexels s;
   return s;
 }
 
@@ -44,30 +44,55 @@ bool has_cpu_code(const MlpSpec& spec, Activation* without) {
   return true;
 }
 
+namespace {
+void check_cpu_code(const MlpSpec& spec) {
+  Activation bad;
+  if (!has_cpu_code(spec, &bad))
+    throw std::invalid_argument(spec.describe() + ": activation '" + activation_name(bad) +
+                                "' is a definition without cpu code: render it with backend = \"gl\"");
+}
+}  // namespace
+
+const std::vector<float>& GBufferTexels::of(const std::string& attribute) const {
+  for (std::size_t a = 0; a < attributes.size(); ++a)
+    if (attributes[a] == attribute) return texels[a];
+  throw std::invalid_argument("G-buffer attribute '" + attribute + "' was not read back for this render");
+}
+
+void read_gbuffer(const scene::GBuffer& g, const std::vector<std::string>& attributes, GBufferTexels& out) {
+  const scene::PixelBox box = g.box();
+  const int bw = std::max(0, box.width()), bh = std::max(0, box.height());
+  const std::size_t texels = std::size_t(bw) * std::size_t(bh);
+  out.attributes = attributes;
+  out.texels.resize(attributes.size());
+  if (texels) glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+  for (std::size_t a = 0; a < attributes.size(); ++a) {
+    out.texels[a].resize(texels * 4);
+    if (texels)
+      glGetTextureSubImage(g.target->color_texture(g.attachment(attributes[a])), 0, box.x0, box.y0, 0, bw, bh, 1, GL_RGBA,
+                           GL_FLOAT, GLsizei(texels * 4 * sizeof(float)), out.texels[a].data());
+  }
+}
+
 std::size_t cpu_render(const Mlp& net, const scene::GBuffer& g, const RenderInputs& inputs, io::Image& out,
                        CpuLayout layout, CpuRenderTimes* times) {
-  Activation bad;
-  if (!has_cpu_code(net.spec, &bad))
-    throw std::invalid_argument(net.spec.describe() + ": activation '" + activation_name(bad) +
-                                "' is a definition without cpu code: render it with backend = \"gl\"");
+  check_cpu_code(net.spec);
+  const double t0 = now();
+  // Only the attachments the network reads, only inside the box.
+  read_gbuffer(g, inputs.attributes, scratch());
+  const double t1 = now();
+  const std::size_t bad = cpu_render(net, g, scratch(), inputs, out, layout);
+  if (times) *times = {t1 - t0, now() - t1};
+  return bad;
+}
+
+std::size_t cpu_render(const Mlp& net, const scene::GBuffer& g, const GBufferTexels& texels, const RenderInputs& inputs,
+                       io::Image& out, CpuLayout layout) {
+  check_cpu_code(net.spec);
   const int w = g.width, h = g.height;
   const scene::PixelBox box = g.box();
   const int bw = std::max(0, box.width()), bh = std::max(0, box.height());
-  const double t0 = now();
-  // Only the attachments the network reads, only inside the box; coverage is in .w of each
-  // attachment, the first one's is used.
-  const std::size_t na = inputs.attributes.size(), texels = std::size_t(bw) * std::size_t(bh);
-  auto& attr = scratch();
-  if (attr.size() < na) attr.resize(na);
-  if (texels) {
-    glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
-    for (std::size_t a = 0; a < na; ++a) {
-      attr[a].resize(texels * 4);
-      glGetTextureSubImage(g.target->color_texture(g.attachment(inputs.attributes[a])), 0, box.x0, box.y0, 0, bw, bh,
-                           1, GL_RGBA, GL_FLOAT, GLsizei(texels * 4 * sizeof(float)), attr[a].data());
-    }
-  }
-  const double t1 = now();
+  const std::size_t na = inputs.attributes.size();
 
   // Where texel (x, y) of the box lands, and what is zeroed outside it.
   const bool whole = layout == CpuLayout::image;
@@ -86,10 +111,7 @@ std::size_t cpu_render(const Mlp& net, const scene::GBuffer& g, const RenderInpu
       }
     }
   }
-  if (!texels) {
-    if (times) *times = {t1 - t0, now() - t1};
-    return 0;
-  }
+  if (bw == 0 || bh == 0) return 0;
 
   const int in = net.spec.inputs;      // raw inputs per pixel
   const int first = net.spec.width(0);  // what the first layer reads: encoded when the net encodes
@@ -100,8 +122,14 @@ std::size_t cpu_render(const Mlp& net, const scene::GBuffer& g, const RenderInpu
   const int threads = single_threaded(encodings) ? 1 : std::max(1, std::min(io::default_threads(), bands));
   std::atomic<int> next{0};
   std::atomic<std::size_t> nonfinite{0};
+  // Coverage is in .w of each attachment; the first one's is used.
   std::vector<const float*> src(na);
-  for (std::size_t a = 0; a < na; ++a) src[a] = attr[a].data();
+  for (std::size_t a = 0; a < na; ++a) {
+    const std::vector<float>& t = texels.of(inputs.attributes[a]);
+    if (t.size() != std::size_t(bw) * std::size_t(bh) * 4)
+      throw std::invalid_argument("cpu_render: the attachments read back are not of this G-buffer's box");
+    src[a] = t.data();
+  }
   const float* coverage = src[0] + 3;
   // Output pixel (floats / 4) of box texel (x, y): the frame's row h - 1 - y (images run top
   // first) or the box's own.
@@ -180,7 +208,6 @@ std::size_t cpu_render(const Mlp& net, const scene::GBuffer& g, const RenderInpu
     }
     nonfinite += bad_here;
   });
-  if (times) *times = {t1 - t0, now() - t1};
   return nonfinite.load();
 }
 

@@ -7,6 +7,8 @@
 // fragment shader writes, within 1e-5 per channel.
 #pragma once
 #include <cstddef>
+#include <string>
+#include <vector>
 
 #include "io/image.h"
 #include "nn/mlp.h"
@@ -35,5 +37,19 @@ enum class CpuLayout { image, gl_box };
 // covered pixels came out NaN or infinite. Throws when has_cpu_code(net.spec) is false.
 std::size_t cpu_render(const Mlp& net, const scene::GBuffer& g, const RenderInputs& inputs, io::Image& out,
                        CpuLayout layout = CpuLayout::image, CpuRenderTimes* times = nullptr);
+
+// Attachments of a G-buffer on the host, inside its box (RGBA floats, GL's row order): what
+// cpu_render reads. Read once, a G-buffer renders any number of networks (nn/image_error.h).
+struct GBufferTexels {
+  std::vector<std::string> attributes;
+  std::vector<std::vector<float>> texels;  // per attribute: box width x height x 4
+  const std::vector<float>& of(const std::string& attribute) const;  // throws when it was not read
+};
+// Reads `attributes` of g: on the thread that holds the GL context.
+void read_gbuffer(const scene::GBuffer& g, const std::vector<std::string>& attributes, GBufferTexels& out);
+// cpu_render from attachments read before (`texels` holds every one `inputs` names): no GL, so
+// on any thread.
+std::size_t cpu_render(const Mlp& net, const scene::GBuffer& g, const GBufferTexels& texels, const RenderInputs& inputs,
+                       io::Image& out, CpuLayout layout = CpuLayout::image);
 
 }  // namespace sn::nn

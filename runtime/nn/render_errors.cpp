@@ -1,0 +1,80 @@
+#include "nn/render_errors.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "io/figure.h"
+#include "io/parallel.h"
+#include "io/ssim.h"
+#include "nn/cpu_render.h"
+#include "nn/render.h"
+#include "nn/render_inputs.h"
+
+namespace sn::nn {
+
+namespace {
+
+// The error of one render, clamped here, against its truth.
+RenderError score(io::Image&& mine, const io::Image& truth, std::size_t nonfinite) {
+  const io::Image shown = io::clamp_colors(std::move(mine));
+  return {io::mse(truth, shown, 3, &truth), io::ssim(truth, shown, 3, &truth), nonfinite};
+}
+
+}  // namespace
+
+std::vector<RenderError> render_errors(const std::vector<std::shared_ptr<const Mlp>>& nets,
+                                       const std::vector<TruthView>& views) {
+  const std::size_t nv = views.size();
+  for (std::size_t k = 0; k < nv; ++k) {
+    const TruthView& v = views[k];
+    if (!v.gbuffer || !v.truth) throw std::invalid_argument("render_errors: view " + std::to_string(k + 1) + " lacks its G-buffer or truth");
+    if (v.truth->channels != 4 || v.truth->width != v.gbuffer->width || v.truth->height != v.gbuffer->height)
+      throw std::invalid_argument("render_errors: view " + std::to_string(k + 1) + "'s truth is " +
+                                  std::to_string(v.truth->width) + "x" + std::to_string(v.truth->height) + "x" +
+                                  std::to_string(v.truth->channels) + "; RGBA of the G-buffer's " +
+                                  std::to_string(v.gbuffer->width) + "x" + std::to_string(v.gbuffer->height) + " expected");
+  }
+  std::vector<RenderInputs> inputs(nets.size() * nv);
+  std::vector<char> on_cpu(nets.size());
+  for (std::size_t i = 0; i < nets.size(); ++i) {
+    if (!nets[i]) throw std::invalid_argument("render_errors: network " + std::to_string(i + 1) + " is missing");
+    for (std::size_t k = 0; k < nv; ++k) inputs[i * nv + k] = render_inputs(*nets[i], *views[k].gbuffer);
+    on_cpu[i] = choose_render_backend(*nets[i], {}, nullptr) == RenderBackend::cpu;
+  }
+  std::vector<RenderError> errors(nets.size() * nv);
+
+  // Every attachment a cpu network reads, read back once per view.
+  std::vector<GBufferTexels> texels(nv);
+  std::vector<std::size_t> cpu_units;  // i * nv + k
+  for (std::size_t k = 0; k < nv; ++k) {
+    std::vector<std::string> read;
+    for (std::size_t i = 0; i < nets.size(); ++i) {
+      if (!on_cpu[i]) continue;
+      cpu_units.push_back(i * nv + k);
+      for (const auto& a : inputs[i * nv + k].attributes)
+        if (std::find(read.begin(), read.end(), a) == read.end()) read.push_back(a);
+    }
+    read_gbuffer(*views[k].gbuffer, read, texels[k]);
+  }
+  io::parallel_for(int(cpu_units.size()), io::default_threads(), [&](int u) {
+    const std::size_t at = cpu_units[std::size_t(u)], i = at / nv, k = at % nv;
+    io::Image mine;
+    const std::size_t bad = cpu_render(*nets[i], *views[k].gbuffer, texels[k], inputs[at], mine);
+    errors[at] = score(std::move(mine), *views[k].truth, bad);
+  });
+
+  // gl networks draw on this thread, one at a time; their views are scored on the threads.
+  for (std::size_t i = 0; i < nets.size(); ++i) {
+    if (on_cpu[i]) continue;
+    std::vector<Rendered> drawn(nv);
+    for (std::size_t k = 0; k < nv; ++k) drawn[k] = render_network(nets[i], *views[k].gbuffer);
+    io::parallel_for(int(nv), io::default_threads(), [&](int k) {
+      errors[i * nv + std::size_t(k)] = score(std::move(drawn[std::size_t(k)].image), *views[std::size_t(k)].truth,
+                                              drawn[std::size_t(k)].nonfinite);
+    });
+  }
+  return errors;
+}
+
+}  // namespace sn::nn

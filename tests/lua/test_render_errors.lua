@@ -1,0 +1,78 @@
+-- sn.render_errors scores many networks over many views at once, on every thread: each number
+-- must be the one net:render, sn.image.clamp, sn.image.mse and sn.image.ssim give one at a time
+-- (to the bit), for the cpu kernels and for a network only the fragment shader can draw, with
+-- its NaN or infinite pixels counted; bad arguments are errors that say what is wrong.
+local sn = require "shadenet"
+
+local function fails(pattern, f)
+  local ok, err = pcall(f)
+  assert(not ok, "expected an error matching " .. pattern)
+  assert(tostring(err):find(pattern), "error was: " .. tostring(err))
+end
+
+local phong = sn.lighting.phong {}
+local blob = sn.scene { mesh = "meshes/test_blob.glb", size = { 120, 90 }, views = { count = 3, elevation = 20 } }
+local sphere = sn.scene { mesh = sn.mesh.sphere {}, size = { 80, 60 }, views = { count = 2, elevation = -20 } }
+local views = {}
+for v = 1, 3 do
+  views[#views + 1] = { gbuffer = blob:gbuffer { view = v, attributes = { "normal", "view" } }, truth = blob:render(phong, { view = v }) }
+end
+views[#views + 1] = { gbuffer = sphere:gbuffer { view = 2, attributes = { "view", "normal" } }, truth = sphere:render(phong, { view = 2 }) }
+
+sn.activation.define { name = "softsign_e", glsl = "x / (1.0 + abs(x))", grad = "1.0 / ((1.0 + abs(x)) * (1.0 + abs(x)))",
+                       lua = function(x) return x / (1 + math.abs(x)) end,
+                       lua_grad = function(x) return 1 / (1 + math.abs(x)) ^ 2 end }
+local attrs = { "normal", "view" }
+local nets = {
+  sn.mlp { inputs = attrs, hidden = { 8, 8 }, outputs = 3, seed = 1 },
+  sn.mlp { inputs = attrs, hidden = { 12, 12, 12 }, outputs = 3, seed = 2, color = "hsv" },
+  sn.mlp { inputs = { "view", "normal" }, hidden = { 4 }, outputs = 3, seed = 3, activation = "relu" },
+  sn.mlp { inputs = attrs, hidden = { 8 }, outputs = 3, seed = 4, activation = "softsign_e" },  -- gl only
+  sn.mlp { inputs = attrs, hidden = { 6 }, outputs = 3, seed = 5, output_activation = "exponential" },
+}
+nets[5].layers[2].bias = { 0, 200, 0 }  -- exp(200) overflows: infinite green on every covered pixel
+
+local errors = sn.render_errors { nets = nets, views = views, nonfinite = "ignore" }
+assert(#errors == #nets)
+local backends, distinct = {}, {}
+for i, net in ipairs(nets) do
+  assert(#errors[i] == #views)
+  for k, v in ipairs(views) do
+    local mine = sn.image.clamp(net:render(v.gbuffer, { nonfinite = "ignore" }))
+    local info = sn.render_info()
+    backends[info.backend] = true
+    local mse = sn.image.mse(v.truth, mine, { channels = 3, mask = v.truth })
+    local ssim = sn.image.ssim(v.truth, mine, { channels = 3, mask = v.truth })
+    local e = errors[i][k]
+    assert(e.mse == mse and e.ssim == ssim and e.nonfinite == info.nonfinite,
+           ("net %d view %d: mse %.17g ssim %.17g nonfinite %d, one at a time %.17g %.17g %d"):format(
+             i, k, e.mse, e.ssim, e.nonfinite, mse, ssim, info.nonfinite))
+    distinct[("%.17g"):format(e.mse)] = true
+  end
+end
+assert(backends.gl, "the softsign network drew with the fragment shader")
+local count = 0
+for _ in pairs(distinct) do count = count + 1 end
+assert(count == #nets * #views, "every network and view has an error of its own")
+assert(errors[5][1].nonfinite > 100 and errors[1][1].nonfinite == 0, "infinite pixels counted")
+fails("sn.render_errors: %d+ of %d+ pixels are NaN or infinite", function()
+  sn.render_errors { nets = { nets[5] }, views = views, nonfinite = "error" }
+end)
+-- One network as itself, an empty list of views
+assert(sn.render_errors { nets = nets[1], views = { views[2] } }[1][1].mse == errors[1][2].mse)
+assert(#sn.render_errors { nets = nets, views = {} }[1] == 0)
+
+fails("view 1's truth is 80x60x4; RGBA of the G%-buffer's 120x90 expected", function()
+  sn.render_errors { nets = nets, views = { { gbuffer = views[1].gbuffer, truth = views[4].truth } } }
+end)
+fails("'nets': element 2 is string, not an Mlp", function()
+  sn.render_errors { nets = { nets[1], "net" }, views = views }
+end)
+fails("element 1: 'truth' must be an Image, got nil", function()
+  sn.render_errors { nets = nets, views = { { gbuffer = views[1].gbuffer } } }
+end)
+local positional = sn.mlp { inputs = { "position", "normal" }, hidden = { 4 }, outputs = 3, seed = 6 }
+fails("position", function()
+  sn.render_errors { nets = { positional }, views = views }
+end)
+print("ok")
