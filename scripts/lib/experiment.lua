@@ -287,17 +287,17 @@ function exp.generalises(inputs, model)
   return exp.model(model):name() ~= "textured_phong"
 end
 
--- E:unseen_error(net, desc) -> { mse, ssim, meshes = { {label, mse, ssim}, ... } } or nil when
--- the network cannot be rendered on other meshes (exp.generalises). Image MSE over covered pixels
--- and masked SSIM of the network's render (clamped to [0, 1] as a display shows it) against the
--- ground truth, averaged over the views of each unseen mesh, then over the meshes.
-function E:unseen_error(net, desc)
+-- E:unseen_errors(nets, desc) -> for each network { mse, ssim, meshes = { {label, mse, ssim}, ... } },
+-- or nil when the networks cannot be rendered on other meshes (exp.generalises). Image MSE over
+-- covered pixels and masked SSIM of each network's render (clamped to [0, 1] as a display shows
+-- it) against the ground truth, averaged over the views of each unseen mesh, then over the
+-- meshes. All networks at once: sn.render_errors runs them on every thread.
+function E:unseen_errors(nets, desc)
   if not exp.generalises(desc.inputs, desc.model) then return nil end
   local model = exp.model(desc.model)
-  local out = { mse = 0, ssim = 0, meshes = {} }
   local list = self:unseen_scenes(desc.scene.light)
+  local views = {}
   for _, u in ipairs(list) do
-    local mse, ssim = 0, 0
     for _, v in ipairs(exp.unseen_views) do
       local tk = desc.truth
       u.truths[tk] = u.truths[tk] or {}
@@ -307,15 +307,32 @@ function E:unseen_error(net, desc)
         u.truths[tk][v] = truth
       end
       u.gbuffers[v] = u.gbuffers[v] or u.scene:gbuffer { view = v, attributes = { "normal", "view" } }
-      local mine = self:time("unseen", function() return sn.image.clamp(net:render(u.gbuffers[v])) end)
-      mse = mse + self:time("unseen", sn.image.mse, truth, mine, { channels = 3, mask = truth })
-      ssim = ssim + self:time("unseen", sn.image.ssim, truth, mine, { channels = 3, mask = truth })
+      views[#views + 1] = { gbuffer = u.gbuffers[v], truth = truth }
     end
-    mse, ssim = mse / #exp.unseen_views, ssim / #exp.unseen_views
-    out.meshes[#out.meshes + 1] = { label = u.label, mse = mse, ssim = ssim }
-    out.mse, out.ssim = out.mse + mse / #list, out.ssim + ssim / #list
+  end
+  local errors = self:time("unseen", sn.render_errors, { nets = nets, views = views })
+  local out = {}
+  for i, e in ipairs(errors) do
+    local o, k = { mse = 0, ssim = 0, meshes = {} }, 0
+    for _, u in ipairs(list) do
+      local mse, ssim = 0, 0
+      for _ in ipairs(exp.unseen_views) do
+        k = k + 1
+        mse, ssim = mse + e[k].mse, ssim + e[k].ssim
+      end
+      mse, ssim = mse / #exp.unseen_views, ssim / #exp.unseen_views
+      o.meshes[#o.meshes + 1] = { label = u.label, mse = mse, ssim = ssim }
+      o.mse, o.ssim = o.mse + mse / #list, o.ssim + ssim / #list
+    end
+    out[i] = o
   end
   return out
+end
+
+-- E:unseen_error(net, desc): E:unseen_errors for one network.
+function E:unseen_error(net, desc)
+  local out = self:unseen_errors({ net }, desc)
+  return out and out[1]
 end
 
 -- Table columns for the unseen-mesh error, and a row's values: medians over the runs `ids`.
@@ -552,16 +569,24 @@ function E:train_group(group, tick)
       tick(epochs_done / total)
     end or nil,
   })
+  -- Ctrl-C stopped sn.train: a run any of whose copies stopped part-way is not a result (the
+  -- sweep leaves it for the next run of the command).
+  local stopped, scored = {}, {}
+  for i, r in ipairs(group) do
+    for k = first[i], first[i] + (r.config.copies or 1) - 1 do stopped[i] = stopped[i] or out[k].interrupted end
+    if not stopped[i] and stats.finite(out[first[i]].best_val_mse) then scored[#scored + 1] = i end
+  end
+  local scored_nets, unseen_of = {}, {}
+  for j, i in ipairs(scored) do scored_nets[j] = nets[first[i]] end
+  local errors = #scored_nets > 0 and self:unseen_errors(scored_nets, c.data) or {}
+  for j, i in ipairs(scored) do unseen_of[i] = errors[j] end
   local res = {}
   for i, r in ipairs(group) do
     local o = out[first[i]]
-    -- Ctrl-C stopped sn.train: a run any of whose copies stopped part-way is not a result (the
-    -- sweep leaves it for the next run of the command).
-    local stopped = nil
-    for k = first[i], first[i] + (r.config.copies or 1) - 1 do stopped = stopped or out[k].interrupted end
+    local stopped = stopped[i]
     local p = nil
     if r.config.keep_params then p = nets[first[i]]:params() end
-    local unseen = not stopped and stats.finite(o.best_val_mse) and self:unseen_error(nets[first[i]], c.data) or nil
+    local unseen = unseen_of[i]
     res[i] = {
       unseen_mse = unseen and unseen.mse, unseen_ssim = unseen and unseen.ssim,
       best_val_mse = o.best_val_mse, best_epoch = o.best_epoch,
