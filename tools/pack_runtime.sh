@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # What a machine without shadenet's dependencies needs to run it (the lent GPU machines: README.md,
 # "On a GPU"), packed in parts small enough for one device call each (a call carries at most
-# 64 MiB, the repository's 16 MiB included): the shared libraries build/shadenet and
-# build/tests/shadenet_unit load beyond the C runtime and the GL loaders, and the build's
+# 64 MiB, the repository's 16 MiB included): the shared libraries build/shadenet,
+# build/tests/shadenet_unit and the image module load beyond the C runtime and the GL loaders, and the build's
 # programs and test files (build/ without CMake's objects and the core library).
 #
 #   tools/pack_runtime.sh [--part-mib N] [--level L] [--list] OUTDIR
@@ -41,7 +41,8 @@ if [ $list = 0 ]; then
   [ $# -eq 1 ] || { echo "pack_runtime.sh: expected one OUTDIR after the options (got $#)" >&2; usage >&2; exit 2; }
 fi
 
-programs=(build/shadenet build/tests/shadenet_unit)
+# The image module (OpenImageIO, loaded on first use) brings most of the libraries.
+programs=(build/shadenet build/tests/shadenet_unit build/libshadenet_image.so)
 for p in "${programs[@]}"; do
   [ -x "$p" ] || { echo "pack_runtime.sh: $p is missing: build first (README.md)" >&2; exit 1; }
 done

@@ -1,12 +1,12 @@
 #include "io/figure.h"
 
-#include <OpenImageIO/imagebufalgo.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 #include <stdexcept>
+
+#include "io/image_codec.h"
 
 namespace sn::io {
 
@@ -23,13 +23,8 @@ struct LineMetrics {
 
 LineMetrics line_metrics(float size) {
   // Glyphs reaching the highest and lowest: every line gets the same height, whatever it says.
-  OIIO::ROI r = OIIO::ImageBufAlgo::text_size("AHg|(", int(std::lround(size)), label_font());
-  return {std::max(1, -r.ybegin), std::max(0, r.yend)};
-}
-
-OIIO::ImageBuf wrap(Image& img) {
-  OIIO::ImageSpec spec(img.width, img.height, img.channels, OIIO::TypeDesc::FLOAT);
-  return OIIO::ImageBuf(spec, img.pixels.data());
+  const TextBox r = image_codec().text_size("AHg|(", int(std::lround(size)), label_font());
+  return {std::max(1, -r.y0), std::max(0, r.y1)};
 }
 
 void fill(Image& img, const Color& c) {
@@ -108,7 +103,7 @@ std::string ascii_label(const std::string& text) {
 const std::string& label_font() {
   static const std::string font = [] {
     for (const char* f : kFontCandidates)
-      if (OIIO::ImageBufAlgo::text_size("Ag", 16, f).defined()) return std::string(f);
+      if (image_codec().text_size("Ag", 16, f).defined) return std::string(f);
     return std::string();
   }();
   if (font.empty())
@@ -123,8 +118,8 @@ std::array<int, 2> text_size(const std::string& utf8, float size) {
   if (!(size >= 1 && size <= 512)) throw std::runtime_error("text size must be 1..512 pixels, got " + std::to_string(size));
   LineMetrics m = line_metrics(size);
   if (text.empty()) return {0, m.ascent + m.descent};
-  OIIO::ROI r = OIIO::ImageBufAlgo::text_size(text, int(std::lround(size)), label_font());
-  return {r.defined() ? r.xend - std::min(0, r.xbegin) : 0, m.ascent + m.descent};
+  const TextBox r = image_codec().text_size(text, int(std::lround(size)), label_font());
+  return {r.defined ? r.x1 - std::min(0, r.x0) : 0, m.ascent + m.descent};
 }
 
 void draw_text(Image& img, int x, int y, const std::string& utf8, const TextStyle& style) {
@@ -137,9 +132,9 @@ void draw_text(Image& img, int x, int y, const std::string& utf8, const TextStyl
   int baseline = y + line_metrics(style.size).ascent;
   std::vector<float> color(img.channels, 1.f);
   for (int k = 0; k < std::min(3, img.channels); ++k) color[k] = style.color[k];
-  OIIO::ImageBuf buf = wrap(img);
-  if (!OIIO::ImageBufAlgo::render_text(buf, x0, baseline, text, int(std::lround(style.size)), label_font(), color))
-    throw std::runtime_error("cannot draw text '" + text + "': " + buf.geterror());
+  std::string error;
+  if (!image_codec().render_text(img, x0, baseline, text, int(std::lround(style.size)), label_font(), color, &error))
+    throw std::runtime_error("cannot draw text '" + text + "': " + error);
 }
 
 Image grid(const std::vector<Panel>& panels, const GridStyle& s) {

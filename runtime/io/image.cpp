@@ -1,9 +1,7 @@
 #include "io/image.h"
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
-
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -11,6 +9,7 @@
 #include <unistd.h>
 
 #include "io/atomic_write.h"
+#include "io/image_codec.h"
 #include "io/limits.h"
 
 namespace sn::io {
@@ -18,10 +17,10 @@ namespace sn::io {
 namespace fs = std::filesystem;
 
 namespace {
-Image read_from(std::unique_ptr<OIIO::ImageInput> in, const std::string& what) {
-  if (!in) throw std::runtime_error(what + ": not a readable image (" + OIIO::geterror() + ")");
-  const OIIO::ImageSpec& spec = in->spec();
-  if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
+Image read_from(std::unique_ptr<ImageSource> in, const std::string& error, const std::string& what) {
+  if (!in) throw std::runtime_error(what + ": not a readable image (" + error + ")");
+  const ImageHeader spec = in->header();
+  if (spec.width <= 0 || spec.height <= 0 || spec.channels <= 0)
     throw std::runtime_error(what + ": image has no pixels");
   // A volume would be written depth times past a 2-D buffer.
   if (spec.depth > 1)
@@ -33,26 +32,14 @@ Image read_from(std::unique_ptr<OIIO::ImageInput> in, const std::string& what) {
     throw std::runtime_error(what + ": " + std::to_string(spec.width) + "x" + std::to_string(spec.height) + " is " +
                              std::to_string(pixels) + " pixels, above the limit of " + std::to_string(lim.image_pixels) +
                              raise_hint("image_pixels"));
-  if (uint64_t(spec.nchannels) > lim.image_channels)
-    throw std::runtime_error(what + ": " + std::to_string(spec.nchannels) + " channels, above the limit of " +
+  if (uint64_t(spec.channels) > lim.image_channels)
+    throw std::runtime_error(what + ": " + std::to_string(spec.channels) + " channels, above the limit of " +
                              std::to_string(lim.image_channels) + raise_hint("image_channels"));
-  Image img(spec.width, spec.height, spec.nchannels);
-  bool ok = true;
-  if (spec.tile_width == 0) {
-    // read_image converts through a buffer of at least 256 scanlines whatever the image's
-    // height (a 26-byte PPM declaring 33,333,323 x 2 pixels asked for 25.6 GB; found by
-    // tests/fuzz): scanline files are read a row at a time, so memory is the image and one row.
-    const std::size_t row = std::size_t(spec.width) * spec.nchannels;
-    for (int y = 0; ok && y < spec.height; ++y)
-      ok = in->read_scanline(spec.y + y, spec.z, OIIO::TypeDesc::FLOAT, img.pixels.data() + y * row);
-  } else {
-    ok = in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, img.pixels.data());
-  }
-  if (!ok) throw std::runtime_error(what + ": corrupt image data (" + in->geterror() + ")");
-  in->close();
+  Image img(spec.width, spec.height, spec.channels);
+  std::string reason;
+  if (!in->read(img.pixels.data(), &reason)) throw std::runtime_error(what + ": corrupt image data (" + reason + ")");
   return img;
 }
-
 
 // A DDS header that declares depth (DDSD_DEPTH) > 1 is a volume whatever its caps say: without
 // the volume cap OpenImageIO reports one slice and then reads all of them (a 253-byte file kept
@@ -77,54 +64,42 @@ Image load_image(const std::string& path) {
   if (!fs::is_regular_file(path)) throw std::runtime_error("image file '" + path + "' is not a regular file");
   const std::string what = "image file '" + path + "'";
   refuse_dds_volume(path, what);
-  return read_from(OIIO::ImageInput::open(path), what);
+  std::string error;
+  auto in = image_codec().open_file(path, &error);
+  return read_from(std::move(in), error, what);
 }
 
 Image decode_image(const std::vector<unsigned char>& bytes, const std::string& what) {
-  OIIO::Filesystem::IOMemReader mem(const_cast<unsigned char*>(bytes.data()), bytes.size());
-  // OpenImageIO picks the reader from a name; sniff PNG/JPEG magic numbers to name it.
-  // (The proxy goes in as open()'s argument only: an "oiio:ioproxy" PTR attribute must hold a
-  // pointer to the pointer, and given &mem it made OpenImageIO read the vtable and crash.)
+  // The library picks the reader from a name; sniff PNG/JPEG magic numbers to name it.
   std::string name = "embedded.png";
   if (bytes.size() > 2 && bytes[0] == 0xFF && bytes[1] == 0xD8) name = "embedded.jpg";
-  return read_from(OIIO::ImageInput::open(name, nullptr, &mem), what);
+  std::string error;
+  auto in = image_codec().open_memory(bytes.data(), bytes.size(), name, &error);
+  return read_from(std::move(in), error, what);
+}
+
+std::vector<unsigned char> encode_image(const Image& img, const std::string& name) {
+  std::string ext = fs::path(name).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
+  const bool is_float = ext == ".exr" || ext == ".hdr" || ext == ".tif" || ext == ".tiff";
+  if (!(is_float || ext == ".png" || ext == ".jpg" || ext == ".jpeg" || ext == ".bmp"))
+    throw std::runtime_error("cannot save '" + name + "': unknown image extension '" + ext +
+                             "' (valid: .png, .exr, .jpg, .bmp, .tif, .hdr)");
+  if (is_float) return image_codec().encode(img, nullptr, name);
+  std::vector<unsigned char> bytes(img.pixels.size());
+  for (size_t i = 0; i < bytes.size(); ++i) {
+    float v = img.pixels[i];
+    v = std::isfinite(v) ? std::clamp(v, 0.f, 1.f) : 0.f;
+    bytes[i] = (unsigned char)(v * 255.f + 0.5f);
+  }
+  return image_codec().encode(img, &bytes, name);
 }
 
 void save_image(const Image& img, const std::string& path) {
   if (img.pixels.empty()) throw std::runtime_error("cannot save an empty image to '" + path + "'");
-  std::string ext = fs::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
-  bool is_float = ext == ".exr" || ext == ".hdr" || ext == ".tif" || ext == ".tiff";
-  if (!(is_float || ext == ".png" || ext == ".jpg" || ext == ".jpeg" || ext == ".bmp"))
-    throw std::runtime_error("cannot save '" + path + "': unknown image extension '" + ext +
-                             "' (valid: .png, .exr, .jpg, .bmp, .tif, .hdr)");
   // Encoded in memory, then written whole by write_file_atomic, which checks every write, the
   // flush, fsync and close (OpenImageIO's writers report success on a full disk).
-  auto out = OIIO::ImageOutput::create(path);
-  if (!out) throw std::runtime_error("cannot save '" + path + "': " + OIIO::geterror());
-  if (!out->supports("ioproxy"))
-    throw std::runtime_error("cannot save '" + path + "': this build's " + out->format_name() +
-                             " writer cannot write to memory (valid: .png, .exr, .jpg, .bmp, .tif, .hdr where supported)");
-  std::vector<unsigned char> encoded;
-  OIIO::Filesystem::IOVecOutput memory(encoded);
-  out->set_ioproxy(&memory);
-  OIIO::ImageSpec spec(img.width, img.height, img.channels, is_float ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
-  if (!out->open(path, spec)) throw std::runtime_error("cannot save '" + path + "': " + out->geterror());
-  bool ok;
-  if (is_float) {
-    ok = out->write_image(OIIO::TypeDesc::FLOAT, img.pixels.data());
-  } else {
-    std::vector<unsigned char> bytes(img.pixels.size());
-    for (size_t i = 0; i < bytes.size(); ++i) {
-      float v = img.pixels[i];
-      v = std::isfinite(v) ? std::clamp(v, 0.f, 1.f) : 0.f;
-      bytes[i] = (unsigned char)(v * 255.f + 0.5f);
-    }
-    ok = out->write_image(OIIO::TypeDesc::UINT8, bytes.data());
-  }
-  std::string err = ok ? "" : out->geterror();
-  ok = out->close() && ok;
-  if (!ok) throw std::runtime_error("cannot save '" + path + "': " + (err.empty() ? out->geterror() : err));
+  const std::vector<unsigned char> encoded = encode_image(img, path);
   write_file_atomic(path, std::string(encoded.begin(), encoded.end()), "image");
 }
 

@@ -30,6 +30,8 @@ Image decode_image(const std::vector<unsigned char>& bytes, const std::string& w
 // rename), so a failure -- a full disk included -- never leaves a half-written image. 8-bit formats (PNG, JPEG) are clamped to [0,1] and sRGB-free (values
 // stored as given); EXR keeps full float. Throws on an unknown extension.
 void save_image(const Image& img, const std::string& path);
+// The file save_image writes, in memory: the format from `name`'s extension (8-bit ones clamped).
+std::vector<unsigned char> encode_image(const Image& img, const std::string& name);
 
 // |a - b| per channel (sizes must match).
 Image difference(const Image& a, const Image& b);

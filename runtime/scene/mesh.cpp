@@ -1,7 +1,5 @@
 #include "scene/mesh.h"
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
 // Debian's libtinygltf.so carries the implementation (built with its default options), so the
 // header is only declarations here: no TINYGLTF_IMPLEMENTATION, no option macros that would
 // change the classes' layout.
@@ -600,21 +598,11 @@ class GltfLoader {
 
 // PNG bytes of `img` (8 bits per channel, values clamped to [0,1]) for embedding in a .glb.
 std::vector<unsigned char> encode_png(const io::Image& img, const std::string& what) {
-  std::vector<unsigned char> bytes(img.pixels.size());
-  for (size_t i = 0; i < bytes.size(); ++i) {
-    float v = img.pixels[i];
-    v = std::isfinite(v) ? std::clamp(v, 0.f, 1.f) : 0.f;
-    bytes[i] = (unsigned char)(v * 255.f + 0.5f);
+  try {
+    return io::encode_image(img, "texture.png");
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(what + ": cannot encode the texture as PNG (" + e.what() + ")");
   }
-  std::vector<unsigned char> png;
-  OIIO::Filesystem::IOVecOutput out(png);
-  auto writer = OIIO::ImageOutput::create("texture.png", &out);
-  OIIO::ImageSpec spec(img.width, img.height, img.channels, OIIO::TypeDesc::UINT8);
-  if (!writer || !writer->open("texture.png", spec) || !writer->write_image(OIIO::TypeDesc::UINT8, bytes.data()) ||
-      !writer->close())
-    throw std::runtime_error(what + ": cannot encode the texture as PNG (" +
-                             (writer ? writer->geterror() : OIIO::geterror()) + ")");
-  return png;
 }
 
 // Appends `bytes` to the buffer (4-byte aligned, as accessors need) and adds a view onto them.
