@@ -3,12 +3,7 @@
 -- (to the bit), for the cpu kernels and for a network only the fragment shader can draw, with
 -- its NaN or infinite pixels counted; bad arguments are errors that say what is wrong.
 local sn = require "shadenet"
-
-local function fails(pattern, f)
-  local ok, err = pcall(f)
-  assert(not ok, "expected an error matching " .. pattern)
-  assert(tostring(err):find(pattern), "error was: " .. tostring(err))
-end
+local expect = require "expect"
 
 local phong = sn.lighting.phong {}
 local blob = sn.scene { mesh = "meshes/test_blob.glb", size = { 120, 90 }, views = { count = 3, elevation = 20 } }
@@ -55,24 +50,24 @@ local count = 0
 for _ in pairs(distinct) do count = count + 1 end
 assert(count == #nets * #views, "every network and view has an error of its own")
 assert(errors[5][1].nonfinite > 100 and errors[1][1].nonfinite == 0, "infinite pixels counted")
-fails("sn.render_errors: %d+ of %d+ pixels are NaN or infinite", function()
+expect.fails(function()
   sn.render_errors { nets = { nets[5] }, views = views, nonfinite = "error" }
-end)
+end, "pixels are NaN or infinite")
 -- One network as itself, an empty list of views
 assert(sn.render_errors { nets = nets[1], views = { views[2] } }[1][1].mse == errors[1][2].mse)
 assert(#sn.render_errors { nets = nets, views = {} }[1] == 0)
 
-fails("view 1's truth is 80x60x4; RGBA of the G%-buffer's 120x90 expected", function()
+expect.fails(function()
   sn.render_errors { nets = nets, views = { { gbuffer = views[1].gbuffer, truth = views[4].truth } } }
-end)
-fails("'nets': element 2 is string, not an Mlp", function()
+end, "view 1's truth is 80x60x4; RGBA of the G-buffer's 120x90 expected")
+expect.fails(function()
   sn.render_errors { nets = { nets[1], "net" }, views = views }
-end)
-fails("element 1: 'truth' must be an Image, got nil", function()
+end, "'nets': element 2 is string, not an Mlp")
+expect.fails(function()
   sn.render_errors { nets = nets, views = { { gbuffer = views[1].gbuffer } } }
-end)
+end, "element 1: 'truth' must be an Image, got nil")
 local positional = sn.mlp { inputs = { "position", "normal" }, hidden = { 4 }, outputs = 3, seed = 6 }
-fails("position", function()
+expect.fails(function()
   sn.render_errors { nets = { positional }, views = views }
-end)
+end, "position")
 print("ok")

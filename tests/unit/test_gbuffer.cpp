@@ -204,6 +204,27 @@ scene::Scene sphere_scene() {
   return s;
 }
 
+// Every (normal, view) row of `d` away from a discontinuity of r.target holds the double twin's
+// colour in r.color within 1e-5; `checked` counts the rows compared.
+void check_rows_against_twin(const data::Dataset& d, const data::DatasetRequest& r, const scene::Scene& s, int* checked) {
+  for (int set = 0; set < 2; ++set) {
+    const auto& x = set ? d.val_x : d.train_x;
+    const auto& y = set ? d.val_y : d.train_y;
+    for (std::size_t i = 0; i < x.size() / 6; ++i) {
+      dvec3 n(x[i * 6], x[i * 6 + 1], x[i * 6 + 2]), v(x[i * 6 + 3], x[i * 6 + 4], x[i * 6 + 5]);
+      EXPECT_NEAR(glm::length(n), 1.0, 1e-5);
+      if (shading::near_discontinuity(r.target, s.light, n, v, 1e-4)) continue;
+      dvec3 t = shading::encode_color(r.color, shading::shade(r.target, s.light, n, v));
+      for (int c = 0; c < 3; ++c) {
+        double e = std::abs(y[i * 3 + c] - t[c]);
+        if (r.color == shading::ColorSpace::hsv && c == 0) e = std::min(e, 1 - e);  // hue wraps
+        ASSERT_LE(e, 1e-5) << shading::color_space_name(r.color);
+      }
+      ++*checked;
+    }
+  }
+}
+
 TEST(Dataset, RowsAreTheTwinOfTheirInputsInTheRequestedColourSpace) {
   gl::current();
   auto s = sphere_scene();
@@ -219,22 +240,7 @@ TEST(Dataset, RowsAreTheTwinOfTheirInputsInTheRequestedColourSpace) {
     EXPECT_EQ(total, data::last_covered_pixels());
     EXPECT_NEAR(double(d->train_count()) / total, 0.8, 1.0 / total);
     int checked = 0;
-    for (int set = 0; set < 2; ++set) {
-      const auto& x = set ? d->val_x : d->train_x;
-      const auto& y = set ? d->val_y : d->train_y;
-      for (std::size_t i = 0; i < x.size() / 6; ++i) {
-        dvec3 n(x[i * 6], x[i * 6 + 1], x[i * 6 + 2]), v(x[i * 6 + 3], x[i * 6 + 4], x[i * 6 + 5]);
-        EXPECT_NEAR(glm::length(n), 1.0, 1e-5);
-        if (shading::near_discontinuity(r.target, s.light, n, v, 1e-4)) continue;
-        dvec3 t = shading::encode_color(color, shading::shade(r.target, s.light, n, v));
-        for (int c = 0; c < 3; ++c) {
-          double e = std::abs(y[i * 3 + c] - t[c]);
-          if (color == shading::ColorSpace::hsv && c == 0) e = std::min(e, 1 - e);  // hue wraps
-          ASSERT_LE(e, 1e-5) << shading::color_space_name(color);
-        }
-        ++checked;
-      }
-    }
+    check_rows_against_twin(*d, r, s, &checked);
     EXPECT_GT(checked, int(total * 0.95));
   }
 }
@@ -279,17 +285,7 @@ TEST(Dataset, SampledRowsAreTheTwinOfTheirInputsAndARepeatedViewCountsTwice) {
   auto d = data::build_dataset(s, r);
   ASSERT_EQ(d->train_count() + d->val_count(), 300u);
   int checked = 0;
-  for (int set = 0; set < 2; ++set) {
-    const auto& x = set ? d->val_x : d->train_x;
-    const auto& y = set ? d->val_y : d->train_y;
-    for (std::size_t i = 0; i < x.size() / 6; ++i) {
-      dvec3 n(x[i * 6], x[i * 6 + 1], x[i * 6 + 2]), v(x[i * 6 + 3], x[i * 6 + 4], x[i * 6 + 5]);
-      if (shading::near_discontinuity(r.target, s.light, n, v, 1e-4)) continue;
-      dvec3 t = shading::shade(r.target, s.light, n, v);
-      for (int c = 0; c < 3; ++c) ASSERT_NEAR(y[i * 3 + c], t[c], 1e-5);
-      ++checked;
-    }
-  }
+  check_rows_against_twin(*d, r, s, &checked);
   EXPECT_GT(checked, 280);
 }
 
