@@ -17,7 +17,10 @@ void compose(io::Layout layout, const gl::RenderTarget& network, const gl::Rende
   if (out.width() != ow || out.height() != oh)
     throw std::invalid_argument("the composed image needs a " + std::to_string(ow) + "x" + std::to_string(oh) +
                                 " target, got " + std::to_string(out.width()) + "x" + std::to_string(out.height()));
-  auto program = gl::get_program({"live/compose.comp", "", "", {{"LAYOUT_SIDE", layout == io::Layout::side ? "1" : "0"}}});
+  gl::ProgramDesc desc;
+  desc.compute = "live/compose.comp";
+  desc.defines = {{"LAYOUT_SIDE", layout == io::Layout::side ? "1" : "0"}};
+  auto program = gl::get_program(desc);
   if (layout == io::Layout::side)  // the error layout does not read it (and the compiler drops it)
     program->set_uniform("u_panel", {double(network.width()), double(network.height())});
   program->set_uniform("u_scale", {scale});
