@@ -9,6 +9,7 @@
 
 #include "io/text.h"
 #include "lua/binding.h"
+#include "lua/mlp_binding.h"
 #include "lua/encoding_binding.h"
 #include "lua/module.h"
 #include "nn/checkpoint.h"
@@ -558,6 +559,25 @@ void open_mlp(lua_State* L) {
   lua_setfield(L, -2, "mlp");
   lua_pushcfunction(L, wrap<w_load>);
   lua_setfield(L, -2, "load");
+}
+
+std::vector<std::shared_ptr<nn::Mlp>> check_mlp_list(lua_State* L, int idx, const std::string& where) {
+  std::vector<std::shared_ptr<nn::Mlp>> nets;
+  if (test_type(L, idx, kType)) {
+    nets.push_back(check_shared<nn::Mlp>(L, idx, kType));
+  } else if (lua_istable(L, idx)) {
+    const int n = int(lua_objlen(L, idx));
+    for (int i = 1; i <= n; ++i) {
+      lua_rawgeti(L, idx, i);
+      if (!test_type(L, -1, kType))
+        throw Error(where + ": element " + std::to_string(i) + " is " + type_name_at(L, -1) + ", not an Mlp");
+      nets.push_back(check_shared<nn::Mlp>(L, -1, kType));
+      lua_pop(L, 1);
+    }
+  } else {
+    throw Error(where + ": an Mlp or a table of them expected, got " + type_name_at(L, idx));
+  }
+  return nets;
 }
 
 }  // namespace sn::lua

@@ -12,6 +12,7 @@
 #include "io/image.h"
 #include "io/text.h"
 #include "lua/binding.h"
+#include "lua/mlp_binding.h"
 #include "lua/module.h"
 #include "data/dataset.h"
 #include "nn/gl_forward.h"
@@ -276,21 +277,7 @@ int w_render(lua_State* L) {
 int w_render_errors(lua_State* L) {
   Options o(L, 1, "sn.render_errors", {"nets", "views", "nonfinite"});
   const NonFinite mode = NonFinite(o.choice("nonfinite", {"warn", "error", "ignore"}, 0));
-  std::vector<std::shared_ptr<Mlp>> nets;
-  const int ni = o.push("nets");
-  if (test_type(L, ni, kType)) {
-    nets.push_back(check_shared<Mlp>(L, ni, kType));
-  } else if (lua_istable(L, ni)) {
-    for (int i = 1; i <= int(lua_objlen(L, ni)); ++i) {
-      lua_rawgeti(L, ni, i);
-      if (!test_type(L, -1, kType))
-        throw Error(o.where("nets") + ": element " + std::to_string(i) + " is " + type_name_at(L, -1) + ", not an Mlp");
-      nets.push_back(check_shared<Mlp>(L, -1, kType));
-      lua_pop(L, 1);
-    }
-  } else {
-    throw Error(o.where("nets") + ": an Mlp or a table of them expected, got " + type_name_at(L, ni));
-  }
+  const std::vector<std::shared_ptr<Mlp>> nets = check_mlp_list(L, o.push("nets"), o.where("nets"));
   const int vi = o.push("views");  // stays on the stack: its G-buffers and images stay alive
   if (!lua_istable(L, vi)) throw Error(o.where("views") + ": a table of { gbuffer = G, truth = Image } expected");
   std::vector<nn::TruthView> views;
@@ -307,6 +294,8 @@ int w_render_errors(lua_State* L) {
     lua_pop(L, 3);
   }
   const std::vector<nn::RenderError> e = nn::render_errors({nets.begin(), nets.end()}, views);
+  std::size_t pixels = 0;  // of all views: what a network's nonfinite count is out of
+  for (const auto& v : views) pixels += std::size_t(v.gbuffer->width) * std::size_t(v.gbuffer->height);
   lua_createtable(L, int(nets.size()), 0);
   for (std::size_t i = 0; i < nets.size(); ++i) {
     std::size_t bad = 0;
@@ -321,8 +310,6 @@ int w_render_errors(lua_State* L) {
       lua_rawseti(L, -2, int(k + 1));
     }
     lua_rawseti(L, -2, int(i + 1));
-    std::size_t pixels = 0;
-    for (const auto& v : views) pixels += std::size_t(v.gbuffer->width) * std::size_t(v.gbuffer->height);
     report_nonfinite(nets[i], "sn.render_errors", bad, pixels, "pixels", "", mode);
   }
   return 1;

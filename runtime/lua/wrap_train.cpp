@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "lua/binding.h"
+#include "lua/mlp_binding.h"
 #include "lua/interrupt.h"
 #include "lua/module.h"
 #include "data/dataset.h"
@@ -112,22 +113,7 @@ int w_train(lua_State* L) {
                                      "tick_seconds", "loss", "divergence_factor"});
   nn::TrainJob job;
   // Keep every network (and the dataset) referenced from this stack frame while training runs.
-  std::vector<std::shared_ptr<nn::Mlp>> hold;
-  int nets = o.push("nets");
-  if (test_type(L, nets, "Mlp")) {
-    hold.push_back(check_shared<nn::Mlp>(L, nets, "Mlp"));
-  } else if (lua_istable(L, nets)) {
-    const int n = int(lua_objlen(L, nets));
-    for (int i = 1; i <= n; ++i) {
-      lua_rawgeti(L, nets, i);
-      if (!test_type(L, -1, "Mlp"))
-        throw Error("sn.train option 'nets': element " + std::to_string(i) + " is " + type_name_at(L, -1) + ", not an Mlp");
-      hold.push_back(check_shared<nn::Mlp>(L, -1, "Mlp"));
-      lua_pop(L, 1);
-    }
-  } else {
-    throw Error("sn.train option 'nets': an Mlp or a table of them expected, got " + type_name_at(L, nets));
-  }
+  const std::vector<std::shared_ptr<nn::Mlp>> hold = check_mlp_list(L, o.push("nets"), "sn.train option 'nets'");
   lua_pop(L, 1);
   for (auto& p : hold) job.nets.push_back(p.get());
 

@@ -60,4 +60,9 @@ expect.fails(function() sn.train { nets = { make(1), make(2) }, data = data, see
 expect.fails(function() sn.train { nets = { make(1) }, data = data, seed = { -1 } } end,
   "sn.train option 'seed' entry 1 must be an integer in 0..4294967295, got -1")
 expect.fails(function() sn.train { nets = { make(1) }, data = data, seed = 1.5 } end, "sn.train option 'seed'")
+-- The networks: one, or a table of them (the reader sn.render_errors shares).
+expect.fails(function() sn.train { nets = { make(1), 5 }, data = data } end,
+  "sn.train option 'nets': element 2 is number, not an Mlp")
+expect.fails(function() sn.train { nets = "net", data = data } end,
+  "sn.train option 'nets': an Mlp or a table of them expected, got string")
 print("ok")
