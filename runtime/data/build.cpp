@@ -164,8 +164,9 @@ std::shared_ptr<Dataset> build_dataset(const scene::Scene& s, const DatasetReque
   std::vector<std::unique_ptr<gl::Buffer>> model_buffers;
   shading::SampleBuffers model_in;
   for (const auto& a : shading::model_attributes(r.target)) {
+    const int at = index_of(a);
     std::vector<float> column(m * 4);
-    for (std::size_t j = 0; j < m; ++j) std::copy_n(picks[j].at(index_of(a)), 4, column.data() + j * 4);
+    for (std::size_t j = 0; j < m; ++j) std::copy_n(picks[j].at(at), 4, column.data() + j * 4);
     auto& b = model_buffers.emplace_back(std::make_unique<gl::Buffer>(gl::ElemType::vec4, m));
     b->upload(column.data(), 0, column.size());
     model_in[a] = b.get();
@@ -196,17 +197,23 @@ std::shared_ptr<Dataset> build_dataset(const scene::Scene& s, const DatasetReque
   d->conditions = r.vary;
   d->train_x.reserve(n_train * std::size_t(in_width)), d->val_x.reserve((m - n_train) * std::size_t(in_width));
   d->train_y.reserve(n_train * 3), d->val_y.reserve((m - n_train) * 3);
+  // Where each input's columns come from: a G-buffer attribute, or (-1 - v) varied parameter v.
+  std::vector<int> source;
+  for (const auto& a : r.inputs) {
+    if (!is_varied(r, a)) {
+      source.push_back(index_of(a));
+      continue;
+    }
+    int v = 0;
+    while (r.vary[std::size_t(v)].name != a) ++v;
+    source.push_back(-1 - v);
+  }
   for (std::size_t j = 0; j < m; ++j) {
     auto& x = j < n_train ? d->train_x : d->val_x;
     auto& y = j < n_train ? d->train_y : d->val_y;
     for (std::size_t k = 0; k < r.inputs.size(); ++k) {
-      if (!is_varied(r, r.inputs[k])) {
-        x.insert(x.end(), picks[j].at(index_of(r.inputs[k])), picks[j].at(index_of(r.inputs[k])) + widths[k]);
-        continue;
-      }
-      std::size_t v = 0;
-      while (r.vary[v].name != r.inputs[k]) ++v;
-      x.push_back(varied[j * 4 + v]);
+      if (source[k] >= 0) x.insert(x.end(), picks[j].at(source[k]), picks[j].at(source[k]) + widths[k]);
+      else x.push_back(varied[j * 4 + std::size_t(-1 - source[k])]);
     }
     y.insert(y.end(), t.begin() + std::ptrdiff_t(j * 4), t.begin() + std::ptrdiff_t(j * 4 + 3));
   }
