@@ -1,7 +1,6 @@
 #include "io/image_codec.h"
 
 #include <dlfcn.h>
-#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
