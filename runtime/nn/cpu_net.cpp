@@ -6,6 +6,7 @@
 
 #include "nn/cpu_net.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <limits>
@@ -337,33 +338,51 @@ using Gradient = GradientOf<R, Mode, true>;
 template <int R, class Mode>
 using GradientFirst = GradientOf<R, Mode, false>;
 
-// Which rows each network of a view reads: rows[h][first + s] for network h's sample s (each
-// its own minibatch: a pair's networks may shuffle with different seeds), or, where rows[h] is
-// null, row first + s.
-using RowLists = const uint32_t* const*;
-SN_INLINE std::size_t row_of(RowLists rows, int h, std::size_t i) { return rows[h] ? rows[h][i] : i; }
-constexpr const uint32_t* kContiguous[2] = {nullptr, nullptr};
-
-// Loads `width` floats of each sample's row of src into dst, lane-major (float i of sample s
-// at [i][s], for each network of the mode); samples >= n are 0. The inputs go to layer 0's
-// activations, the targets to their own block (gathered with the inputs, before the forward
-// pass: their cache misses then overlap it).
+// Loads `width` floats of each of the rows first .. first + n of src into dst, lane-major (float
+// i of sample s at [i][s]); samples >= n are 0. The inputs go to layer 0's activations, the
+// targets to their own block (gathered with the inputs, before the forward pass: their cache
+// misses then overlap it).
 template <class Mode>
-SN_INLINE void gather_rows(float* dst, const float* src, int width, RowLists rows, std::size_t first, int n) {
-  constexpr int k = Mode::kPar, lanes = kLanesOf<Mode>;
-  const float* sr[lanes];  // lane s k + h's row
-  for (int s = 0; s < Mode::kSamples; ++s)
-    for (int h = 0; h < k; ++h) sr[s * k + h] = s < n ? src + row_of(rows, h, first + s) * width : nullptr;
+SN_INLINE void gather_rows(float* dst, const float* src, int width, std::size_t first, int n) {
+  static_assert(Mode::kPar == 1, "contiguous rows are one network's");
+  constexpr int lanes = kLanesOf<Mode>;
   for (int i = 0; i < width; ++i)
-    for (int l = 0; l < lanes; ++l) dst[i * lanes + l] = sr[l] ? sr[l][i] : 0.0f;
+    for (int s = 0; s < lanes; ++s) dst[i * lanes + s] = s < n ? src[(first + s) * width + i] : 0.0f;
 }
 template <class Mode>
-SN_INLINE void gather_inputs(const View<Mode>& V, const float* x, RowLists rows, std::size_t first, int n) {
-  gather_rows<Mode>(reinterpret_cast<float*>(V.act(0)), x, V.S.in[0], rows, first, n);
+SN_INLINE void gather_inputs(const View<Mode>& V, const float* x, std::size_t first, int n) {
+  gather_rows<Mode>(reinterpret_cast<float*>(V.act(0)), x, V.S.in[0], first, n);
 }
 template <class Mode>
-SN_INLINE void gather_targets(const View<Mode>& V, const float* y, RowLists rows, std::size_t first, int n) {
-  gather_rows<Mode>(reinterpret_cast<float*>(V.t()), y, V.S.out[V.S.L - 1], rows, first, n);
+SN_INLINE void gather_targets(const View<Mode>& V, const float* y, std::size_t first, int n) {
+  gather_rows<Mode>(reinterpret_cast<float*>(V.t()), y, V.S.out[V.S.L - 1], first, n);
+}
+
+// Block b of each network's packed minibatch (pack_minibatch's layout) into layer 0's
+// activations and the targets: a vector copy per value, and for a pair two, interleaved
+// (lane 2s + h is sample s of network h). Packing apart from the step keeps the per-float
+// loads and stores of a gather out of it (a gather's scalar stores, read back as vectors at
+// once, also stalled the forward pass).
+template <class Mode>
+SN_INLINE void load_block(const View<Mode>& V, const float* const mb[], int b) {
+  using Vec = typename Mode::V;
+  const int in = V.S.in[0], out = V.S.out[V.S.L - 1];
+  const std::size_t at = std::size_t(b) * std::size_t(in + out) * 8;
+  const auto lanes = [&](int i) SN_INLINE_LAMBDA {
+    v8 a;
+    std::memcpy(&a, mb[0] + at + std::size_t(i) * 8, sizeof a);
+    if constexpr (Mode::kPar == 2) {
+      v8 c;
+      std::memcpy(&c, mb[1] + at + std::size_t(i) * 8, sizeof c);
+      return (Vec)__builtin_shufflevector(a, c, 0, 8, 1, 9, 2, 10, 3, 11, 4, 12, 5, 13, 6, 14, 7, 15);
+    } else {
+      return a;
+    }
+  };
+  Vec* x = V.act(0);
+  for (int i = 0; i < in; ++i) x[i] = lanes(i);
+  Vec* t = V.t();
+  for (int o = 0; o < out; ++o) t[o] = lanes(in + o);
 }
 
 // The forward pass; kTrain also stores f'(z) where backpropagation needs it: for hidden kinds
@@ -484,7 +503,7 @@ SN_INLINE mask_of<typename Mode::V> lane_mask(int n) {
 }
 
 template <class Isa, class Mode, int H>
-SN_INLINE int step_impl(const View<Mode>& V, const float* x, const float* y, RowLists rows, int batch,
+SN_INLINE int step_impl(const View<Mode>& V, const float* const mb[], int batch,
                         const AdamStep& c, const LossArgs& lf, double* loss_out) {
   using Vec = typename Mode::V;
   using E = typename Mode::E;
@@ -506,8 +525,7 @@ SN_INLINE int step_impl(const View<Mode>& V, const float* x, const float* y, Row
   for (int first = 0; first < batch; first += B) {
     const int n = batch - first < B ? batch - first : B;
     Vec sq = splat<Vec>(0.0f), se = splat<Vec>(0.0f);
-    gather_inputs<Mode>(V, x, rows, std::size_t(first), n);
-    gather_targets<Mode>(V, y, rows, std::size_t(first), n);
+    load_block<Mode>(V, mb, first / B);
     forward_block<H, Mode, true>(V);
     // Output error: d = dloss/dy' * act'(y').
     const auto mask = lane_mask<Mode>(n);
@@ -622,8 +640,8 @@ SN_INLINE double loss_impl(const View<Mode>& V, const float* x, const float* y, 
   double sum = 0;
   for (std::size_t first = 0; first < count; first += Mode::kSamples) {
     const int n = count - first < std::size_t(Mode::kSamples) ? int(count - first) : Mode::kSamples;
-    gather_inputs<Mode>(V, x, kContiguous, first, n);
-    gather_targets<Mode>(V, y, kContiguous, first, n);
+    gather_inputs<Mode>(V, x, first, n);
+    gather_targets<Mode>(V, y, first, n);
     forward_block<H, Mode>(V);
     const auto mask = lane_mask<Mode>(n);
     const Vec* yhat = V.act(S.L);
@@ -653,7 +671,7 @@ SN_INLINE void forward_impl(const View<Mode>& V, const float* x, std::size_t cou
   constexpr int B = Mode::kSamples;
   for (std::size_t first = 0; first < count; first += B) {
     const int n = count - first < std::size_t(B) ? int(count - first) : B;
-    gather_inputs<Mode>(V, x, kContiguous, first, n);
+    gather_inputs<Mode>(V, x, first, n);
     forward_block<H, Mode>(V);
     const float* yhat = reinterpret_cast<const float*>(V.act(S.L));
     for (int s = 0; s < n; ++s)
@@ -696,7 +714,7 @@ SN_INLINE void counts_impl(const View<Mode>& V, const float* x, std::size_t coun
   std::vector<int32_t> hits(units * lanes, 0);
   for (std::size_t first = 0; first < count; first += Mode::kSamples) {
     const int n = count - first < std::size_t(Mode::kSamples) ? int(count - first) : Mode::kSamples;
-    gather_inputs<Mode>(V, x, kContiguous, first, n);
+    gather_inputs<Mode>(V, x, first, n);
     forward_block<H, Mode, true>(V);
     const Mask valid = lane_mask<Mode>(n);
     std::size_t u = 0;
@@ -746,8 +764,7 @@ SN_INLINE void activation_impl(float p, const float* z, std::size_t n, float* f,
 // The entry points per instruction set; everything above inlines into them. One set per
 // kernel: ISA (the tag), ATTR (the function target), WIDE (the inference mode), VEC (the
 // activation test's vectors).
-using StepFn = int (*)(const Arena&, const float*, const float*, RowLists, int, const AdamStep&, const LossArgs&,
-                       double*);
+using StepFn = int (*)(const Arena&, const float* const*, int, const AdamStep&, const LossArgs&, double*);
 using LossFn = double (*)(const Arena&, const float*, const float*, std::size_t, const LossArgs&);
 using ForwardFn = void (*)(const Arena&, const float*, std::size_t, float*);
 using CountsFn = void (*)(const Arena&, const float*, std::size_t, std::vector<std::vector<uint32_t>>&);
@@ -766,10 +783,10 @@ struct FlushDenormals {
 
 #define SN_KERNEL_SET(NAME, ISA, ATTR, WIDE, VEC)                                                                   \
   template <int H>                                                                                                  \
-  ATTR int step_##NAME(const Arena& A, const float* x, const float* y, RowLists rows, int batch,                   \
-                       const AdamStep& c, const LossArgs& lf, double* l) {                                          \
+  ATTR int step_##NAME(const Arena& A, const float* const* mb, int batch, const AdamStep& c, const LossArgs& lf,     \
+                       double* l) {                                                                                 \
     FlushDenormals ftz;                                                                                             \
-    return step_impl<ISA, One, H>(View<One>(A), x, y, rows, batch, c, lf, l);                                       \
+    return step_impl<ISA, One, H>(View<One>(A), mb, batch, c, lf, l);                                               \
   }                                                                                                                 \
   template <int H>                                                                                                  \
   ATTR double loss_##NAME(const Arena& A, const float* x, const float* y, std::size_t n, const LossArgs& lf) {      \
@@ -812,10 +829,10 @@ SN_AVX512 double loss_wide(const Arena& A, const float* x, const float* y, std::
 
 // Two networks in lock-step (AVX-512 only).
 template <int H>
-SN_AVX512 int step_pair(const Arena& A, const float* x, const float* y, RowLists rows, int batch,
-                        const AdamStep& c, const LossArgs& lf, double* l) {
+SN_AVX512 int step_pair(const Arena& A, const float* const* mb, int batch, const AdamStep& c, const LossArgs& lf,
+                        double* l) {
   FlushDenormals ftz;
-  return step_impl<Avx512, Pair, H>(View<Pair>(A), x, y, rows, batch, c, lf, l);
+  return step_impl<Avx512, Pair, H>(View<Pair>(A), mb, batch, c, lf, l);
 }
 
 enum class Kernel : int { sse2, avx2, avx512 };
@@ -920,6 +937,23 @@ void use_cpu_kernel(const std::string& name) {
   kernel_flag() = int(k);
 }
 
+std::size_t minibatch_floats(int batch, int inputs, int outputs) {
+  return std::size_t((batch + 7) / 8) * std::size_t(inputs + outputs) * 8;
+}
+
+void pack_minibatch(const float* x, const float* y, int inputs, int outputs, const uint32_t* rows, int batch,
+                    float* mb) {
+  for (int first = 0; first < batch; first += 8, mb += std::size_t(inputs + outputs) * 8) {
+    const int n = std::min(8, batch - first);
+    for (int s = 0; s < 8; ++s) {
+      const float* xr = s < n ? x + std::size_t(rows[first + s]) * inputs : nullptr;
+      const float* yr = s < n ? y + std::size_t(rows[first + s]) * outputs : nullptr;
+      for (int i = 0; i < inputs; ++i) mb[i * 8 + s] = xr ? xr[i] : 0.0f;
+      for (int o = 0; o < outputs; ++o) mb[(inputs + o) * 8 + s] = yr ? yr[o] : 0.0f;
+    }
+  }
+}
+
 CpuNet::CpuNet(const MlpSpec& spec, const float* params) : spec_(spec), layout_(std::make_unique<Layout>(spec)) {
   const std::size_t bytes = (layout_->params(1) + layout_->scratch) * sizeof(float);
   arena_ = static_cast<float*>(std::aligned_alloc(64, bytes));
@@ -980,12 +1014,11 @@ bool applied(int verdict, DivergenceKind* why) {
 }
 }  // namespace
 
-bool CpuNet::step(const float* x, const float* y, const uint32_t* rows, int batch, const AdamStep& adam,
-                  double* loss, DivergenceKind* why) {
+bool CpuNet::step(const float* mb, int batch, const AdamStep& adam, double* loss, DivergenceKind* why) {
   LossArgs lf{loss_.kind, float(loss_.delta)};
   lf.sample_limit[0] = sample_limit_;
-  const uint32_t* lists[1] = {rows};
-  if (!applied(kernels(layout_->hidden).step(whole(*layout_, arena_, cur_), x, y, lists, batch, adam, lf, loss), why))
+  const float* one[1] = {mb};
+  if (!applied(kernels(layout_->hidden).step(whole(*layout_, arena_, cur_), one, batch, adam, lf, loss), why))
     return false;
   cur_ ^= 1;
   return true;
@@ -1039,13 +1072,13 @@ CpuNetPair::CpuNetPair(const CpuNet& a, const CpuNet& b) : layout_(std::make_uni
 
 CpuNetPair::~CpuNetPair() { std::free(arena_); }
 
-bool CpuNetPair::step(const float* x, const float* y, const uint32_t* const rows[2], int batch, const AdamStep& adam,
+bool CpuNetPair::step(const float* const mb[2], int batch, const AdamStep& adam,
                       double loss[2], bool ok[2], DivergenceKind why[2]) {
   LossArgs lf{loss_.kind, float(loss_.delta)};
   lf.sample_limit[0] = limits_[0];
   lf.sample_limit[1] = limits_[1];
   const Arena A{*layout_, arena_, arena_ + layout_->params(2), cur_};
-  const int verdict = kernels(layout_->hidden).pair(A, x, y, rows, batch, adam, lf, loss);
+  const int verdict = kernels(layout_->hidden).pair(A, mb, batch, adam, lf, loss);
   for (int h = 0; h < 2; ++h) ok[h] = applied((verdict >> (2 * h)) & 3, &why[h]);
   if (!ok[0] || !ok[1]) return false;
   cur_ ^= 1;

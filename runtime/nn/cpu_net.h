@@ -38,6 +38,14 @@ void use_cpu_kernel(const std::string& name);
 // f(z) where the activation allows, else as the forward pass stores it).
 void cpu_activation(Activation a, float param, const float* z, std::size_t n, float* f, float* df);
 
+// A minibatch as the training step reads it: blocks of 8 samples, each its inputs then its
+// targets, value-major (value i of sample s at [i * 8 + s]), the last block's samples past the
+// batch 0. pack_minibatch packs rows[0..batch) of x (inputs wide) and y (outputs wide) into
+// mb, minibatch_floats(batch, inputs, outputs) floats (a job packs a run of steps at once).
+std::size_t minibatch_floats(int batch, int inputs, int outputs);
+void pack_minibatch(const float* x, const float* y, int inputs, int outputs, const uint32_t* rows, int batch,
+                    float* mb);
+
 // Its rows are what the first layer reads: spec.width(0) floats each, the inputs already
 // encoded when the spec has encodings (nn/encoding.h encode_rows; the cpu trainer encodes a
 // dataset once per run).
@@ -61,12 +69,11 @@ class CpuNet {
   // The divergence rule's bound on one sample's squared error (summed over outputs; nn/trainer.h).
   void set_sample_limit(float limit) { sample_limit_ = limit; }
 
-  // One Adam step on the minibatch of rows `rows[0..batch)` of x (width(0) wide) and y (outputs
-  // wide). Returns false, leaving the parameters as they were, when a sample's loss is not
+  // One Adam step on the packed minibatch mb of `batch` samples (pack_minibatch; width(0)
+  // inputs, outputs targets). Returns false, leaving the parameters as they were, when a sample's loss is not
   // finite, a sample's squared error is above the sample limit (why = exploded) or the new
   // parameters are not finite (why = nonfinite). `loss` = the minibatch's loss before the update.
-  bool step(const float* x, const float* y, const uint32_t* rows, int batch, const AdamStep& adam, double* loss,
-            DivergenceKind* why = nullptr);
+  bool step(const float* mb, int batch, const AdamStep& adam, double* loss, DivergenceKind* why = nullptr);
 
   // MSE over `count` contiguous rows; mean_loss: the set loss over them.
   double mse(const float* x, const float* y, std::size_t count);
@@ -107,11 +114,11 @@ class CpuNetPair {
   CpuNetPair(const CpuNetPair&) = delete;
   CpuNetPair& operator=(const CpuNetPair&) = delete;
 
-  // CpuNet::step for both, network h on its own minibatch rows[h] (the same rows, or each
+  // CpuNet::step for both, network h on its own packed minibatch mb[h] (the same, or each
   // shuffled by its own seed): loss[h], ok[h] and why[h] per network. Returns true when both
   // steps applied; otherwise neither is applied here, and the pair must be split: get(h, net, ok[h]).
-  bool step(const float* x, const float* y, const uint32_t* const rows[2], int batch, const AdamStep& adam,
-            double loss[2], bool ok[2], DivergenceKind why[2]);
+  bool step(const float* const mb[2], int batch, const AdamStep& adam, double loss[2], bool ok[2],
+            DivergenceKind why[2]);
   // Network h's state (parameters, Adam's moments, the last gradient) into `net`; `written`:
   // the parameters the last, refused step wrote (where network h's own step applied).
   void get(int h, CpuNet& net, bool written = false) const;

@@ -57,6 +57,109 @@ std::unique_ptr<EncodedRows> encode_data(const std::vector<InputEncoding>& encs,
   return r;
 }
 
+// A net's minibatches of one epoch, packed for the kernel (nn/cpu_net.h pack_minibatch): the
+// epoch's packed minibatches it shares with other nets, or its own, packed a chunk of steps at a
+// time from its order of the rows.
+class Minibatches {
+ public:
+  Minibatches(const float* shared, const float* x, const float* y, int inputs, int outputs, const uint32_t* order,
+              int batch, long long steps)
+      : shared_(shared), x_(x), y_(y), in_(inputs), out_(outputs), order_(order), batch_(batch), steps_(steps),
+        floats_(minibatch_floats(batch, inputs, outputs)) {}
+  // Step s's minibatch; valid until the next call.
+  const float* at(long long s) {
+    if (shared_) return shared_ + std::size_t(s) * floats_;
+    if (s < first_ || s >= first_ + kChunk) {
+      first_ = s;
+      own_.resize(std::size_t(kChunk) * floats_);
+      for (long long k = 0; k < kChunk && s + k < steps_; ++k)
+        pack_minibatch(x_, y_, in_, out_, order_ + (s + k) * batch_, batch_, own_.data() + std::size_t(k) * floats_);
+    }
+    return own_.data() + std::size_t(s - first_) * floats_;
+  }
+
+ private:
+  static constexpr long long kChunk = 32;
+  const float *shared_, *x_, *y_;
+  int in_, out_;
+  const uint32_t* order_;
+  int batch_;
+  long long steps_;
+  std::size_t floats_;
+  long long first_ = -kChunk;
+  std::vector<float> own_;
+};
+
+// Every net's rows, epoch by epoch: its seed's shuffle, and its minibatches packed for the
+// kernel. A step that gathered its own rows cost more (a float at a time, read back at once as
+// vectors; docs/performance.md). The nets of one seed that read the same rows (a group: a
+// sweep's architectures) share one packed epoch, while the job's packed epochs fit in
+// `shared_bytes`; beyond that each net packs its own. Two epochs are held, so that the next
+// one is prepared (a task per seed) while this one trains.
+class EpochRows {
+ public:
+  // The default bound: Table 4.1's packed epochs (10 seeds) take 37 MB.
+  static constexpr std::size_t kSharedBytes = std::size_t(256) << 20;
+  EpochRows(const std::vector<uint32_t>& seed_of, const std::vector<const EncodedRows*>& rows_of,
+            const std::vector<int>& inputs_of, const data::Dataset& d, int batch, std::size_t shared_bytes)
+      : d_(d), batch_(batch), steps_(d.train_count() / std::size_t(batch)), net_group_(seed_of.size()) {
+    std::size_t bytes = 0;
+    for (std::size_t i = 0; i < seed_of.size(); ++i) {
+      std::size_t j = std::size_t(std::find(seeds_.begin(), seeds_.end(), seed_of[i]) - seeds_.begin());
+      if (j == seeds_.size()) seeds_.push_back(seed_of[i]);
+      std::size_t g = 0;
+      while (g < groups_.size() && (groups_[g].rows != rows_of[i] || groups_[g].seed != j)) ++g;
+      if (g == groups_.size()) {
+        groups_.push_back({rows_of[i], j, inputs_of[i], {}});
+        bytes += 2 * std::size_t(steps_) * minibatch_floats(batch, inputs_of[i], d.outputs) * sizeof(float);
+      }
+      net_group_[i] = g;
+    }
+    shared_ = bytes <= shared_bytes;
+    for (auto& o : orders_) o.assign(seeds_.size(), std::vector<uint32_t>(std::size_t(steps_) * std::size_t(batch)));
+  }
+  long long steps() const { return steps_; }
+  int tasks() const { return int(seeds_.size()); }
+  // Task j of epoch e (0-based): seed j's order of the rows, and its groups' packed minibatches.
+  void prepare(int e, int j) {
+    std::vector<uint32_t>& order = orders_[e & 1][std::size_t(j)];
+    EpochShuffle perm(seeds_[std::size_t(j)], uint32_t(e), uint32_t(d_.train_count()));
+    for (std::size_t k = 0; k < order.size(); ++k) order[k] = perm(uint32_t(k));
+    if (!shared_) return;
+    for (Group& g : groups_) {
+      if (g.seed != std::size_t(j)) continue;
+      const std::size_t f = minibatch_floats(batch_, g.inputs, d_.outputs);
+      std::vector<float>& packed = g.packed[e & 1];
+      packed.resize(std::size_t(steps_) * f);
+      for (long long s = 0; s < steps_; ++s)
+        pack_minibatch(g.rows->train, d_.train_y.data(), g.inputs, d_.outputs, order.data() + s * batch_, batch_,
+                       packed.data() + std::size_t(s) * f);
+    }
+  }
+  // Net i's minibatches of epoch e, once prepare(e, its seed) has run.
+  Minibatches minibatches(int i, int e) const {
+    const Group& g = groups_[net_group_[std::size_t(i)]];
+    return Minibatches(shared_ ? g.packed[e & 1].data() : nullptr, g.rows->train, d_.train_y.data(), g.inputs,
+                       d_.outputs, orders_[e & 1][g.seed].data(), batch_, steps_);
+  }
+
+ private:
+  struct Group {
+    const EncodedRows* rows;
+    std::size_t seed;  // index into seeds_
+    int inputs;        // floats per row of rows->train
+    std::vector<float> packed[2];
+  };
+  const data::Dataset& d_;
+  int batch_;
+  long long steps_;
+  std::vector<uint32_t> seeds_;
+  std::vector<Group> groups_;
+  std::vector<std::size_t> net_group_;
+  bool shared_ = false;
+  std::vector<std::vector<uint32_t>> orders_[2];  // per epoch parity, per seed
+};
+
 // What one task of an epoch trains: a net alone, or two in lock-step (nn/cpu_net.h CpuNetPair).
 struct Unit {
   int net[2] = {-1, -1};
@@ -96,7 +199,8 @@ std::vector<Unit> plan_units(const std::vector<std::unique_ptr<CpuNet>>& work,
 
 class CpuBackend : public Backend {
  public:
-  explicit CpuBackend(int threads) : threads_(threads > 0 ? threads : io::default_threads()) {}
+  CpuBackend(int threads, std::size_t shared_bytes)
+      : threads_(threads > 0 ? threads : io::default_threads()), shared_bytes_(shared_bytes) {}
 
   std::string name() const override { return "cpu"; }
   bool mixes_seeds() const override { return true; }
@@ -136,27 +240,17 @@ class CpuBackend : public Backend {
 
     std::vector<Unit> units = plan_units(work, rows_of, threads_);
 
-    const uint32_t n = uint32_t(data.train_count());
-    const long long steps = n / uint32_t(cfg.batch);
-    // Each distinct shuffle seed's order of the epoch's rows, and which one each net reads.
-    std::vector<uint32_t> seeds;
-    std::vector<std::size_t> order_of(static_cast<std::size_t>(count));
-    for (int i = 0; i < count; ++i) {
-      const uint32_t seed = cfg.seed_of(std::size_t(i));
-      order_of[i] = std::size_t(std::find(seeds.begin(), seeds.end(), seed) - seeds.begin());
-      if (order_of[i] == seeds.size()) seeds.push_back(seed);
-    }
-    std::vector<std::vector<uint32_t>> orders(seeds.size(), std::vector<uint32_t>(std::size_t(steps * cfg.batch)));
+    std::vector<uint32_t> seed_of(static_cast<std::size_t>(count));
+    std::vector<int> inputs_of(static_cast<std::size_t>(count));
+    for (int i = 0; i < count; ++i) seed_of[i] = cfg.seed_of(std::size_t(i)), inputs_of[i] = nets[i]->spec.width(0);
+    EpochRows rows(seed_of, rows_of, inputs_of, data, cfg.batch, shared_bytes_);
+    const long long steps = rows.steps();
+    if (cfg.epochs > 0) io::parallel_for(rows.tasks(), threads_, [&](int j) { rows.prepare(0, j); });
     std::vector<AdamStep> adam(static_cast<std::size_t>(steps));
     long long t = 0;  // Adam's step counter, the same for every net of the run
     io::WatchBeat beat(cfg.tick ? cfg.tick_seconds : 1.0);  // the tick's, across epochs
     for (int e = 0; e < cfg.epochs; ++e) {
       if (cfg.stop_requested()) break;
-      for (std::size_t j = 0; j < seeds.size(); ++j) {
-        EpochShuffle perm(seeds[j], uint32_t(e), n);
-        for (std::size_t k = 0; k < orders[j].size(); ++k) orders[j][k] = perm(uint32_t(k));
-      }
-      auto rows_at = [&](int i, long long s) { return orders[order_of[i]].data() + s * cfg.batch; };
       for (long long s = 0; s < steps; ++s) adam[std::size_t(s)] = AdamStep::at(cfg, ++t);
 
       std::vector<char> finished(static_cast<std::size_t>(count), 0);
@@ -193,12 +287,12 @@ class CpuBackend : public Backend {
       // Net i alone from step `from` on, with the epoch's loss sum so far.
       auto train_alone = [&](int i, long long from, double sum) {
         CpuNet& net = *work[i];
+        Minibatches mb = rows.minibatches(i, e);
         for (long long s = from; s < steps; ++s) {
           if (cfg.stop_requested()) return interrupt(i, s);
           double loss;
           DivergenceKind why = DivergenceKind::nonfinite;
-          const bool ok =
-              net.step(rows_of[i]->train, data.train_y.data(), rows_at(i, s), cfg.batch, adam[std::size_t(s)], &loss, &why);
+          const bool ok = net.step(mb.at(s), cfg.batch, adam[std::size_t(s)], &loss, &why);
           if (!take(i, s, ok, loss, why, sum)) return;
         }
         end_epoch(i, sum);
@@ -210,6 +304,7 @@ class CpuBackend : public Backend {
           return;
         }
         double sum[2] = {0, 0};
+        Minibatches mb[2] = {rows.minibatches(unit.net[0], e), rows.minibatches(unit.net[1], e)};
         for (long long s = 0; s < steps; ++s) {
           if (cfg.stop_requested()) {
             for (int h = 0; h < 2; ++h) unit.pair->get(h, *work[unit.net[h]]), interrupt(unit.net[h], s);
@@ -218,9 +313,8 @@ class CpuBackend : public Backend {
           double loss[2];
           bool ok[2];
           DivergenceKind why[2] = {DivergenceKind::nonfinite, DivergenceKind::nonfinite};
-          const uint32_t* rows[2] = {rows_at(unit.net[0], s), rows_at(unit.net[1], s)};
-          if (!unit.pair->step(rows_of[unit.net[0]]->train, data.train_y.data(), rows, cfg.batch, adam[std::size_t(s)],
-                               loss, ok, why)) {
+          const float* both[2] = {mb[0].at(s), mb[1].at(s)};
+          if (!unit.pair->step(both, cfg.batch, adam[std::size_t(s)], loss, ok, why)) {
             // A net diverged: the pair splits, and the other one goes on alone.
             for (int h = 0; h < 2; ++h) unit.pair->get(h, *work[unit.net[h]], ok[h]);
             unit.pair.reset();
@@ -237,16 +331,22 @@ class CpuBackend : public Backend {
         }
         for (int h = 0; h < 2; ++h) unit.pair->get(h, *work[unit.net[h]]), end_epoch(unit.net[h], sum[h]);
       };
+      // The units, then the next epoch's rows (on threads the units leave idle, or last).
+      const int next = e + 1 < cfg.epochs ? rows.tasks() : 0, tasks = int(units.size()) + next;
+      auto task = [&](int u) {
+        if (u < int(units.size())) train_epoch(u);
+        else rows.prepare(e + 1, u - int(units.size()));
+      };
       if (cfg.tick) {
         // The nets train on threads of their own; this thread ticks.
-        io::parallel_for_watched(int(units.size()), threads_, beat, train_epoch, [&] {
+        io::parallel_for_watched(tasks, threads_, beat, task, [&] {
           long long sum = 0, nets = 0;
           for (const auto& a : applied)
             if (long long v = a.load(std::memory_order_relaxed); v >= 0) sum += v, ++nets;
           cfg.tick(TickEvent{e + 1, cfg.epochs, nets ? sum / nets : steps, steps});
         });
       } else {
-        io::parallel_for(int(units.size()), threads_, train_epoch);
+        io::parallel_for(tasks, threads_, task);
       }
       if (progress)
         for (int i = 0; i < count; ++i)
@@ -266,11 +366,15 @@ class CpuBackend : public Backend {
 
  private:
   int threads_;
+  std::size_t shared_bytes_;
 };
 
 }  // namespace
 
-std::unique_ptr<Backend> make_cpu_backend(int threads) { return std::make_unique<CpuBackend>(threads); }
+std::unique_ptr<Backend> make_cpu_backend(int threads, std::size_t shared_bytes) {
+  return std::make_unique<CpuBackend>(threads, shared_bytes);
+}
+std::unique_ptr<Backend> make_cpu_backend(int threads) { return make_cpu_backend(threads, EpochRows::kSharedBytes); }
 std::unique_ptr<Backend> make_cpu_backend() { return make_cpu_backend(0); }
 
 }  // namespace sn::nn

@@ -44,6 +44,13 @@ Dataset smooth_dataset(std::size_t rows, uint64_t seed = 9) {
   return d;
 }
 
+// rows[0..batch) of d's training rows, packed as the step reads them.
+std::vector<float> packed(const Dataset& d, const std::vector<uint32_t>& rows, int batch) {
+  std::vector<float> mb(minibatch_floats(batch, d.inputs, d.outputs));
+  pack_minibatch(d.train_x.data(), d.train_y.data(), d.inputs, d.outputs, rows.data(), batch, mb.data());
+  return mb;
+}
+
 struct KernelGuard {  // restores the default kernel
   std::string saved = cpu_kernel_name();
   ~KernelGuard() { use_cpu_kernel(saved); }
@@ -153,7 +160,8 @@ TEST_P(CpuVsOracle, OneAdamStepWithin1e5) {
       use_cpu_kernel(k);
       CpuNet net(s, p.data());
       double l1, l2;
-      ASSERT_TRUE(net.step(d.train_x.data(), d.train_y.data(), rows.data(), batch, AdamStep::at(cfg, 1), &l1));
+      const std::vector<float> mb = packed(d, rows, batch);
+      ASSERT_TRUE(net.step(mb.data(), batch, AdamStep::at(cfg, 1), &l1));
       std::vector<float> grad(p.size());
       net.get_gradient(grad.data());
       double gmax = 0, gerr = 0;
@@ -162,7 +170,7 @@ TEST_P(CpuVsOracle, OneAdamStepWithin1e5) {
         gerr = std::max(gerr, std::fabs(double(grad[j]) - g1[j]));
       }
       EXPECT_LE(gerr, 1e-5 * gmax) << k << " batch " << batch << ": gradient";
-      ASSERT_TRUE(net.step(d.train_x.data(), d.train_y.data(), rows.data(), batch, AdamStep::at(cfg, 2), &l2));
+      ASSERT_TRUE(net.step(mb.data(), batch, AdamStep::at(cfg, 2), &l2));
       EXPECT_NEAR(l1, loss, 1e-6 + 1e-5 * loss) << k << " batch " << batch;
       EXPECT_NEAR(l2, loss2, 1e-6 + 1e-5 * loss2) << k << " batch " << batch;
       std::vector<float> got(p.size());
@@ -223,14 +231,15 @@ TEST_P(CpuVsOracle, PairedNetsAreBitForBitWhatTheyAreAlone) {
           rows[std::size_t(k)] = uint32_t((k * 7 + t * 5) % d.train_count());
           rows_b[std::size_t(k)] = t > 6 ? uint32_t((k * 11 + t * 3 + 1) % d.train_count()) : rows[std::size_t(k)];
         }
-        const uint32_t* lists[2] = {rows.data(), rows_b.data()};
+        const std::vector<float> mb = packed(d, rows, batch), mb_b = packed(d, rows_b, batch);
+        const float* both[2] = {mb.data(), mb_b.data()};
         double lp[2], la, lb;
         bool ok[2];
         DivergenceKind why[2];
         const AdamStep adam = AdamStep::at(cfg, t);
-        ASSERT_TRUE(pair.step(d.train_x.data(), d.train_y.data(), lists, batch, adam, lp, ok, why));
-        ASSERT_TRUE(alone_a.step(d.train_x.data(), d.train_y.data(), rows.data(), batch, adam, &la));
-        ASSERT_TRUE(alone_b.step(d.train_x.data(), d.train_y.data(), rows_b.data(), batch, adam, &lb));
+        ASSERT_TRUE(pair.step(both, batch, adam, lp, ok, why));
+        ASSERT_TRUE(alone_a.step(mb.data(), batch, adam, &la));
+        ASSERT_TRUE(alone_b.step(mb_b.data(), batch, adam, &lb));
         EXPECT_EQ(lp[0], la) << "step " << t;
         EXPECT_EQ(lp[1], lb) << "step " << t;
       }
@@ -272,12 +281,13 @@ TEST(CpuNetPair, OneNetRefusingLeavesTheOtherAsAlone) {
       double loss[2], want;
       bool ok[2];
       DivergenceKind why[2];
-      const uint32_t* lists[2] = {rows.data(), rows.data()};
-      EXPECT_FALSE(pair.step(d.train_x.data(), d.train_y.data(), lists, 8, adam, loss, ok, why));
+      const std::vector<float> mb = packed(d, rows, 8);
+      const float* both[2] = {mb.data(), mb.data()};
+      EXPECT_FALSE(pair.step(both, 8, adam, loss, ok, why));
       EXPECT_FALSE(ok[h]);
       EXPECT_TRUE(ok[1 - h]);
       EXPECT_EQ(why[h], kind);
-      ASSERT_TRUE(alone.step(d.train_x.data(), d.train_y.data(), rows.data(), 8, adam, &want));
+      ASSERT_TRUE(alone.step(mb.data(), 8, adam, &want));
       EXPECT_EQ(loss[1 - h], want);
       pair.get(1 - h, good, true);
       pair.get(h, worse, false);
@@ -360,6 +370,35 @@ TEST(CpuTrainer, SameSeedSameCurvesWhateverTheGrouping) {
   cfg.seed = 2;  // another shuffle, another curve
   auto other = make_cpu_backend(2)->train({&n1}, d, cfg, nullptr);
   EXPECT_NE(other[0].train_mse, together[0].train_mse);
+}
+
+// A job's minibatches packed once per shuffle and shared, or by each net (a chunk of steps at a
+// time, where the shared ones would take too much memory), train the same to the bit: two seeds,
+// pairs and a net alone, encoded inputs (other rows), a batch with dead lanes, and epochs whose
+// steps (61) are no multiple of a chunk's.
+TEST(CpuTrainer, SharedOrOwnPackedMinibatchesTrainTheSame) {
+  Dataset d = smooth_dataset(616);
+  MlpSpec a = spec_of(6, {6, 6}, 3, Activation::tanh);
+  MlpSpec e = a;
+  e.encodings = {default_encoding(Encoding::frequency, "view", 3, 3)};
+  Mlp n1(a, Init::xavier, 1), n2(a, Init::xavier, 2), n3(a, Init::xavier, 3), n4(e, Init::xavier, 4);
+  TrainConfig cfg;
+  cfg.epochs = 2;
+  cfg.batch = 8;
+  cfg.lr = 2e-3;
+  cfg.seeds = {5, 6, 5, 6};
+  for (int batch : {8, 13}) {
+    cfg.batch = batch;
+    auto shared = make_cpu_backend(1)->train({&n1, &n2, &n3, &n4}, d, cfg, nullptr);
+    auto own = make_cpu_backend(1, 0)->train({&n1, &n2, &n3, &n4}, d, cfg, nullptr);
+    for (int i = 0; i < 4; ++i) {
+      ASSERT_EQ(shared[i].val_mse.size(), 2u);
+      EXPECT_EQ(shared[i].train_mse, own[i].train_mse) << "net " << i << " batch " << batch;
+      EXPECT_EQ(shared[i].val_mse, own[i].val_mse) << "net " << i << " batch " << batch;
+      EXPECT_EQ(shared[i].final_params, own[i].final_params) << "net " << i << " batch " << batch;
+    }
+    EXPECT_NE(shared[0].train_mse, shared[1].train_mse);  // the seeds shuffle differently
+  }
 }
 
 TEST(CpuTrainer, LearnsFarBelowAConstantPredictor) {

@@ -104,7 +104,9 @@ TEST(Loss, CpuStepAndValidationMatchTheOracle) {
       CpuNet net(s, p.data());
       net.set_loss(l);
       double got_loss;
-      ASSERT_TRUE(net.step(d.x.data(), d.y.data(), d.rows.data(), 13, AdamStep::at(cfg, 1), &got_loss));
+      std::vector<float> mb(minibatch_floats(13, 6, 3));
+      pack_minibatch(d.x.data(), d.y.data(), 6, 3, d.rows.data(), 13, mb.data());
+      ASSERT_TRUE(net.step(mb.data(), 13, AdamStep::at(cfg, 1), &got_loss));
       EXPECT_NEAR(got_loss, want_loss, 1e-6 * want_loss) << l.describe() << " " << k;
       std::vector<float> grad(p.size()), got(p.size());
       net.get_gradient(grad.data());
