@@ -102,4 +102,35 @@ void finish() {
   glFinish();
 }
 
+namespace {
+std::vector<std::shared_ptr<Buffer>>& pool() {
+  static std::vector<std::shared_ptr<Buffer>> p;
+  return p;
+}
+constexpr int kIdleMax = 8;
+}  // namespace
+
+std::shared_ptr<Buffer> pooled_buffer(ElemType type, std::size_t count) {
+  auto& p = pool();
+  std::shared_ptr<Buffer> best;
+  for (auto& b : p)
+    if (b.use_count() == 1 && b->type() == type && b->count() >= count && (!best || b->count() < best->count())) best = b;
+  if (best) return best;
+  auto b = std::make_shared<Buffer>(type, count);
+  int idle = 0;
+  for (auto& q : p) idle += q.use_count() == 1;
+  for (auto it = p.begin(); idle > kIdleMax - 1 && it != p.end();) {  // room for this one when it comes back
+    if (it->use_count() == 1) {
+      it = p.erase(it);
+      --idle;
+    } else {
+      ++it;
+    }
+  }
+  p.push_back(b);
+  return b;
+}
+
+void clear_buffer_pool() { pool().clear(); }
+
 }  // namespace sn::gl

@@ -2,6 +2,7 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,14 @@ class Buffer {
   std::size_t count_;
   void* mapped_ = nullptr;
 };
+
+// A buffer of at least `count` elements of `type` that nobody else holds (no other shared_ptr to
+// it), reused from earlier calls when one is idle: a gather per view then costs no allocation
+// (llvmpipe faults in and zeroes a new buffer's pages). Its contents are what was last written
+// there, and its count() may be larger. At most 8 idle buffers are kept.
+std::shared_ptr<Buffer> pooled_buffer(ElemType type, std::size_t count);
+// Frees the idle buffers (destroy_current calls it: GL objects die before their context).
+void clear_buffer_pool();
 
 // Waits until every submitted GL command has completed and its writes are visible.
 void finish();

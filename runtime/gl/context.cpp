@@ -1,5 +1,6 @@
 #include "gl/context.h"
 
+#include "gl/buffer.h"
 #include "gl/render_target.h"
 
 #include "gl/program.h"
@@ -72,6 +73,7 @@ void set_current(std::unique_ptr<Context> ctx) { g_context = std::move(ctx); }
 void destroy_current() {
   clear_program_cache();  // GL objects die before the context that owns them
   clear_target_pool();
+  clear_buffer_pool();
   g_context.reset();
 }
 

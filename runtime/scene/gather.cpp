@@ -10,8 +10,9 @@
 namespace sn::scene {
 
 Samples gather(const GBuffer& g) {
-  // Only the box can hold covered pixels: the buffers (cleared on creation) and the dispatch
-  // are that big, not the frame.
+  // Only the box can hold covered pixels: the buffers and the dispatch are that big, not the
+  // frame. The buffers come from the pool (a dataset gathers view after view); the shader
+  // writes slots [0, count), and only those are read.
   const PixelBox box = g.box();
   const std::size_t capacity = std::max<std::size_t>(1, std::size_t(std::max(0, box.width())) * std::max(0, box.height()));
   const int n = int(g.attributes.size());
@@ -21,8 +22,8 @@ Samples gather(const GBuffer& g) {
   auto prog = gl::get_program(desc);
 
   Samples s;
-  s.pixels = std::make_shared<gl::Buffer>(gl::ElemType::uint32, capacity);
-  for (int a = 0; a < n; ++a) s.attributes.push_back(std::make_shared<gl::Buffer>(gl::ElemType::vec4, capacity));
+  s.pixels = gl::pooled_buffer(gl::ElemType::uint32, capacity);
+  for (int a = 0; a < n; ++a) s.attributes.push_back(gl::pooled_buffer(gl::ElemType::vec4, capacity));
   gl::Buffer counter(gl::ElemType::uint32, 1);  // zero-filled
 
   std::vector<double> units;

@@ -60,6 +60,32 @@ TEST(Buffer, UploadDownloadFillAndRange) {
   EXPECT_THROW(parse_elem_type("half"), std::invalid_argument);
 }
 
+// The pool hands out only buffers nobody holds, the smallest idle one that is large enough and
+// of the type asked for, and keeps what was written to it.
+TEST(Buffer, PooledBuffersAreReusedOnlyWhenIdle) {
+  current();
+  clear_buffer_pool();
+  auto a = pooled_buffer(ElemType::vec4, 100);
+  auto b = pooled_buffer(ElemType::vec4, 50);
+  EXPECT_NE(a.get(), b.get());  // a is held
+  EXPECT_GE(a->count(), 100u);
+  const float v[4] = {7, 8, 9, 10};
+  b->upload(v, 0, 4);
+  Buffer* small = b.get();
+  b.reset();
+  EXPECT_NE(pooled_buffer(ElemType::uint32, 10).get(), small);  // another type
+  auto c = pooled_buffer(ElemType::vec4, 40);
+  EXPECT_EQ(c.get(), small);
+  EXPECT_EQ(c->download_floats()[2], 9.f);  // not cleared
+  auto d = pooled_buffer(ElemType::vec4, 60);  // c is held, a too: a new one
+  EXPECT_NE(d.get(), a.get());
+  EXPECT_NE(d.get(), c.get());
+  a.reset();
+  c.reset();
+  EXPECT_EQ(pooled_buffer(ElemType::vec4, 45).get(), small);  // the smallest that is large enough
+  clear_buffer_pool();
+}
+
 TEST(Buffer, MappedPointerSeesShaderWrites) {
   current();
   Buffer in(ElemType::float32, 64), out(ElemType::float32, 64);
