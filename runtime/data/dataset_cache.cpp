@@ -47,9 +47,12 @@ uint64_t mesh_content_hash(const scene::Mesh& m) {
   f.vec(m.uvs);
   f.vec(m.indices);
   f.vec(m.tangents);
-  uint8_t flags[2] = {uint8_t(m.has_uvs), uint8_t(m.base_color.has_value())};
-  f.bytes(flags, 2);
-  if (m.base_color) {
+  const std::vector<unsigned char>* encoded = m.base_color.encoded();
+  uint8_t flags[3] = {uint8_t(m.has_uvs), uint8_t(m.base_color.has_value()), uint8_t(encoded != nullptr)};
+  f.bytes(flags, 3);
+  if (encoded) {
+    f.vec(*encoded);  // the file's bytes: hashed without decoding them (OpenImageIO is not loaded)
+  } else if (m.base_color) {
     int dims[3] = {m.base_color->width, m.base_color->height, m.base_color->channels};
     f.bytes(dims, sizeof dims);
     f.vec(m.base_color->pixels);

@@ -68,9 +68,14 @@ GpuMesh::GpuMesh(const Mesh& m) {
     glVertexArrayAttribBinding(vao_, a, 0);
   }
 
-  has_texture_ = m.base_color.has_value();
+  texture_source_ = m.base_color;
+  ++g_uploads;
+}
+
+unsigned GpuMesh::base_color_texture() const {
+  if (texture_) return texture_;
   io::Image white(1, 1, 4, 1.f);
-  const io::Image& img = has_texture_ ? *m.base_color : white;
+  const io::Image& img = texture_source_ ? *texture_source_ : white;
   std::vector<unsigned char> texels = rgba8(img);
   int levels = 1;
   for (int s = std::max(img.width, img.height); s > 1; s /= 2) ++levels;
@@ -84,7 +89,7 @@ GpuMesh::GpuMesh(const Mesh& m) {
   glTextureParameteri(texture_, GL_TEXTURE_WRAP_T, GL_REPEAT);
   glTextureParameteri(texture_, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
   glTextureParameteri(texture_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  ++g_uploads;
+  return texture_;
 }
 
 GpuMesh::~GpuMesh() {

@@ -1,6 +1,7 @@
 // A Mesh on the GPU: one interleaved vertex buffer (location 0 position, 1 normal, 2 uv), one
 // uint32 index buffer, one VAO and the base-colour texture (a 1x1 white one when the mesh has
-// none). Uploaded once per Mesh and cached on it, so drawing a mesh again costs no transfer.
+// none). Uploaded once per Mesh and cached on it, so drawing a mesh again costs no transfer; the
+// texture only when a program first samples it (decoding it loads OpenImageIO, scene/texture.h).
 #pragma once
 #include <cstddef>
 #include <memory>
@@ -22,8 +23,8 @@ class GpuMesh {
 
   std::size_t index_count() const { return index_count_; }
   unsigned vao() const { return vao_; }
-  unsigned base_color_texture() const { return texture_; }
-  bool has_base_color() const { return has_texture_; }
+  unsigned base_color_texture() const;
+  bool has_base_color() const { return bool(texture_source_); }
   // The box around the uploaded positions (object space): what the draw can cover, whatever
   // became of Mesh::bounds since.
   const Bounds& bounds() const { return bounds_; }
@@ -32,9 +33,10 @@ class GpuMesh {
   static std::size_t uploads();
 
  private:
-  unsigned vao_ = 0, vertices_ = 0, indices_ = 0, texture_ = 0;
+  unsigned vao_ = 0, vertices_ = 0, indices_ = 0;
+  mutable unsigned texture_ = 0;
   std::size_t index_count_ = 0;
-  bool has_texture_ = false;
+  Texture texture_source_;  // the mesh's at upload (a copy sharing its pixels)
   Bounds bounds_;
 };
 

@@ -421,7 +421,7 @@ class GltfLoader {
       mesh_.tangent_source = "file";
     }
     mesh_.bounds = compute_bounds(mesh_.positions);
-    if (texture_image_ >= 0) mesh_.base_color = decode_texture(texture_image_);
+    if (texture_image_ >= 0) mesh_.base_color = texture(texture_image_);
     return std::move(mesh_);
   }
 
@@ -576,12 +576,13 @@ class GltfLoader {
     }
   }
 
-  io::Image decode_texture(int index) {
+  // Its bytes, decoded when first read (scene/texture.h).
+  Texture texture(int index) {
     const tinygltf::Image& img = m_.images[size_t(index)];
     std::string what = "mesh file '" + path_ + "': base-colour texture (image " + std::to_string(index) +
                        (img.uri.empty() || img.uri.rfind("data:", 0) == 0 ? std::string() : ", '" + img.uri + "'") + ")";
     if (img.image.empty()) throw std::runtime_error(what + " has no data");
-    return io::decode_image(img.image, what);
+    return Texture(img.image, what);
   }
 
   const tinygltf::Model& m_;

@@ -5,13 +5,12 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
-#include <optional>
 #include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
 
-#include "io/image.h"
+#include "scene/texture.h"
 
 namespace sn::scene {
 
@@ -40,7 +39,7 @@ struct Mesh {
   // The file had no normals, so they were computed (area-weighted vertex normals); callers
   // tell the user, since flat-shaded files come out smooth.
   bool normals_computed = false;
-  std::optional<io::Image> base_color;  // the material's base-colour texture, as stored (sRGB)
+  Texture base_color;  // the material's base-colour texture, as stored (sRGB); decoded on first read
   Bounds bounds;
 
   std::size_t vertex_count() const { return positions.size(); }
@@ -62,7 +61,8 @@ constexpr int kMaxNodeDepth = 256;
 // inverse transpose, to normals, and merges every triangle primitive (triangles, strips, fans;
 // uint8/16/32 or no indices). Throws "mesh file 'PATH': reason" for a missing, truncated or
 // malformed file, an accessor reaching outside its buffer, an index out of range, or a file
-// with no triangles.
+// with no triangles. The base-colour texture is decoded when first read, and throws then if it
+// cannot be (scene/texture.h).
 Mesh load_mesh(const std::string& path);
 
 // Writes `m` as a binary glTF (.glb): positions (with min/max), normals, uvs when present,

@@ -11,6 +11,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
   try {
     sn::scene::Mesh m = sn::scene::load_mesh(path);
     sn::scene::validate(m);  // whatever loads must be a mesh every later stage accepts
+    if (m.base_color) (void)m.base_color->width;  // decoded on first read: the texture's bytes too
   } catch (const std::exception&) {
     // a clear error is the right answer to a bad file
   }

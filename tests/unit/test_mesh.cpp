@@ -240,6 +240,42 @@ TEST(Mesh, DuckLoadsWithItsCountsNormalsUvsAndTexture) {
   EXPECT_GT(g, 1.5 * b);
 }
 
+TEST(Mesh, TextureDecodesOnFirstReadAndABadOneFailsThere) {
+  // The duck with its embedded PNG swapped for a file of garbage beside it: the mesh loads (the
+  // texture is not decoded yet), and each read of the texture is the decoder's error, naming it.
+  fs::path d = temp_dir() / "bad_texture";
+  fs::create_directories(d);
+  std::string text(reinterpret_cast<const char*>(read_bytes(shared_meshes() + "Duck.gltf").data()),
+                   read_bytes(shared_meshes() + "Duck.gltf").size());
+  const size_t at = text.find("data:image/png;base64,");
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, text.find('"', at) - at, "bad.png");
+  write_bytes(d / "duck.gltf", text.data(), text.size());
+  const std::string garbage = "not a PNG at all, only bytes";
+  write_bytes(d / "bad.png", garbage.data(), garbage.size());
+
+  Mesh m = load_mesh((d / "duck.gltf").string());
+  ASSERT_TRUE(m.base_color.has_value());
+  ASSERT_NE(m.base_color.encoded(), nullptr);
+  EXPECT_EQ(std::string(m.base_color.encoded()->begin(), m.base_color.encoded()->end()), garbage);
+  for (int read = 0; read < 2; ++read) {
+    std::string e = error_of([&] { (void)m.base_color->width; });
+    EXPECT_NE(e.find("mesh file '" + (d / "duck.gltf").string() + "': base-colour texture (image 0, 'bad.png')"),
+              std::string::npos)
+        << e;
+  }
+
+  // A good one is decoded once: copies (a transformed mesh) share its pixels.
+  Mesh duck = load_mesh(shared_meshes() + "Duck.gltf");
+  Mesh moved = transformed(duck, glm::dmat4(1.0));
+  EXPECT_EQ(&*moved.base_color, &*duck.base_color);
+  EXPECT_EQ(moved.base_color->width, 512);
+  // One made from an image has no encoded bytes.
+  EXPECT_EQ(Texture(sn::io::Image(2, 2, 3)).encoded(), nullptr);
+  EXPECT_EQ(Texture(sn::io::Image(2, 2, 3))->width, 2);
+  EXPECT_FALSE(Texture().has_value());
+}
+
 TEST(Mesh, BoxLoadsWithoutUvsAndKeepsItsBoundsAfterTheRootRotation) {
   Mesh m = load_mesh(shared_meshes() + "Box.gltf");
   EXPECT_EQ(m.vertex_count(), 24u);

@@ -1,0 +1,35 @@
+// A mesh's base-colour texture: none, an image, or a file's encoded bytes decoded on first read.
+// Loading a textured glTF file does not decode its texture: decoding loads OpenImageIO's module
+// (about 0.15 s, io/image_codec.h) and most uses of a mesh (a G-buffer of normals and views, a
+// network's render) never sample it. Copies share one decoded image, decoded at most once.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "io/image.h"
+
+namespace sn::scene {
+
+class Texture {
+ public:
+  Texture() = default;  // none
+  Texture(io::Image image);
+  // Decoded on first read; a decoding error is thrown then, naming `what` (e.g. "mesh file
+  // 'cloth.glb': base-colour texture (image 0)").
+  Texture(std::vector<unsigned char> encoded, std::string what);
+
+  bool has_value() const { return bool(state_); }
+  explicit operator bool() const { return has_value(); }
+  // The pixels (decoding them on first read). Only for a texture that has a value.
+  const io::Image& operator*() const;
+  const io::Image* operator->() const { return &**this; }
+  // The encoded bytes it was made from, or null for none or one made from an image.
+  const std::vector<unsigned char>* encoded() const;
+
+ private:
+  struct State;
+  std::shared_ptr<State> state_;
+};
+
+}  // namespace sn::scene
