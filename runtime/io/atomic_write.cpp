@@ -6,28 +6,36 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <set>
 #include <stdexcept>
 
 namespace sn::io {
 
-void write_file_atomic(const std::string& path, const std::string& bytes, const std::string& what) {
-  namespace fs = std::filesystem;
-  const std::string head = "cannot write " + what + " '" + path + "': ";
-  if (path.empty()) throw std::invalid_argument(head + "the path is empty");
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string head(const std::string& path, const std::string& what) { return "cannot write " + what + " '" + path + "': "; }
+
+// Writes `bytes` to a temporary file beside `path` (its folders created), fsync'd when `sync`;
+// returns its name. On failure nothing is left and the error names `path`.
+std::string write_temporary(const std::string& path, const std::string& bytes, const std::string& what, bool sync) {
+  const std::string why = head(path, what);
+  if (path.empty()) throw std::invalid_argument(why + "the path is empty");
   const fs::path target(path);
   std::error_code ec;
   if (target.has_parent_path()) {
     fs::create_directories(target.parent_path(), ec);
-    if (ec) throw std::runtime_error(head + "cannot create folder '" + target.parent_path().string() + "': " + ec.message());
+    if (ec) throw std::runtime_error(why + "cannot create folder '" + target.parent_path().string() + "': " + ec.message());
   }
   // Hidden, per process, in the target's folder: rename is atomic only within one filesystem.
   const std::string tmp =
       (target.parent_path() / ("." + target.filename().string() + ".tmp" + std::to_string(::getpid()))).string();
   const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) throw std::runtime_error(head + std::strerror(errno));
+  if (fd < 0) throw std::runtime_error(why + std::strerror(errno));
   auto fail = [&](int err) {
     ::unlink(tmp.c_str());
-    throw std::runtime_error(head + std::strerror(err));
+    throw std::runtime_error(why + std::strerror(err));
   };
   for (std::size_t done = 0; done < bytes.size();) {
     const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
@@ -39,13 +47,64 @@ void write_file_atomic(const std::string& path, const std::string& bytes, const 
     }
     done += std::size_t(n);
   }
-  if (::fsync(fd) != 0) {
+  if (sync && ::fsync(fd) != 0) {
     const int err = errno;
     ::close(fd);
     fail(err);
   }
   if (::close(fd) != 0) fail(errno);
-  if (::rename(tmp.c_str(), path.c_str()) != 0) fail(errno);
+  return tmp;
+}
+
+void rename_over(const std::string& tmp, const std::string& path, const std::string& what) {
+  if (::rename(tmp.c_str(), path.c_str()) != 0) {
+    const int err = errno;
+    ::unlink(tmp.c_str());
+    throw std::runtime_error(head(path, what) + std::strerror(err));
+  }
+}
+
+}  // namespace
+
+void write_file_atomic(const std::string& path, const std::string& bytes, const std::string& what) {
+  rename_over(write_temporary(path, bytes, what, true), path, what);
+}
+
+void write_files_atomic(const std::vector<std::pair<std::string, std::string>>& files, const std::string& what) {
+  std::set<std::string> paths;
+  for (const auto& f : files)
+    if (!paths.insert(f.first).second) throw std::invalid_argument(head(f.first, what) + "the path is listed twice");
+  std::vector<std::string> temps;
+  const auto remove_temps = [&] {
+    for (const auto& t : temps) ::unlink(t.c_str());
+  };
+  try {
+    for (const auto& [path, bytes] : files) temps.push_back(write_temporary(path, bytes, what, false));
+    // One flush per folder's file system (a folder stands for its file system; most calls have one).
+    std::set<std::string> folders;
+    for (const auto& [path, bytes] : files) {
+      const std::string folder = fs::path(path).parent_path().string();
+      if (!folders.insert(folder.empty() ? "." : folder).second) continue;
+      const int fd = ::open(folder.empty() ? "." : folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+      if (fd < 0 || ::syncfs(fd) != 0) {
+        const int err = errno;
+        if (fd >= 0) ::close(fd);
+        throw std::runtime_error(head(path, what) + std::strerror(err));
+      }
+      ::close(fd);
+    }
+  } catch (...) {
+    remove_temps();
+    throw;
+  }
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    try {
+      rename_over(temps[i], files[i].first, what);
+    } catch (...) {
+      for (std::size_t j = i + 1; j < temps.size(); ++j) ::unlink(temps[j].c_str());
+      throw;
+    }
+  }
 }
 
 }  // namespace sn::io

@@ -28,6 +28,15 @@ end
 
 function results.write_json(path, value) return results.write_file(path, json.encode(value, "  ") .. "\n") end
 
+-- Writes { [path] = value, ... } as JSON files, each whole, flushed to the disk together
+-- (sn.fs.write_all: one syncfs, not an fsync per file).
+function results.write_jsons(values)
+  local files = {}
+  for path, value in pairs(values) do files[path] = json.encode(value, "  ") .. "\n" end
+  local ok, err = pcall(sn.fs.write_all, files)
+  if not ok then error(err, 0) end
+end
+
 function results.read_json(path)
   local s = results.read_file(path)
   if not s then return nil end

@@ -146,18 +146,18 @@ function Sweep:run(o)
     assert(type(out) == "table" and #out == #group,
            string.format("sweep: train returned %s results for %d runs", type(out) == "table" and #out or type(out), #group))
     local seconds = sn.clock() - t0
-    local stopped = 0
+    local stopped, records = 0, {}
     for k, r in ipairs(group) do
       if type(out[k]) == "table" and out[k].interrupted then
         stopped = stopped + 1
       else
-        local rec = { id = r.id, config = r.config, result = out[k], group_size = #group,
-                      group_seconds = seconds, finished = os.date("!%Y-%m-%dT%H:%M:%SZ") }
-        results.write_json(self:file(r), rec)
+        records[self:file(r)] = { id = r.id, config = r.config, result = out[k], group_size = #group,
+                                  group_seconds = seconds, finished = os.date("!%Y-%m-%dT%H:%M:%SZ") }
         done = done + 1
         consider(r, out[k])
       end
     end
+    results.write_jsons(records)
     progress:update(done, best_text)
     stopped_part_way = stopped_part_way + stopped
     if sn.interrupted() or stopped > 0 then

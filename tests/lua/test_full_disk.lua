@@ -48,6 +48,18 @@ local ok, err = pcall(function()
   end
   assert(read(dir .. "/a.png") == before_png and read(dir .. "/b.exr") == before_exr, "old images survive")
   only { "a.png", "b.exr", "table.md" }
+
+  -- Many files flushed together (sn.fs.write_all, run records): the one that does not fit fails
+  -- the call before any is renamed, so both old files survive and no temporary is left.
+  results.write_jsons { [dir .. "/r1.json"] = { run = 1 }, [dir .. "/r2.json"] = { run = 2 } }
+  local old1, old2 = read(dir .. "/r1.json"), read(dir .. "/r2.json")
+  assert(old1:find('"run": 1', 1, true) and old2:find('"run": 2', 1, true), old1 .. old2)
+  local okr, er = pcall(results.write_jsons, { [dir .. "/r1.json"] = { run = "new" }, [dir .. "/r2.json"] = { big = big } })
+  assert(not okr and tostring(er):find("No space left on device", 1, true) and tostring(er):find("r2.json", 1, true), tostring(er))
+  assert(read(dir .. "/r1.json") == old1 and read(dir .. "/r2.json") == old2, "the old records survive")
+  only { "a.png", "b.exr", "r1.json", "r2.json", "table.md" }
+  local oka, ea = pcall(sn.fs.write_all, { [dir .. "/x"] = 1 })
+  assert(not oka and tostring(ea):find("path = content (strings), got string = number", 1, true), tostring(ea))
 end)
 cleanup()
 assert(ok, err)
