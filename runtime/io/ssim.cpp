@@ -27,47 +27,91 @@ struct Box {
   int x0, y0, x1, y1;
 };
 
-// One channel of the box, laid out for the filter: a and b over the box's rows widened by the
-// radius (`rows` of `span` doubles, `span` = width + 2 radius), the mask over the box (1 where
-// averaged, 0 elsewhere and in the padding to a whole vector), and room for the five filtered
-// planes (x, y, x^2, y^2, xy) of the horizontal pass.
-struct Planes {
-  int width, height, rows, span;  // width: the box's, padded to a multiple of 8
-  const double *a, *b, *mask;
-  double* h;  // 5 planes of rows x width
+// One channel of one band of the box's rows, the unit of work: the reference image's rows of the
+// band widened by the radius (`rows` x span doubles, 0 beyond the image), and its local means
+// `mx` and second moments `xx` at the band's pixels (height x width).
+struct Unit {
+  int c, y0, height, rows;
+  std::vector<double> a, mx, xx;
 };
 
-// The channel's SSIM summed over its averaged pixels, in vectors V of doubles. Each plane's
-// taps are summed in the window's order, as a direct sum would.
+}  // namespace
+
+struct SsimReference::Data {
+  int lanes, w, h, image_channels, channels;
+  Box box;
+  std::size_t count;  // averaged pixels per channel
+  int width, span;    // width: the box's, padded to a multiple of 8; span: width + 2 radius
+  double k[kTaps];
+  std::vector<double> averaged;  // width x box height: 1 where averaged, 0 elsewhere and in the padding
+  std::vector<Unit> units;       // channel by channel, each band by band
+};
+
+namespace {
+
+using Data = SsimReference::Data;
+
+// The reference's planes of a unit: the horizontal pass over its rows (x, x^2 in `h`, 2 planes of
+// rows x width), then the vertical one (mx, xx). Here and below the window's taps are summed in
+// its order, as a direct sum would, in vectors V of doubles (U: one that may start at any double).
 template <class V>
-SN_SSIM_INLINE double channel_sum(const Planes& P, const double* k) {
+SN_SSIM_INLINE void reference_planes(Unit& u, const Data& D, double* h) {
   constexpr int L = int(sizeof(V) / sizeof(double));
-  typedef V U __attribute__((aligned(8)));  // a vector at any double
-  const size_t plane = size_t(P.rows) * P.width;
-  for (int j = 0; j < P.rows; ++j)
-    for (int x = 0; x < P.width; x += L) {
-      V sx{}, sy{}, sxx{}, syy{}, sxy{};
+  typedef V U __attribute__((aligned(8)));
+  const std::size_t plane = std::size_t(u.rows) * D.width;
+  for (int j = 0; j < u.rows; ++j)
+    for (int x = 0; x < D.width; x += L) {
+      V sx{}, sxx{};
       for (int d = 0; d < kTaps; ++d) {
-        const V va = *(const U*)(P.a + size_t(j) * P.span + x + d), vb = *(const U*)(P.b + size_t(j) * P.span + x + d);
-        const V ka = k[d] * va, kb = k[d] * vb;
-        sx += ka, sy += kb, sxx += ka * va, syy += kb * vb, sxy += ka * vb;
+        const V va = *(const U*)(u.a.data() + std::size_t(j) * D.span + x + d), ka = D.k[d] * va;
+        sx += ka, sxx += ka * va;
       }
-      double* o = P.h + size_t(j) * P.width + x;
-      *(U*)o = sx, *(U*)(o + plane) = sy, *(U*)(o + 2 * plane) = sxx, *(U*)(o + 3 * plane) = syy;
-      *(U*)(o + 4 * plane) = sxy;
+      *(U*)(h + std::size_t(j) * D.width + x) = sx, *(U*)(h + plane + std::size_t(j) * D.width + x) = sxx;
     }
-  V sum{};
-  for (int y = 0; y < P.height; ++y)
-    for (int x = 0; x < P.width; x += L) {
-      V mx{}, my{}, xx{}, yy{}, xy{};
+  for (int y = 0; y < u.height; ++y)
+    for (int x = 0; x < D.width; x += L) {
+      V mx{}, xx{};
       for (int d = 0; d < kTaps; ++d) {
-        const double* q = P.h + size_t(y + d) * P.width + x;
-        mx += k[d] * *(const U*)q, my += k[d] * *(const U*)(q + plane), xx += k[d] * *(const U*)(q + 2 * plane);
-        yy += k[d] * *(const U*)(q + 3 * plane), xy += k[d] * *(const U*)(q + 4 * plane);
+        const double* q = h + std::size_t(y + d) * D.width + x;
+        mx += D.k[d] * *(const U*)q, xx += D.k[d] * *(const U*)(q + plane);
       }
+      *(U*)(u.mx.data() + std::size_t(y) * D.width + x) = mx, *(U*)(u.xx.data() + std::size_t(y) * D.width + x) = xx;
+    }
+}
+
+// The unit's SSIM summed over its averaged pixels, against `b`'s rows of the unit (as u.a):
+// the horizontal pass (y, y^2, xy in `h`, 3 planes), the vertical one, the formula.
+template <class V>
+SN_SSIM_INLINE double unit_sum(const Unit& u, const Data& D, const double* b, double* h) {
+  constexpr int L = int(sizeof(V) / sizeof(double));
+  typedef V U __attribute__((aligned(8)));
+  const std::size_t plane = std::size_t(u.rows) * D.width;
+  for (int j = 0; j < u.rows; ++j)
+    for (int x = 0; x < D.width; x += L) {
+      V sy{}, syy{}, sxy{};
+      for (int d = 0; d < kTaps; ++d) {
+        const std::size_t at = std::size_t(j) * D.span + x + d;
+        const V va = *(const U*)(u.a.data() + at), vb = *(const U*)(b + at);
+        const V ka = D.k[d] * va, kb = D.k[d] * vb;
+        sy += kb, syy += kb * vb, sxy += ka * vb;
+      }
+      double* o = h + std::size_t(j) * D.width + x;
+      *(U*)o = sy, *(U*)(o + plane) = syy, *(U*)(o + 2 * plane) = sxy;
+    }
+  const double* mask = D.averaged.data() + std::size_t(u.y0 - D.box.y0) * D.width;
+  V sum{};
+  for (int y = 0; y < u.height; ++y)
+    for (int x = 0; x < D.width; x += L) {
+      V my{}, yy{}, xy{};
+      for (int d = 0; d < kTaps; ++d) {
+        const double* q = h + std::size_t(y + d) * D.width + x;
+        my += D.k[d] * *(const U*)q, yy += D.k[d] * *(const U*)(q + plane), xy += D.k[d] * *(const U*)(q + 2 * plane);
+      }
+      const std::size_t at = std::size_t(y) * D.width + x;
+      const V mx = *(const U*)(u.mx.data() + at), xx = *(const U*)(u.xx.data() + at);
       const V vx = xx - mx * mx, vy = yy - my * my, cxy = xy - mx * my;
       const V s = (2 * mx * my + kC1) * (2 * cxy + kC2) / ((mx * mx + my * my + kC1) * (vx + vy + kC2));
-      sum += *(const U*)(P.mask + size_t(y) * P.width + x) * s;
+      sum += *(const U*)(mask + at) * s;
     }
   double total = 0;
   for (int i = 0; i < L; ++i) total += sum[i];
@@ -76,9 +120,59 @@ SN_SSIM_INLINE double channel_sum(const Planes& P, const double* k) {
 
 using d2 = double __attribute__((vector_size(16)));
 using d8 = double __attribute__((vector_size(64)));
-double channel_sum_sse2(const Planes& P, const double* k) { return channel_sum<d2>(P, k); }
-__attribute__((target("avx512f,avx2,fma"))) double channel_sum_avx512(const Planes& P, const double* k) {
-  return channel_sum<d8>(P, k);
+void reference_planes_sse2(Unit& u, const Data& D, double* h) { reference_planes<d2>(u, D, h); }
+__attribute__((target("avx512f,avx2,fma"))) void reference_planes_avx512(Unit& u, const Data& D, double* h) {
+  reference_planes<d8>(u, D, h);
+}
+double unit_sum_sse2(const Unit& u, const Data& D, const double* b, double* h) { return unit_sum<d2>(u, D, b, h); }
+__attribute__((target("avx512f,avx2,fma"))) double unit_sum_avx512(const Unit& u, const Data& D, const double* b,
+                                                                   double* h) {
+  return unit_sum<d8>(u, D, b, h);
+}
+
+// Non-finite pixels are errors. A pass over every float in integer bit tests (which vectorize)
+// first; only when it finds one does the scan by channel name it (or find it in a channel not
+// compared).
+void check_finite(const Image& img, int channels) {
+  uint32_t bad = 0;
+  for (const float f : img.pixels) {
+    uint32_t u;
+    std::memcpy(&u, &f, sizeof u);
+    bad |= uint32_t((u & 0x7f800000u) == 0x7f800000u);
+  }
+  if (!bad) return;
+  for (int c = 0; c < channels; ++c)
+    for (int i = 0; i < img.width * img.height; ++i)
+      if (!std::isfinite(img.pixels[std::size_t(i) * img.channels + c]))
+        throw std::invalid_argument("ssim: pixel (" + std::to_string(i % img.width + 1) + ", " +
+                                    std::to_string(i / img.width + 1) + ") channel " + std::to_string(c + 1) +
+                                    " is not a finite number");
+}
+
+void check_same_size(int w, int h, int channels, const Image& b) {
+  if (b.width != w || b.height != h || b.channels != channels)
+    throw std::invalid_argument("ssim: images differ in size: " + std::to_string(w) + "x" + std::to_string(h) + "x" +
+                                std::to_string(channels) + " vs " + std::to_string(b.width) + "x" +
+                                std::to_string(b.height) + "x" + std::to_string(b.channels));
+}
+
+// `img`'s channel c over the unit's rows, widened by the radius, as doubles (0 beyond the image).
+void copy_rows(const Image& img, const Unit& u, const Data& D, double* out) {
+  const int x0 = D.box.x0 - kR, inside = std::min(D.span, D.w - x0);
+  for (int j = 0; j < u.rows; ++j) {
+    const float* r = img.pixels.data() + (std::size_t(u.y0 - kR + j) * D.w + x0) * img.channels + u.c;
+    double* o = out + std::size_t(j) * D.span;
+    for (int i = 0; i < inside; ++i) o[i] = r[std::size_t(i) * img.channels];
+    std::fill(o + inside, o + D.span, 0.0);
+  }
+}
+
+// One buffer per thread, reused: a table scores thousands of images, and fresh pages for each
+// would cost more than the filter. Every double of it is written before it is read.
+double* scratch(std::size_t n) {
+  thread_local std::vector<double> buffer;
+  if (buffer.size() < n) buffer.resize(n);
+  return buffer.data();
 }
 
 }  // namespace
@@ -88,18 +182,12 @@ int ssim_widest_lanes() {
   return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") ? 8 : 2;
 }
 
-double ssim(const Image& a, const Image& b, int channels, const Image* mask, int mask_channel) {
-  static const int lanes = ssim_widest_lanes();
-  return ssim_lanes(lanes, a, b, channels, mask, mask_channel);
-}
-
-double ssim_lanes(int lanes, const Image& a, const Image& b, int channels, const Image* mask, int mask_channel) {
-  if (lanes != 2 && (lanes != 8 || ssim_widest_lanes() < 8))
+SsimReference ssim_reference(const Image& a, int channels, const Image* mask, int mask_channel, int lanes) {
+  static const int widest = ssim_widest_lanes();
+  if (lanes == 0) lanes = widest;
+  if (lanes != 2 && (lanes != 8 || widest < 8))
     throw std::invalid_argument("ssim: no " + std::to_string(lanes) + "-lane filter on this CPU");
-  if (a.width != b.width || a.height != b.height || a.channels != b.channels)
-    throw std::invalid_argument("ssim: images differ in size: " + std::to_string(a.width) + "x" + std::to_string(a.height) +
-                                "x" + std::to_string(a.channels) + " vs " + std::to_string(b.width) + "x" +
-                                std::to_string(b.height) + "x" + std::to_string(b.channels));
+  auto D = std::make_shared<Data>();
   const int w = a.width, h = a.height;
   if (w < kTaps || h < kTaps)
     throw std::invalid_argument("ssim: images of " + std::to_string(w) + "x" + std::to_string(h) +
@@ -108,14 +196,15 @@ double ssim_lanes(int lanes, const Image& a, const Image& b, int channels, const
   if (mask && (mask->width != w || mask->height != h || mask_channel < 0 || mask_channel >= mask->channels))
     throw std::invalid_argument("ssim: the mask does not match the images (size, or channel " +
                                 std::to_string(mask_channel + 1) + " of " + std::to_string(mask->channels) + ")");
-  double k[kTaps], ksum = 0;
-  for (int d = -kR; d <= kR; ++d) ksum += k[d + kR] = std::exp(-0.5 * d * d / (kSigma * kSigma));
-  for (double& v : k) v /= ksum;
+  D->lanes = lanes, D->w = w, D->h = h, D->image_channels = a.channels, D->channels = channels;
+  double ksum = 0;
+  for (int d = -kR; d <= kR; ++d) ksum += D->k[d + kR] = std::exp(-0.5 * d * d / (kSigma * kSigma));
+  for (double& v : D->k) v /= ksum;
 
   // The interior pixels that are averaged, and their bounding box (all of the interior
   // without a mask): a mesh covering part of the frame filters only around itself.
   Box box{w, h, -1, -1};
-  size_t count = 0;
+  std::size_t count = 0;
   for (int py = kR; py < h - kR; ++py)
     for (int px = kR; px < w - kR; ++px)
       if (!mask || mask->at(px, py, mask_channel) > 0.5f) {
@@ -123,24 +212,8 @@ double ssim_lanes(int lanes, const Image& a, const Image& b, int channels, const
         ++count;
       }
   if (box.x1 < 0) throw std::invalid_argument("ssim: the mask leaves no pixel at least 5 pixels inside the border");
-  // Non-finite pixels are errors. A pass over every float in integer bit tests (which vectorize)
-  // first; only when it finds one does the scan by channel name it (or find it in a channel
-  // not compared).
-  const auto any_nonfinite = [](const std::vector<float>& v) {
-    uint32_t bad = 0;
-    for (const float f : v) {
-      uint32_t u;
-      std::memcpy(&u, &f, sizeof u);
-      bad |= uint32_t((u & 0x7f800000u) == 0x7f800000u);
-    }
-    return bad != 0;
-  };
-  if (any_nonfinite(a.pixels) || any_nonfinite(b.pixels))
-    for (int c = 0; c < channels; ++c)
-      for (int i = 0; i < w * h; ++i)
-        if (!std::isfinite(a.pixels[size_t(i) * a.channels + c]) || !std::isfinite(b.pixels[size_t(i) * b.channels + c]))
-          throw std::invalid_argument("ssim: pixel (" + std::to_string(i % w + 1) + ", " + std::to_string(i / w + 1) +
-                                    ") channel " + std::to_string(c + 1) + " is not a finite number");
+  check_finite(a, channels);
+  D->box = box, D->count = count;
 
   // The box in bands of rows, each filtered on its own (its horizontal pass also covers the
   // radius above and below it): the (channel, band) units run on the threads, and their sums
@@ -148,48 +221,59 @@ double ssim_lanes(int lanes, const Image& a, const Image& b, int channels, const
   const int width = (box.x1 - box.x0 + 1 + 7) / 8 * 8, height = box.y1 - box.y0 + 1;
   const int bands = std::max(1, (height + kBandRows / 2) / kBandRows);
   const int band_rows = (height + bands - 1) / bands;
-  // The averaged pixels as 1 (0 elsewhere and in the padding), once for every channel and band.
-  // (The threads read it through `plane`: in the lambda, `averaged` would be each thread's own.)
-  thread_local std::vector<double> averaged;
-  averaged.assign(size_t(width) * size_t(height), 0.0);
-  double* const plane = averaged.data();
+  D->width = width, D->span = width + 2 * kR;
+  D->averaged.assign(std::size_t(width) * std::size_t(height), 0.0);
   for (int y = box.y0; y <= box.y1; ++y)
     for (int x = box.x0; x <= box.x1; ++x)
-      plane[size_t(y - box.y0) * size_t(width) + size_t(x - box.x0)] = !mask || mask->at(x, y, mask_channel) > 0.5f;
-  std::vector<double> sums(size_t(channels) * size_t(bands));
-  parallel_for(channels * bands, default_threads(), [&](int u) {
-    const int c = u / bands, y0 = box.y0 + (u % bands) * band_rows;
-    Planes P;
-    P.width = width;
-    P.height = std::min(band_rows, box.y1 + 1 - y0);
-    P.rows = P.height + 2 * kR;
-    P.span = P.width + 2 * kR;
-    // One buffer per thread, reused: a table scores thousands of images, and fresh pages for
-    // each would cost more than the filter. Every float of it is written before it is read.
-    const size_t in = size_t(P.rows) * P.span;
-    thread_local std::vector<double> buffer;
-    buffer.resize(2 * in + 5 * size_t(P.rows) * P.width);
-    double *pa = buffer.data(), *pb = pa + in;
-    P.a = pa, P.b = pb, P.h = pb + in;
-    P.mask = plane + size_t(y0 - box.y0) * size_t(width);
-    // Columns beyond the image (the padding) are 0; their pixels are not averaged.
-    const int x0 = box.x0 - kR, inside = std::min(P.span, w - x0);
-    for (int j = 0; j < P.rows; ++j) {
-      const size_t row = size_t(y0 - kR + j) * w + x0;
-      const float *ra = a.pixels.data() + row * a.channels + c, *rb = b.pixels.data() + row * b.channels + c;
-      double *oa = pa + size_t(j) * P.span, *ob = pb + size_t(j) * P.span;
-      for (int i = 0; i < inside; ++i) oa[i] = ra[size_t(i) * a.channels], ob[i] = rb[size_t(i) * b.channels];
-      std::fill(oa + inside, oa + P.span, 0.0), std::fill(ob + inside, ob + P.span, 0.0);
+      D->averaged[std::size_t(y - box.y0) * std::size_t(width) + std::size_t(x - box.x0)] =
+          !mask || mask->at(x, y, mask_channel) > 0.5f;
+  for (int c = 0; c < channels; ++c)
+    for (int band = 0; band < bands; ++band) {
+      Unit u;
+      u.c = c, u.y0 = box.y0 + band * band_rows;
+      u.height = std::min(band_rows, box.y1 + 1 - u.y0), u.rows = u.height + 2 * kR;
+      D->units.push_back(std::move(u));
     }
-    sums[size_t(u)] = lanes == 8 ? channel_sum_avx512(P, k) : channel_sum_sse2(P, k);
+  parallel_for(int(D->units.size()), default_threads(), [&](int i) {
+    Unit& u = D->units[std::size_t(i)];
+    u.a.resize(std::size_t(u.rows) * D->span);
+    u.mx.resize(std::size_t(u.height) * width), u.xx.resize(std::size_t(u.height) * width);
+    copy_rows(a, u, *D, u.a.data());
+    double* h = scratch(2 * std::size_t(u.rows) * width);
+    lanes == 8 ? reference_planes_avx512(u, *D, h) : reference_planes_sse2(u, *D, h);
   });
+  return SsimReference(std::move(D));
+}
+
+double ssim(const SsimReference& reference, const Image& b) {
+  const Data& D = reference.data();
+  check_same_size(D.w, D.h, D.image_channels, b);
+  check_finite(b, D.channels);
+  std::vector<double> sums(D.units.size());
+  parallel_for(int(D.units.size()), default_threads(), [&](int i) {
+    const Unit& u = D.units[std::size_t(i)];
+    const std::size_t in = std::size_t(u.rows) * D.span;
+    double* rows = scratch(in + 3 * std::size_t(u.rows) * D.width);
+    copy_rows(b, u, D, rows);
+    sums[std::size_t(i)] = D.lanes == 8 ? unit_sum_avx512(u, D, rows, rows + in) : unit_sum_sse2(u, D, rows, rows + in);
+  });
+  const std::size_t bands = D.units.size() / std::size_t(D.channels);
   double total = 0;
-  for (int c = 0; c < channels; ++c) {
+  for (std::size_t c = 0; c < std::size_t(D.channels); ++c) {
     double sum = 0;
-    for (int band = 0; band < bands; ++band) sum += sums[size_t(c) * size_t(bands) + size_t(band)];
-    total += sum / double(count);
+    for (std::size_t band = 0; band < bands; ++band) sum += sums[c * bands + band];
+    total += sum / double(D.count);
   }
-  return total / channels;
+  return total / D.channels;
+}
+
+double ssim(const Image& a, const Image& b, int channels, const Image* mask, int mask_channel) {
+  return ssim_lanes(0, a, b, channels, mask, mask_channel);
+}
+
+double ssim_lanes(int lanes, const Image& a, const Image& b, int channels, const Image* mask, int mask_channel) {
+  check_same_size(a.width, a.height, a.channels, b);
+  return ssim(ssim_reference(a, channels, mask, mask_channel, lanes), b);
 }
 
 }  // namespace sn::io

@@ -15,10 +15,11 @@ namespace sn::nn {
 
 namespace {
 
-// The error of one render, clamped here, against its truth.
-RenderError score(io::Image&& mine, const io::Image& truth, std::size_t nonfinite) {
+// The error of one render, clamped here, against its truth (`reference`: the truth's part of
+// the SSIM, prepared once per view).
+RenderError score(io::Image&& mine, const io::Image& truth, const io::SsimReference& reference, std::size_t nonfinite) {
   const io::Image shown = io::clamp_colors(std::move(mine));
-  return {io::mse(truth, shown, 3, &truth), io::ssim(truth, shown, 3, &truth), nonfinite};
+  return {io::mse(truth, shown, 3, &truth), io::ssim(reference, shown), nonfinite};
 }
 
 }  // namespace
@@ -43,6 +44,10 @@ std::vector<RenderError> render_errors(const std::vector<std::shared_ptr<const M
     on_cpu[i] = choose_render_backend(*nets[i], {}, nullptr) == RenderBackend::cpu;
   }
   std::vector<RenderError> errors(nets.size() * nv);
+  if (nets.empty()) return errors;
+  // Over the truth's covered pixels (its alpha), in its colour channels.
+  std::vector<io::SsimReference> references;
+  for (const TruthView& v : views) references.push_back(io::ssim_reference(*v.truth, 3, v.truth));
 
   // Every attachment a cpu network reads, read back once per view.
   std::vector<GBufferTexels> texels(nv);
@@ -61,7 +66,7 @@ std::vector<RenderError> render_errors(const std::vector<std::shared_ptr<const M
     const std::size_t at = cpu_units[std::size_t(u)], i = at / nv, k = at % nv;
     io::Image mine;
     const std::size_t bad = cpu_render(*nets[i], *views[k].gbuffer, texels[k], inputs[at], mine);
-    errors[at] = score(std::move(mine), *views[k].truth, bad);
+    errors[at] = score(std::move(mine), *views[k].truth, references[k], bad);
   });
 
   // gl networks draw on this thread, one at a time; their views are scored on the threads.
@@ -71,7 +76,7 @@ std::vector<RenderError> render_errors(const std::vector<std::shared_ptr<const M
     for (std::size_t k = 0; k < nv; ++k) drawn[k] = render_network(nets[i], *views[k].gbuffer);
     io::parallel_for(int(nv), io::default_threads(), [&](int k) {
       errors[i * nv + std::size_t(k)] = score(std::move(drawn[std::size_t(k)].image), *views[std::size_t(k)].truth,
-                                              drawn[std::size_t(k)].nonfinite);
+                                              references[std::size_t(k)], drawn[std::size_t(k)].nonfinite);
     });
   }
   return errors;

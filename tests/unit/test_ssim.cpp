@@ -128,6 +128,35 @@ TEST(Ssim, BandsOnThreadsGiveTheDirectValue) {
   EXPECT_EQ(got[0], got[1]);
 }
 
+// A reference prepared once (a truth view scored against many renders) gives each comparison
+// the same number to the bit as ssim of the pair, on every vector path, masked or not.
+TEST(Ssim, APreparedReferenceGivesEachPairsValueToTheBit) {
+  Image ring(48, 150, 4, 0.f);
+  for (int y = 0; y < 150; ++y)
+    for (int x = 0; x < 48; ++x) ring.at(x, y, 3) = ((x - 22) * (x - 22) + (y - 70) * (y - 70) / 4) <= 300;
+  for (int lanes : {2, 8}) {
+    if (lanes > sn::io::ssim_widest_lanes()) continue;
+    for (const Image* mask : {(const Image*)nullptr, (const Image*)&ring}) {
+      const Image a = pair(0, 48, 150).first;
+      const sn::io::SsimReference reference = sn::io::ssim_reference(a, 2, mask, 3, lanes);
+      for (int kind = 0; kind < 3; ++kind) {
+        const Image b = pair(kind, 48, 150).second;
+        EXPECT_EQ(sn::io::ssim(reference, b), sn::io::ssim_lanes(lanes, a, b, 2, mask, 3)) << lanes << " lanes, kind " << kind;
+      }
+    }
+  }
+  const sn::io::SsimReference reference = sn::io::ssim_reference(pair(0).first);
+  EXPECT_THROW(sn::io::ssim(reference, Image(40, 29, 3)), std::invalid_argument);
+  Image bad = pair(1).second;
+  bad.at(3, 4, 1) = NAN;
+  try {
+    sn::io::ssim(reference, bad);
+    ADD_FAILURE() << "a NaN was compared";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "ssim: pixel (4, 5) channel 2 is not a finite number");
+  }
+}
+
 TEST(Ssim, RefusesWhatItCannotMeasure) {
   auto [a, b] = pair(0);
   Image small(10, 28, 3);
