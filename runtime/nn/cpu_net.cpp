@@ -117,10 +117,23 @@ struct One {
   static SN_INLINE V w(const float* p) { return splat<V>(*p); }
   static SN_INLINE Gh wh(const float* p) { return Gh{*p, *p, *p, *p}; }
 };
+// A weight as one vbroadcastss from memory (AVX's instruction, so not in the sse2 kernel, whose
+// One keeps splat): GCC builds splat's vector in two instructions (an insert and a shuffle), a
+// constructor's in one masked load per lane, and a target attribute on w cannot be inlined into
+// the templates the kernels share.
+template <class V>
+SN_INLINE V broadcast_from(const float* p) {
+  V r;
+  __asm__("vbroadcastss %1, %0" : "=v"(r) : "m"(*p));
+  return r;
+}
+struct OneAvx : One {  // One in the AVX2 and AVX-512 kernels
+  static SN_INLINE V w(const float* p) { return broadcast_from<V>(p); }
+};
 struct Wide {  // inference only: no gradient
   using V = v16;
   static constexpr int kPar = 1, kSamples = 16;
-  static SN_INLINE V w(const float* p) { return splat<V>(*p); }
+  static SN_INLINE V w(const float* p) { return broadcast_from<V>(p); }
 };
 struct Pair {
   using V = v16;
@@ -697,7 +710,7 @@ SN_INLINE void lanes_impl(const Arena& A, const float* x, std::size_t blocks, fl
       for (std::size_t q = 0; q < per; ++q) std::memcpy(y + ((b + q) * out + o) * 8, yo + (o * per + q) * 8, bytes);
   }
   if constexpr (per > 1)
-    if (b < blocks) lanes_impl<H, One>(A, x + b * in * 8, blocks - b, y + b * out * 8);
+    if (b < blocks) lanes_impl<H, OneAvx>(A, x + b * in * 8, blocks - b, y + b * out * 8);  // only Wide has per > 1
 }
 
 template <int H, class Mode>
@@ -781,22 +794,22 @@ struct FlushDenormals {
   ~FlushDenormals() { _mm_setcsr(saved); }
 };
 
-#define SN_KERNEL_SET(NAME, ISA, ATTR, WIDE, VEC)                                                                   \
+#define SN_KERNEL_SET(NAME, ISA, ATTR, ONE, WIDE, VEC)                                                              \
   template <int H>                                                                                                  \
   ATTR int step_##NAME(const Arena& A, const float* const* mb, int batch, const AdamStep& c, const LossArgs& lf,     \
                        double* l) {                                                                                 \
     FlushDenormals ftz;                                                                                             \
-    return step_impl<ISA, One, H>(View<One>(A), mb, batch, c, lf, l);                                               \
+    return step_impl<ISA, ONE, H>(View<ONE>(A), mb, batch, c, lf, l);                                               \
   }                                                                                                                 \
   template <int H>                                                                                                  \
   ATTR double loss_##NAME(const Arena& A, const float* x, const float* y, std::size_t n, const LossArgs& lf) {      \
     FlushDenormals ftz;                                                                                             \
-    return loss_impl<H>(View<One>(A), x, y, n, lf);                                                                 \
+    return loss_impl<H>(View<ONE>(A), x, y, n, lf);                                                                 \
   }                                                                                                                 \
   template <int H>                                                                                                  \
   ATTR void forward_##NAME(const Arena& A, const float* x, std::size_t n, float* out) {                             \
     FlushDenormals ftz;                                                                                             \
-    forward_impl<H>(View<One>(A), x, n, out);                                                                       \
+    forward_impl<H>(View<ONE>(A), x, n, out);                                                                       \
   }                                                                                                                 \
   template <int H>                                                                                                  \
   ATTR void lanes_##NAME(const Arena& A, const float* x, std::size_t n, float* y) {                                 \
@@ -806,7 +819,7 @@ struct FlushDenormals {
   template <int H>                                                                                                  \
   ATTR void counts_##NAME(const Arena& A, const float* x, std::size_t n, std::vector<std::vector<uint32_t>>& c) {   \
     FlushDenormals ftz;                                                                                             \
-    counts_impl<H>(View<One>(A), x, n, c);                                                                          \
+    counts_impl<H>(View<ONE>(A), x, n, c);                                                                          \
   }                                                                                                                 \
   template <int K>                                                                                                  \
   ATTR void activation_##NAME(float p, const float* z, std::size_t n, float* f, float* df) {                        \
@@ -815,10 +828,10 @@ struct FlushDenormals {
   }
 
 #define SN_NO_TARGET
-SN_KERNEL_SET(sse2, Sse2, SN_NO_TARGET, One, v8)
-SN_KERNEL_SET(avx2, Avx2, __attribute__((target("avx2,fma"))), One, v8)
+SN_KERNEL_SET(sse2, Sse2, SN_NO_TARGET, One, One, v8)
+SN_KERNEL_SET(avx2, Avx2, __attribute__((target("avx2,fma"))), OneAvx, OneAvx, v8)
 #define SN_AVX512 __attribute__((target("avx512f,avx512vl,avx512dq,avx512bw,avx2,fma")))
-SN_KERNEL_SET(avx512, Avx512, SN_AVX512, Wide, v16)
+SN_KERNEL_SET(avx512, Avx512, SN_AVX512, OneAvx, Wide, v16)
 
 // Validation with 16 samples per register (AVX-512 only).
 template <int H>
