@@ -3,12 +3,7 @@
 -- first image saved loads it, and it stays out of the program's global symbol scope.
 local sn = require "shadenet"
 
-local function mapped(pattern)
-  local f = assert(io.open("/proc/self/maps"))
-  local maps = f:read("*a")
-  f:close()
-  return maps:find(pattern) ~= nil
-end
+local mapped = require "mapped"
 
 assert(not mapped("libOpenImageIO"), "OpenImageIO is loaded before any image was read or written")
 assert(not mapped("libshadenet_image"), "the image module is loaded before any image was read or written")

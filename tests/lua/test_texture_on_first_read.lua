@@ -3,12 +3,7 @@
 -- sample the texture, so they do not load OpenImageIO (about 0.15 s); reading the texture does.
 local sn = require "shadenet"
 
-local function mapped(pattern)
-  local f = assert(io.open("/proc/self/maps"))
-  local maps = f:read("*a")
-  f:close()
-  return maps:find(pattern) ~= nil
-end
+local mapped = require "mapped"
 
 local cloth = sn.scene { mesh = "meshes/cloth.glb", size = { 48, 36 }, views = { count = 2 } }
 assert(cloth:meshes()[1]:has("texture"), "the cloth has a base-colour texture")
