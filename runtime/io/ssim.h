@@ -41,7 +41,7 @@ SsimReference ssim_reference(const Image& a, int channels = -1, const Image* mas
 double ssim(const SsimReference& reference, const Image& b);
 
 // ssim with the filter in vectors of `lanes` doubles: 2 (SSE2, every x86-64 CPU) or 8 (AVX-512,
-// where the CPU has it); ssim uses the widest. For tests of each path.
+// where the CPU has it), or 0 for the widest, which ssim uses. For tests of each path.
 int ssim_widest_lanes();
 double ssim_lanes(int lanes, const Image& a, const Image& b, int channels = -1, const Image* mask = nullptr,
                   int mask_channel = 3);
