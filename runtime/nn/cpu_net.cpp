@@ -120,12 +120,17 @@ struct One {
 // A weight as one vbroadcastss from memory (AVX's instruction, so not in the sse2 kernel, whose
 // One keeps splat): GCC builds splat's vector in two instructions (an insert and a shuffle), a
 // constructor's in one masked load per lane, and a target attribute on w cannot be inlined into
-// the templates the kernels share.
+// the templates the kernels share. Clang (the fuzzing build) makes splat one broadcast, and
+// refuses a 64-byte asm operand outside an AVX-512 function.
 template <class V>
 SN_INLINE V broadcast_from(const float* p) {
+#ifdef __clang__
+  return splat<V>(*p);
+#else
   V r;
   __asm__("vbroadcastss %1, %0" : "=v"(r) : "m"(*p));
   return r;
+#endif
 }
 struct OneAvx : One {  // One in the AVX2 and AVX-512 kernels
   static SN_INLINE V w(const float* p) { return broadcast_from<V>(p); }
