@@ -297,7 +297,11 @@ void Loop::run_script() {
     set_status();
     return;
   }
-  call("_begin_run", 0, 0);  // kept networks go back to their snapshot: console edits are gone
+  // Kept networks go back to their snapshot (console edits are gone); the view's size goes to Lua
+  // for what the run shows before the first frame (a screenshot taken by the script itself).
+  auto [vw, vh] = view_size();
+  lua_pushinteger(L_, vw), lua_pushinteger(L_, vh);
+  call("_begin_run", 2, 0);
   unsaved_ = false;
   fallback_errors_.clear();
   lua_pushvalue(L_, -1);

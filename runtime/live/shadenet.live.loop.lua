@@ -10,8 +10,10 @@ local snapshot, restore = keep.snapshot, keep.restore
 local render, resolve_view = view_of.render, view_of.resolve_view
 
 -- Before each (re)run of the watched script: its modules load afresh, kept networks go back
--- to their snapshot, and sn.live.show calls collect in `pending`.
-function live._begin_run()
+-- to their snapshot, and sn.live.show calls collect in `pending`. width x height: what the loop
+-- draws the view at (0 x 0: the show's size decides).
+function live._begin_run(width, height)
+  S.loop_size = width and width > 0 and height > 0 and { width, height } or nil
   S.active = true
   for name in pairs(S.modules) do package.loaded[name] = nil end
   S.modules = {}

@@ -20,7 +20,7 @@ function live.probe(x, y)
     error(("sn.live.probe(x, y): x and y must be whole pixel numbers, got %s, %s"):format(tostring(x), tostring(y)), 2)
   end
   local spec = view_of.current_spec("sn.live.probe")
-  local view = S.view or view_of.resolve_view(spec, {})
+  local view = view_of.current_view(spec)
   if x < 1 or x > view.width or y < 1 or y > view.height then
     error(("sn.live.probe: pixel (%d, %d) is outside the %dx%d view (x 1..%d, y 1..%d)"):format(
       x, y, view.width, view.height, view.width, view.height), 2)

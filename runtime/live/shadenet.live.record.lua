@@ -1,21 +1,20 @@
 -- Screenshots and recordings of the current view: sn.live.screenshot, sn.record (an orbit of the
 -- camera or a sweep of one value), with or without a window.
 local sn = require "shadenet.core"
-local S = require "shadenet.live.state"
 local check = require "shadenet.live.check"
 local view_of = require "shadenet.live.view"
 local busy = require "shadenet.live.busy"
 local live = sn.live
 local strict, is_mode, MODES = check.strict, check.is_mode, check.MODES
-local render, resolve_view, current_spec = view_of.render, view_of.resolve_view, view_of.current_spec
+local render, current_spec = view_of.render, view_of.current_spec
 
 local absolute = sn.live_absolute
 
 -- sn.live.screenshot([path]) -> absolute path: saves the current view (PNG unless the path
 -- says otherwise); by default out/live/screenshot-NNNN.png.
 function live.screenshot(path)
-  local view = S.view or resolve_view(current_spec("sn.live.screenshot"), {})
   local spec = current_spec("sn.live.screenshot")
+  local view = view_of.current_view(spec)
   local image = render(spec, view):read()
   -- claimed, not looked for: another instance saving at the same moment gets the next number
   path = path or sn.fs.claim("out/live", "screenshot", ".png")
@@ -33,7 +32,7 @@ function sn.record(o)
   strict(o, { "orbit", "sweep", "mode", "width", "height", "dir" }, "sn.record", 2)
   if (o.orbit == nil) == (o.sweep == nil) then error("sn.record: give either 'orbit' or 'sweep'", 2) end
   local spec = current_spec("sn.record")
-  local base = S.view or resolve_view(spec, {})
+  local base = view_of.current_view(spec)
   local view = {}
   for k, v in pairs(base) do view[k] = v end
   if o.mode ~= nil then

@@ -8,6 +8,7 @@ return {
   modules = {},     -- module name -> file, for modules `require`d from files
   files = {},       -- file -> true: modules and dofile'd scripts, watched for saves
   view = nil,       -- the last view the loop rendered ({mode, camera, light, width, height})
+  loop_size = nil,  -- {w, h} the loop draws at (its window or --size), told at each run's start
   frames = 0,       -- frames rendered by the loop
   drawn = nil,      -- the last frame's parts: { view, network = Target, truth = Target } (probe)
   binds = {},       -- key -> sn.live.bind's binding in force

@@ -208,6 +208,15 @@ function live.render(o)
   return r  -- the picture only
 end
 
+-- The view shown now, or before the first frame the one the loop will show (at its size unless
+-- the show names one), for screenshots, recordings and probes taken by the script as it runs.
+function M.current_view(spec)
+  if S.view then return S.view end
+  local o = {}
+  if not spec.size and S.loop_size then o.width, o.height = S.loop_size[1], S.loop_size[2] end
+  return M.resolve_view(spec, o)
+end
+
 -- sn.live.view() -> the view the window shows now ({mode, camera, light, width, height}), to
 -- reproduce it headless with sn.live.render(view); nil before the first frame.
 function live.view()

@@ -21,12 +21,19 @@ sn.live.show {
   end,
   camera = sn.camera { eye = { 0.6, 0.8, 2.6 } },
 }
+-- Taken as the script runs, before the loop's first frame: still at the loop's --size.
+print("EARLY " .. sn.live.screenshot())
 ]]):format(dir .. "/tint.frag"))
 
 local a = H.start { dir = dir .. "/a", script = script, window = false }
 local b = H.start { dir = dir .. "/b", script = script, window = false }
 a:wait_log("%[live%] ran")
 b:wait_log("%[live%] ran")
+for _, s in ipairs({ a, b }) do
+  local early = s:wait_log("EARLY ([^\n]+%.png)")
+  local w, h = sn.image.load(early):size()
+  assert(w == 160 and h == 120, early .. ", taken before the first frame, is at the --size: " .. w .. "x" .. h)
+end
 local line = "for i = 1, 4 do print('SHOT ' .. sn.live.screenshot()) end " ..
              "print('RECORD ' .. sn.record { orbit = { count = 2 }, width = 32, height = 32 }) print('DONE')"
 a:send(line)
