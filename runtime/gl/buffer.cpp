@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "gl/context.h"
+#include "gl/pool.h"
 
 namespace sn::gl {
 
@@ -103,32 +104,16 @@ void finish() {
 }
 
 namespace {
-std::vector<std::shared_ptr<Buffer>>& pool() {
-  static std::vector<std::shared_ptr<Buffer>> p;
+Pool<Buffer>& pool() {
+  static Pool<Buffer> p(8);
   return p;
 }
-constexpr int kIdleMax = 8;
 }  // namespace
 
 std::shared_ptr<Buffer> pooled_buffer(ElemType type, std::size_t count) {
-  auto& p = pool();
-  std::shared_ptr<Buffer> best;
-  for (auto& b : p)
-    if (b.use_count() == 1 && b->type() == type && b->count() >= count && (!best || b->count() < best->count())) best = b;
-  if (best) return best;
-  auto b = std::make_shared<Buffer>(type, count);
-  int idle = 0;
-  for (auto& q : p) idle += q.use_count() == 1;
-  for (auto it = p.begin(); idle > kIdleMax - 1 && it != p.end();) {  // room for this one when it comes back
-    if (it->use_count() == 1) {
-      it = p.erase(it);
-      --idle;
-    } else {
-      ++it;
-    }
-  }
-  p.push_back(b);
-  return b;
+  return pool().take([&](const Buffer& b) { return b.type() == type && b.count() >= count; },
+                     [](const Buffer& a, const Buffer& b) { return a.count() < b.count(); },  // the smallest
+                     [&] { return std::make_shared<Buffer>(type, count); });
 }
 
 void clear_buffer_pool() { pool().clear(); }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "gl/context.h"
+#include "gl/pool.h"
 
 namespace sn::gl {
 
@@ -133,30 +134,17 @@ io::Image RenderTarget::read(int i) const {
 }
 
 namespace {
-std::vector<std::shared_ptr<RenderTarget>>& pool() {
-  static std::vector<std::shared_ptr<RenderTarget>> p;
+Pool<RenderTarget>& pool() {
+  static Pool<RenderTarget> p(2);
   return p;
 }
-constexpr int kIdleMax = 2;
 }  // namespace
 
 std::shared_ptr<RenderTarget> pooled_target(int width, int height, int n) {
-  auto& p = pool();
-  for (auto& t : p)
-    if (t.use_count() == 1 && t->width() == width && t->height() == height && t->attachments() == n) return t;
-  auto t = std::make_shared<RenderTarget>(width, height, n);
-  int idle = 0;
-  for (auto& q : p) idle += q.use_count() == 1;
-  for (auto it = p.begin(); idle > kIdleMax - 1 && it != p.end();) {  // room for this one when it comes back
-    if (it->use_count() == 1) {
-      it = p.erase(it);
-      --idle;
-    } else {
-      ++it;
-    }
-  }
-  p.push_back(t);
-  return t;
+  return pool().take(
+      [&](const RenderTarget& t) { return t.width() == width && t.height() == height && t.attachments() == n; },
+      [](const RenderTarget&, const RenderTarget&) { return false; },  // the first that fits
+      [&] { return std::make_shared<RenderTarget>(width, height, n); });
 }
 
 void clear_target_pool() { pool().clear(); }
