@@ -17,7 +17,15 @@ std::string read_file(const std::string& path, const std::string& what, std::uin
   const std::string head = "cannot read " + what + " '" + path + "': ";
   // O_NONBLOCK: opening a FIFO would otherwise wait for a writer; regular files ignore it.
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
-  if (fd < 0) throw std::runtime_error(head + (errno == ENOENT ? "no such file" : std::strerror(errno)));
+  if (fd < 0) {
+    std::string why = errno == ENOENT ? "no such file" : std::strerror(errno);
+    // A relative path is read from the working directory: name it (a script run from elsewhere
+    // than the directory its paths assume fails here).
+    char cwd[4096];
+    if (errno == ENOENT && !path.empty() && path[0] != '/' && ::getcwd(cwd, sizeof cwd))
+      why += " (relative to the working directory " + std::string(cwd) + ")";
+    throw std::runtime_error(head + why);
+  }
   struct stat st {};
   if (::fstat(fd, &st) != 0) {
     const int err = errno;

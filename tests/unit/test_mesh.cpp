@@ -366,7 +366,10 @@ TEST(Mesh, SparseAccessorsOverrideTheirBaseValues) {
 
 TEST(Mesh, MissingFileIsAClearError) {
   std::string e = error_of([] { load_mesh("no/such/mesh.gltf"); });
-  EXPECT_EQ(e, "cannot read mesh file 'no/such/mesh.gltf': no such file");
+  char cwd[4096];
+  ASSERT_NE(::getcwd(cwd, sizeof cwd), nullptr);
+  EXPECT_EQ(e, "cannot read mesh file 'no/such/mesh.gltf': no such file (relative to the working directory " +
+                   std::string(cwd) + ")");
   // Only regular files are read (/dev/zero used to be read until memory ran out).
   EXPECT_EQ(error_of([] { load_mesh("/dev/zero"); }), "cannot read mesh file '/dev/zero': not a regular file");
 }
