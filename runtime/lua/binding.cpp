@@ -101,7 +101,49 @@ void* test_type(lua_State* L, int idx, const char* type) {
   return same ? p : nullptr;
 }
 
+namespace {
+
+// The name under which package.loaded.shadenet (or a table of it: sn.lighting, sn.mesh, ...)
+// holds the function at idx, or "".
+std::string shadenet_name_of(lua_State* L, int idx) {
+  idx = absindex(L, idx);
+  const int top = lua_gettop(L);
+  std::string found;
+  lua_getfield(L, LUA_REGISTRYINDEX, "_LOADED");
+  lua_getfield(L, -1, "shadenet");
+  if (lua_istable(L, -1)) {
+    const int sn = lua_gettop(L);
+    lua_pushnil(L);
+    while (found.empty() && lua_next(L, sn)) {
+      if (lua_type(L, -2) == LUA_TSTRING) {
+        const std::string key = lua_tostring(L, -2);
+        if (lua_rawequal(L, -1, idx)) {
+          found = "sn." + key;
+        } else if (lua_istable(L, -1)) {
+          const int sub = lua_gettop(L);
+          lua_pushnil(L);
+          while (found.empty() && lua_next(L, sub)) {
+            if (lua_type(L, -2) == LUA_TSTRING && lua_rawequal(L, -1, idx))
+              found = "sn." + key + "." + lua_tostring(L, -2);
+            lua_pop(L, 1);
+          }
+        }
+      }
+      lua_pop(L, 1);
+    }
+  }
+  lua_settop(L, top);
+  return found;
+}
+
+}  // namespace
+
 std::string type_name_at(lua_State* L, int idx) {
+  // An object's constructor left uncalled (target = sn.lighting.phong): say how to call it.
+  if (lua_type(L, idx) == LUA_TFUNCTION) {
+    const std::string name = shadenet_name_of(L, idx);
+    if (!name.empty()) return "the function " + name + " (call it: " + name + " {...}, or " + name + " {} for its defaults)";
+  }
   if (lua_getmetatable(L, idx)) {
     lua_getfield(L, -1, "__name");
     if (lua_isstring(L, -1)) {

@@ -1,6 +1,7 @@
 // Shared by the bindings that take lighting models and lights (wrap_lighting.cpp,
 // wrap_lighting_define.cpp, wrap_scene.cpp).
 #pragma once
+#include <string>
 #include <vector>
 
 #include "lua/binding.h"
@@ -10,6 +11,9 @@
 namespace sn::lua {
 
 constexpr const char* kLightingType = "Lighting";
+
+// The lighting model at idx; otherwise an error naming `what` and what was given instead.
+shading::LightingParams& check_lighting(lua_State* L, int idx, const std::string& what);
 
 // A light from a table { dir = {x,y,z}, color = {r,g,b} } (either may be left out: the default's
 // is used); `what` names it in errors.

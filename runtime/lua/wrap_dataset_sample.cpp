@@ -38,9 +38,7 @@ int w_sample(lua_State* L) {
   data::SampleRequest r;
   int t = o.push("target");
   if (lua_isnil(L, t)) throw Error(o.where("target") + " is required (a lighting model, e.g. sn.lighting.ggx{})");
-  if (!test_type(L, t, kLightingType))
-    throw Error(o.where("target") + ": a lighting model (sn.lighting.*{...}) expected, got " + type_name_at(L, t));
-  r.target = check<shading::LightingParams>(L, t, kLightingType);
+  r.target = check_lighting(L, t, o.where("target"));
   lua_pop(L, 1);
   r.n = std::size_t(whole_number(o, "n", double(data::kThesisSamples), 2, double(data::kMaxSampleRows),
                                  "rows, training and validation together"));

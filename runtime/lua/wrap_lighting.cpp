@@ -28,6 +28,20 @@ void push_vec3(lua_State* L, const glm::dvec3& v) {
   }
 }
 
+LightingParams& check_lighting(lua_State* L, int idx, const std::string& what) {
+  if (!test_type(L, idx, kLightingType)) {
+    std::string got = type_name_at(L, idx);
+    if (lua_type(L, idx) == LUA_TSTRING) {  // a model's name: say how to make the model
+      const std::string name = lua_tostring(L, idx);
+      got = "the string '" + name + "'";
+      for (const auto& m : shading::models())
+        if (m->name == name) got += " (sn.lighting." + name + " {} makes that model, or sn.lighting.new(\"" + name + "\", {...}))";
+    }
+    throw Error(what + ": a lighting model (sn.lighting.*{...}) expected, got " + got);
+  }
+  return check<LightingParams>(L, idx, kLightingType);
+}
+
 Light check_light(lua_State* L, int idx, const char* what, const Light& def) {
   if (lua_isnoneornil(L, idx)) return def;
   Options o(L, idx, what, {"dir", "color"});
@@ -128,6 +142,11 @@ int w_index(lua_State* L) {
     if (m->name == name) {
       lua_pushstring(L, name.c_str());
       lua_pushcclosure(L, wrap<w_make>, 1);
+      // Kept, so sn.lighting.NAME is one function (an error can then name it when it is passed
+      // uncalled); it looks the model up by name when called, so a redefinition still applies.
+      lua_pushvalue(L, 2);
+      lua_pushvalue(L, -2);
+      lua_rawset(L, 1);
       return 1;
     }
   throw Error("unknown lighting model 'sn.lighting." + name + "' (valid: " + shading::model_names() +

@@ -291,7 +291,7 @@ int w_dataset(lua_State* L) {
   data::DatasetRequest r;
   int t = o.push("target");
   if (lua_isnil(L, t)) throw Error("scene:dataset option 'target' is required (a lighting model, e.g. sn.lighting.phong{})");
-  r.target = check<shading::LightingParams>(L, t, kLightingType);
+  r.target = check_lighting(L, t, o.where("target"));
   lua_pop(L, 1);
   if (o.has("inputs")) {
     int a = o.push("inputs");
@@ -486,7 +486,7 @@ int w_gb_tostring(lua_State* L) {
 // sn.render_truth(gbuffer, model [, light]) -> Image (RGBA, alpha = coverage)
 int w_render_truth(lua_State* L) {
   scene::GBuffer& g = gbuffer(L, 1);
-  auto& model = check<shading::LightingParams>(L, 2, kLightingType);
+  auto& model = check_lighting(L, 2, "sn.render_truth model");
   scene::Light light = check_light(L, 3, "sn.render_truth light");
   push(L, std::make_shared<io::Image>(shading::render_truth(g, model, light)), "Image");
   return 1;
