@@ -130,11 +130,13 @@ std::shared_ptr<Dataset> build_dataset(const scene::Scene& s, const DatasetReque
   }
   g_last_covered = covered;
   if (covered == 0)
-    throw std::invalid_argument("the dataset has no covered pixels: the mesh is outside every camera view (" +
+    throw std::invalid_argument("the dataset has no covered pixels: the mesh covers no pixel centre in any camera view (" +
                                 std::to_string(views.size()) + (views.size() == 1 ? " view" : " views") +
                                 (poses.size() > 1 ? " x " + std::to_string(poses.size()) + " poses" : "") + " of " +
                                 std::to_string(s.width) + "x" +
-                                std::to_string(s.height) + "); frame it with views = sn.orbit{...} or move the cameras");
+                                std::to_string(s.height) +
+                                "): it is outside them, or too small or flat (zero area) to cover a pixel; frame it "
+                                "with views = sn.orbit{...} or move the cameras");
 
   SplitMix rng{r.seed};
   std::vector<std::size_t> perm(covered);

@@ -406,8 +406,11 @@ class GltfLoader {
 
     if (mesh_.indices.empty())
       throw FileError(path_, "has no triangles (" + std::to_string(m_.meshes.size()) + " meshes, " +
-                                 std::to_string(primitives_seen_) + " primitives in the default scene; points and "
-                                 "lines are not drawn)");
+                                 std::to_string(primitives_seen_) + " primitives in the default scene" +
+                                 (placements_hidden_ ? ", " + std::to_string(placements_hidden_) +
+                                                           " mesh placements hidden by a node scaled to zero"
+                                                     : std::string()) +
+                                 "; points and lines are not drawn)");
     mesh_.has_normals = true;
     mesh_.has_uvs = primitives_with_uvs_ == primitives_used_;
     if (!mesh_.has_uvs) std::fill(mesh_.uvs.begin(), mesh_.uvs.end(), glm::vec2(0));
@@ -454,7 +457,10 @@ class GltfLoader {
     glm::dmat3 linear(world);
     double det = glm::determinant(linear);
     // A node scaled to zero hides its mesh; nothing of it would cover a pixel.
-    if (!(std::abs(det) > 1e-300)) return;
+    if (!(std::abs(det) > 1e-300)) {
+      ++placements_hidden_;
+      return;
+    }
     glm::dmat3 normal_matrix = glm::transpose(glm::inverse(linear));
     const auto& prims = m_.meshes[size_t(index)].primitives;
     for (size_t p = 0; p < prims.size(); ++p)
@@ -591,6 +597,7 @@ class GltfLoader {
   Mesh mesh_;
   std::set<int> on_path_;
   int texture_image_ = -1;
+  int placements_hidden_ = 0;  // meshes placed by a node whose transform is singular (scaled to zero)
   int primitives_seen_ = 0, primitives_used_ = 0, primitives_with_uvs_ = 0, primitives_with_tangents_ = 0;
   std::vector<glm::vec4> file_tangents_;
   std::size_t node_visits_ = 0;

@@ -1,4 +1,4 @@
--- expect: dataset_zero_covered\.lua:7: the dataset has no covered pixels: the mesh is outside every camera view \(1 view of 64x64\)
+-- expect: dataset_zero_covered\.lua:7: the dataset has no covered pixels: the mesh covers no pixel centre in any camera view \(1 view of 64x64\): it is outside them, or too small or flat \(zero area\) to cover a pixel
 local sn = require "shadenet"
 
 -- A camera that looks away from the mesh.

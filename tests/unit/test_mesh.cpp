@@ -460,6 +460,15 @@ TEST(Mesh, MalformedAccessorsIndicesAndNodesAreClearErrors) {
   p = raw_fixture(d / "points.gltf", tri, view, acc, R"({"attributes": {"POSITION": 0}, "mode": 0})");
   e = error_of([&] { load_mesh(p); });
   EXPECT_NE(e.find("points.gltf': has no triangles"), std::string::npos) << e;
+  EXPECT_EQ(e.find("scaled to zero"), std::string::npos) << e;
+
+  // Its only node scaled to zero: the mesh is hidden, and the error says why.
+  p = raw_fixture(d / "zero_scale.gltf", tri, view, acc, prim, R"([{"mesh": 0, "scale": [0, 0, 0]}])");
+  e = error_of([&] { load_mesh(p); });
+  EXPECT_NE(e.find("zero_scale.gltf': has no triangles (1 meshes, 0 primitives in the default scene, 1 mesh "
+                   "placements hidden by a node scaled to zero;"),
+            std::string::npos)
+      << e;
 
   // A NaN position.
   auto nan_tri = float_bytes({0, 0, 0, std::nanf(""), 0, 0, 0, 1, 0});
