@@ -20,4 +20,31 @@ require "shadenet.live"  -- sn.keep, sn.live.*, sn.record
 require "shadenet.scene"  -- scene:render
 require "shadenet.vec3"  -- sn.vec3 (for lighting twins)
 
+-- Reading a name shadenet does not have (sn.tain, or sn.mse for sn.image.mse) is an error naming
+-- it and what is near, where the script reads it, instead of "attempt to call a nil value" (or a
+-- nil passed on). rawget(sn, name) tests for a name without the error.
+local function distance(a, b)  -- edits between two short names (Levenshtein)
+  local prev = {}
+  for j = 0, #b do prev[j] = j end
+  for i = 1, #a do
+    local cur = { [0] = i }
+    for j = 1, #b do
+      cur[j] = math.min(prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (a:byte(i) == b:byte(j) and 0 or 1))
+    end
+    prev = cur
+  end
+  return prev[#b]
+end
+setmetatable(sn, { __index = function(_, name)
+  if type(name) ~= "string" then return nil end
+  local near = {}
+  for k, v in pairs(sn) do
+    if type(k) == "string" and distance(k, name) <= math.max(1, math.floor(#name / 4)) then near[#near + 1] = "sn." .. k end
+    if type(v) == "table" and type(k) == "string" and rawget(v, name) ~= nil then near[#near + 1] = "sn." .. k .. "." .. name end
+  end
+  table.sort(near)
+  error("sn." .. name .. " is not part of shadenet" .. (#near > 0 and " (did you mean " .. table.concat(near, ", ") .. "?)" or
+        " (the API: docs/lua-api.md)"), 2)
+end })
+
 return sn

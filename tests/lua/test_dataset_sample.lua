@@ -94,7 +94,9 @@ local function refuses(options, pattern)
 end
 local builds = sn.dataset_stats().builds
 refuses({ n = 100 }, "sn.dataset.sample option 'target' is required")
-refuses({ target = "ggx" }, "option 'target': a lighting model (sn.lighting.*{...}) expected, got string")
+refuses({ target = "ggx" }, "option 'target': a lighting model (sn.lighting.*{...}) expected, got the string 'ggx' "
+                            .. "(sn.lighting.ggx {} makes that model")
+refuses({ target = 3 }, "option 'target': a lighting model (sn.lighting.*{...}) expected, got number")
 refuses({ target = ggx, normals = "cube" }, "unknown normals domain 'cube' (valid: sphere, hemisphere, lit)")
 refuses({ target = ggx, views = "sphere" }, "unknown views domain 'sphere' (valid: uniform, cosine)")
 refuses({ target = ggx, n = 1 }, "option 'n' must be a whole number in 2..16777216")
