@@ -46,8 +46,6 @@ struct FileError : std::runtime_error {
 // a non-negative integer where it appears.
 class IntegerCheck : public nlohmann::json::json_sax_t {
  public:
-  explicit IntegerCheck(const std::string& path) : path_(path) {}
-
   bool null() override { return scalar("null"); }
   bool boolean(bool v) override { return scalar(v ? "true" : "false"); }
   bool number_integer(number_integer_t v) override { return v >= 0 ? fine() : scalar(std::to_string(v)); }
@@ -152,7 +150,6 @@ class IntegerCheck : public nlohmann::json::json_sax_t {
     return false;
   }
 
-  const std::string& path_;
   std::vector<Frame> stack_;
   std::string problem_;
 };
@@ -160,7 +157,7 @@ class IntegerCheck : public nlohmann::json::json_sax_t {
 // Throws naming the first property of `json` (the file's JSON text or a .glb's JSON chunk) that
 // glTF requires to be a non-negative integer and is not.
 void check_integers(const char* json, std::size_t size, const std::string& path) {
-  IntegerCheck check(path);
+  IntegerCheck check;
   nlohmann::json::sax_parse(json, json + size, &check, nlohmann::json::input_format_t::json, false);
   if (!check.problem().empty()) throw FileError(path, check.problem());
 }
