@@ -30,8 +30,10 @@ void push_vec3(lua_State* L, const glm::dvec3& v) {
 
 LightingParams& check_lighting(lua_State* L, int idx, const std::string& what) {
   if (!test_type(L, idx, kLightingType)) {
-    std::string got = type_name_at(L, idx);
-    if (lua_type(L, idx) == LUA_TSTRING) {  // a model's name: say how to make the model
+    std::string got;
+    if (lua_type(L, idx) != LUA_TSTRING) {
+      got = type_name_at(L, idx);
+    } else {  // a model's name: say how to make the model
       const std::string name = lua_tostring(L, idx);
       got = "the string '" + name + "'";
       for (const auto& m : shading::models())
