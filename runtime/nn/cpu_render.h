@@ -52,4 +52,22 @@ void read_gbuffer(const scene::GBuffer& g, const std::vector<std::string>& attri
 std::size_t cpu_render(const Mlp& net, const scene::GBuffer& g, const GBufferTexels& texels, const RenderInputs& inputs,
                        io::Image& out, CpuLayout layout = CpuLayout::image);
 
+// A view's covered pixels with a network's first-layer inputs there, gathered once: every
+// network that reads the G-buffer the same way (same_inputs) renders from it without scanning
+// and gathering again (nn/render_errors.cpp scores hundreds of networks per view). For
+// CpuLayout::image.
+struct CoveredInputs {
+  std::size_t count = 0;         // covered pixels
+  int first = 0;                 // what the first layer reads per pixel (encoded when the net encodes)
+  std::vector<std::size_t> dst;  // each covered pixel's place in the image (rows top first)
+  std::vector<float> alpha;      // and its coverage
+  std::vector<float> x;          // the first layer's inputs in CpuNet::forward_lanes' layout, whole blocks
+};
+CoveredInputs covered_inputs(const MlpSpec& spec, const scene::GBuffer& g, const GBufferTexels& texels,
+                             const RenderInputs& inputs);
+// Whether two networks read a G-buffer the same way, so one CoveredInputs serves both.
+bool same_inputs(const MlpSpec& a, const RenderInputs& ia, const MlpSpec& b, const RenderInputs& ib);
+// cpu_render from gathered inputs: the same image, to the bit.
+std::size_t cpu_render(const Mlp& net, const scene::GBuffer& g, const CoveredInputs& covered, io::Image& out);
+
 }  // namespace sn::nn

@@ -49,9 +49,12 @@ std::vector<RenderError> render_errors(const std::vector<std::shared_ptr<const M
   std::vector<io::SsimReference> references;
   for (const TruthView& v : views) references.push_back(io::ssim_reference(*v.truth, 3, v.truth));
 
-  // Every attachment a cpu network reads, read back once per view.
+  // Every attachment a cpu network reads, read back once per view, and its covered pixels'
+  // inputs gathered once for each way of reading them (covered[gathered[at]]).
   std::vector<GBufferTexels> texels(nv);
   std::vector<std::size_t> cpu_units;  // i * nv + k
+  std::vector<CoveredInputs> covered;
+  std::vector<std::size_t> gathered(nets.size() * nv);
   for (std::size_t k = 0; k < nv; ++k) {
     std::vector<std::string> read;
     for (std::size_t i = 0; i < nets.size(); ++i) {
@@ -61,11 +64,25 @@ std::vector<RenderError> render_errors(const std::vector<std::shared_ptr<const M
         if (std::find(read.begin(), read.end(), a) == read.end()) read.push_back(a);
     }
     read_gbuffer(*views[k].gbuffer, read, texels[k]);
+    std::vector<std::size_t> readers;  // the first unit of each way, i * nv + k
+    for (std::size_t i = 0; i < nets.size(); ++i) {
+      if (!on_cpu[i]) continue;
+      const std::size_t at = i * nv + k;
+      std::size_t r = 0;
+      while (r < readers.size() && !same_inputs(nets[readers[r] / nv]->spec, inputs[readers[r]], nets[i]->spec, inputs[at])) ++r;
+      if (r == readers.size()) {
+        readers.push_back(at);
+        gathered[at] = covered.size();
+        covered.push_back(covered_inputs(nets[i]->spec, *views[k].gbuffer, texels[k], inputs[at]));
+      } else {
+        gathered[at] = gathered[readers[r]];
+      }
+    }
   }
   io::parallel_for(int(cpu_units.size()), io::default_threads(), [&](int u) {
     const std::size_t at = cpu_units[std::size_t(u)], i = at / nv, k = at % nv;
     io::Image mine;
-    const std::size_t bad = cpu_render(*nets[i], *views[k].gbuffer, texels[k], inputs[at], mine);
+    const std::size_t bad = cpu_render(*nets[i], *views[k].gbuffer, covered[gathered[at]], mine);
     errors[at] = score(std::move(mine), *views[k].truth, references[k], bad);
   });
 

@@ -1,9 +1,9 @@
 // How far networks' renders lie from ground-truth images, as a display shows them: each render
 // clamped to [0, 1], then the image MSE over the truth's covered pixels and the masked SSIM, of
 // RGB (the unseen-mesh columns of the experiments, scripts/lib/experiment.lua). Many networks
-// over the same views in one call: each G-buffer is read back once, and the (network, view)
-// pairs run on all threads, each pair on one, so every number is the one a single render,
-// clamp, MSE and SSIM give.
+// over the same views in one call: each G-buffer is read back once, its covered pixels' inputs
+// gathered once per way networks read them, and the (network, view) pairs run on all threads,
+// each pair on one, so every number is the one a single render, clamp, MSE and SSIM give.
 #pragma once
 #include <cstddef>
 #include <memory>

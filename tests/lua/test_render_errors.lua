@@ -24,6 +24,8 @@ local nets = {
   sn.mlp { inputs = { "view", "normal" }, hidden = { 4 }, outputs = 3, seed = 3, activation = "relu" },
   sn.mlp { inputs = attrs, hidden = { 8 }, outputs = 3, seed = 4, activation = "softsign_e" },  -- gl only
   sn.mlp { inputs = attrs, hidden = { 6 }, outputs = 3, seed = 5, output_activation = "exponential" },
+  -- nets[1]'s inputs encoded: the same G-buffer reads, other first-layer inputs
+  sn.mlp { inputs = attrs, hidden = { 8, 8 }, outputs = 3, seed = 6, encoding = { view = { "frequency", bands = 2 } } },
 }
 nets[5].layers[2].bias = { 0, 200, 0 }  -- exp(200) overflows: infinite green on every covered pixel
 
