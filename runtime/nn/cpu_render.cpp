@@ -149,7 +149,7 @@ class InputGather {
 // The forward pass over the blocks of x that hold n pixels, and their colours into base +
 // dst[k] * 4: RGB from the network's colour space, alpha[k]. Returns how many came out NaN or
 // infinite. y: room for the blocks' outputs (at most kChunkBlocks).
-std::size_t shade(CpuNet& cpu, const float* x, std::size_t n, const std::size_t* dst, const float* alpha, float* y, float* base) {
+std::size_t shade(CpuNet& cpu, const float* x, std::size_t n, const uint32_t* dst, const float* alpha, float* y, float* base) {
   const shading::ColorSpace color = cpu.spec().color;
   cpu.forward_lanes(x, (n + kLanes - 1) / kLanes, y);
   std::size_t bad = 0;
@@ -162,7 +162,7 @@ std::size_t shade(CpuNet& cpu, const float* x, std::size_t n, const std::size_t*
     }
     // One test per pixel; the three only when the sum is not finite (an overflow or a bad one).
     bad += !std::isfinite(c0 + c1 + c2) && !(std::isfinite(c0) && std::isfinite(c1) && std::isfinite(c2));
-    float* o = base + dst[k] * 4;
+    float* o = base + std::size_t(dst[k]) * 4;
     o[0] = c0, o[1] = c1, o[2] = c2, o[3] = alpha[k];
   }
   return bad;
@@ -216,7 +216,7 @@ std::size_t cpu_render(const Mlp& net, const scene::GBuffer& g, const GBufferTex
     std::vector<float> x(std::size_t(kChunkBlocks) * kLanes * std::size_t(net.spec.width(0)));
     std::vector<float> y(std::size_t(kChunkBlocks) * kLanes * 3), alpha(std::size_t(kChunkBlocks) * kLanes);
     std::vector<uint32_t> pix(std::size_t(kChunkBlocks) * kLanes);  // box texel per lane
-    std::vector<std::size_t> dst(pix.size());                        // output pixel per lane
+    std::vector<uint32_t> dst(pix.size());                           // output pixel per lane
     std::size_t bad_here = 0;
     auto flush = [&](std::size_t n) {
       const std::size_t blocks = (n + kLanes - 1) / kLanes;
@@ -235,7 +235,7 @@ std::size_t cpu_render(const Mlp& net, const scene::GBuffer& g, const GBufferTex
           // What the fragment shader tests: NaN coverage is uncovered too.
           if (!(cov[std::size_t(xx) * 4] > 0.0f)) continue;
           pix[n] = uint32_t(row + std::size_t(xx));
-          dst[n] = dst_of(xx, yy);
+          dst[n] = uint32_t(dst_of(xx, yy));
           alpha[n] = cov[std::size_t(xx) * 4];
           if (++n == pix.size()) flush(n), n = 0;
         }
@@ -264,7 +264,7 @@ CoveredInputs covered_inputs(const MlpSpec& spec, const scene::GBuffer& g, const
       const float cov = coverage[(row + std::size_t(xx)) * 4];
       if (!(cov > 0.0f)) continue;
       pix.push_back(uint32_t(row + std::size_t(xx)));
-      c.dst.push_back(to + std::size_t(xx));
+      c.dst.push_back(uint32_t(to + std::size_t(xx)));
       c.alpha.push_back(cov);
     }
   }

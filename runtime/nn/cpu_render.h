@@ -7,6 +7,7 @@
 // fragment shader writes, within 1e-5 per channel.
 #pragma once
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -55,11 +56,11 @@ std::size_t cpu_render(const Mlp& net, const scene::GBuffer& g, const GBufferTex
 // A view's covered pixels with a network's first-layer inputs there, gathered once: every
 // network that reads the G-buffer the same way (same_inputs) renders from it without scanning
 // and gathering again (nn/render_errors.cpp scores hundreds of networks per view). For
-// CpuLayout::image.
+// CpuLayout::image. It holds 8 + 4 x (first-layer inputs) bytes per covered pixel.
 struct CoveredInputs {
   std::size_t count = 0;         // covered pixels
   int first = 0;                 // what the first layer reads per pixel (encoded when the net encodes)
-  std::vector<std::size_t> dst;  // each covered pixel's place in the image (rows top first)
+  std::vector<uint32_t> dst;     // each covered pixel's place in the image (rows top first)
   std::vector<float> alpha;      // and its coverage
   std::vector<float> x;          // the first layer's inputs in CpuNet::forward_lanes' layout, whole blocks
 };
