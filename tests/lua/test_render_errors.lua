@@ -68,6 +68,26 @@ end, "'nets': element 2 is string, not an Mlp")
 expect.fails(function()
   sn.render_errors { nets = nets, views = { { gbuffer = views[1].gbuffer } } }
 end, "element 1: 'truth' must be an Image, got nil")
+-- Two copies of a conditioned network, each rendering at its own value: the inputs differ only
+-- in that value, and each pair's error is the one its own render gives.
+local sphere_ggx = sphere:dataset { target = sn.lighting.ggx {}, vary = { roughness = { 0.1, 0.8 } },
+                                    inputs = { "normal", "view", "roughness" }, samples = 2000 }
+local twins = {}
+for t = 1, 2 do
+  twins[t] = sn.mlp { inputs = 7, hidden = { 8 }, seed = 7 }
+  sn.train { nets = { twins[t] }, data = sphere_ggx, epochs = 1, batch = 8 }
+end
+twins[1]:set_input("roughness", 0.2)
+twins[2]:set_input("roughness", 0.7)
+local sphere_view = { gbuffer = sphere:gbuffer { view = 1, attributes = { "normal", "view" } },
+                      truth = sphere:render(sn.lighting.ggx {}, { view = 1 }) }
+local e3 = sn.render_errors { nets = twins, views = { sphere_view } }
+for t = 1, 2 do
+  local mine = sn.image.clamp(twins[t]:render(sphere_view.gbuffer))
+  assert(e3[t][1].mse == sn.image.mse(sphere_view.truth, mine, { channels = 3, mask = sphere_view.truth }))
+end
+assert(e3[1][1].mse ~= e3[2][1].mse, "the condition's value reaches the render")
+
 local positional = sn.mlp { inputs = { "position", "normal" }, hidden = { 4 }, outputs = 3, seed = 6 }
 expect.fails(function()
   sn.render_errors { nets = { positional }, views = views }
