@@ -1,0 +1,61 @@
+-- The steps of Table 4.1's sweep outside the training, each as the table runs it: building its
+-- dataset (the posed cloth, 120 views of 640 x 480, 64,149 rows; a new seed per repeat, so the
+-- cache builds anew) and scoring networks of its 36 shapes on the unseen meshes (15 views of
+-- 160 x 120, `sn.render_errors` through E:unseen_errors; untrained networks cost what trained
+-- ones do).
+--
+--   shadenet bench/sweep_steps.lua [repeats] [seeds]
+--     repeats: timings per step; the median is printed (default 5)
+--     seeds:   networks per shape scored in one call (default 3: 108 networks; the table's 10: 360)
+--
+-- Run from the repository root (the unseen meshes' paths are relative to it). Times are
+-- sn.clock() (wall clock) around one call; "load" is the 1-minute load average before the
+-- step's first run.
+local sn = require "shadenet"
+package.path = (arg[0]:match("^(.*)/[^/]*$") or ".") .. "/../scripts/?.lua;" .. package.path
+local exp = require "lib.experiment"
+local results = require "lib.results"
+local thesis = require "lib.thesis"
+
+local repeats = tonumber(arg[1] or "5")
+local seeds = tonumber(arg[2] or "3")
+local out = os.tmpname()
+os.remove(out)
+local E = exp.start("sweep_steps", { "--out", out })
+local desc = E:data_desc { model = "phong" }
+local scene = E:scene(desc.scene)
+local nets = {}
+for s = 1, seeds do
+  for _, layers in ipairs(thesis.sizes) do
+    for _, width in ipairs(thesis.sizes) do
+      nets[#nets + 1] = sn.mlp { inputs = desc.inputs, hidden = exp.rep(width, layers), seed = s }
+    end
+  end
+end
+E:unseen_errors(nets, desc)  -- the unseen scenes, their G-buffers and truths: built once, as in the table
+
+local function median(t)
+  table.sort(t)
+  local n = #t
+  return n % 2 == 1 and t[(n + 1) / 2] or (t[n / 2] + t[n / 2 + 1]) / 2
+end
+local function bench(name, f)
+  local l = results.load_average()
+  local times = {}
+  for i = 1, repeats do
+    collectgarbage()
+    local t0 = sn.clock()
+    f(i)
+    times[i] = sn.clock() - t0
+  end
+  local lo, hi = math.min(unpack(times)), math.max(unpack(times))
+  print(("%-44s %9.3f %9.3f %9.3f %6s"):format(name, median(times), lo, hi, l and ("%.2f"):format(l[1]) or "?"))
+end
+
+print(("%-44s %9s %9s %9s %6s"):format("step (" .. repeats .. " repeats)", "median s", "min s", "max s", "load"))
+bench("dataset (64,149 rows of 120 views)", function(i)
+  scene:dataset { inputs = desc.inputs, target = exp.model(desc.model), color = desc.color, samples = desc.samples,
+                  split = desc.split, seed = 1000 + i }
+end)
+bench(("unseen-mesh errors (%d networks x 15 views)"):format(#nets), function() E:unseen_errors(nets, desc) end)
+os.execute("rm -rf '" .. out .. "'")
