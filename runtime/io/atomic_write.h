@@ -15,9 +15,9 @@ void write_file_atomic(const std::string& path, const std::string& bytes, const 
 // Many files (path, bytes) at once, each as write_file_atomic writes one, but flushed to the disk
 // together: every temporary file is written, then one syncfs per file system, then each is
 // renamed. An experiment's hundreds of run records cost one flush instead of one each (360
-// records of 3 KB: 0.07-0.08 s, against 0.12-0.15 s with an fsync each; docs/performance.md). A failure before the renames leaves every old file as it was; one during
-// them (rare: the folder removed meanwhile) leaves the files before it new and the rest old,
-// each whole.
+// records of 3 KB: 0.07-0.08 s, against 0.12-0.15 s with an fsync each; docs/performance.md).
+// A failure before the renames leaves every old file as it was; one during them (rare: the
+// folder removed meanwhile) leaves the files before it new and the rest old, each whole.
 void write_files_atomic(const std::vector<std::pair<std::string, std::string>>& files, const std::string& what = "file");
 
 }  // namespace sn::io

@@ -301,7 +301,7 @@ void push_counts(lua_State* L, const shading::StressCounts& c) {
 // sn.lighting.stress(model [, {light, ...}]) -> { samples, gpu = {nan, inf, negative, over},
 //   twin = {...}, encoded_nan, encoded_out_of_range, max_raw, failures }
 int w_stress(lua_State* L) {
-  const LightingParams& p = check<LightingParams>(L, 1, kLightingType);
+  const LightingParams& p = check_lighting(L, 1, "sn.lighting.stress model");
   auto r = shading::stress_test(p, check_lights(L, 2, "sn.lighting.stress"));
   lua_createtable(L, 0, 8);
   lua_pushinteger(L, lua_Integer(r.samples)), lua_setfield(L, -2, "samples");

@@ -229,7 +229,7 @@ int w_define(lua_State* L) {
 
 // sn.lighting.check(model [, lights]) -> { max_difference, compared, skipped, worst = {...} }
 int w_check(lua_State* L) {
-  const auto& p = check<shading::LightingParams>(L, 1, kLightingType);
+  const auto& p = check_lighting(L, 1, "sn.lighting.check model");
   auto c = shading::check_twin(p, check_lights(L, 2, "sn.lighting.check"));
   lua_createtable(L, 0, 4);
   lua_pushnumber(L, c.max_difference), lua_setfield(L, -2, "max_difference");

@@ -1,7 +1,8 @@
 // A mesh's base-colour texture: none, an image, or a file's encoded bytes decoded on first read.
 // Loading a textured glTF file does not decode its texture: decoding loads OpenImageIO's module
 // (io/image_codec.h; Table 4.1's scene step took 0.24-0.64 s with it, 0.006-0.009 s without), and
-// most uses of a mesh (a G-buffer of normals and views, a network's render) never sample it. Copies share one decoded image, decoded at most once.
+// most uses of a mesh (a G-buffer of normals and views, a network's render) never sample it.
+// Copies share one decoded image, decoded at most once.
 #pragma once
 #include <memory>
 #include <string>
