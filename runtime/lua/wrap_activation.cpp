@@ -11,7 +11,8 @@ namespace sn::lua {
 namespace {
 
 // A Lua function as a double twin, called on the Lua thread of the binding running now (never a
-// coroutine that defined it and may have ended; the cpu backend refuses custom activations).
+// coroutine that defined it and may have ended; the cpu backend runs the translated GLSL, never
+// the twins).
 std::function<double(double, double)> lua_twin(lua_State* defined_on, int ref, const std::string& what) {
   return [defined_on, ref, what](double z, double) {
     lua_State* L = running_state(defined_on);

@@ -82,6 +82,16 @@ const ActivationDef& activation_def(Activation a) {
 
 const char* activation_name(Activation a) { return activation_def(a).name.c_str(); }
 
+bool activation_has_cpu_code(Activation a) {
+  const ActivationDef& d = activation_def(a);
+  return d.simd >= 0 || d.cpu_f;
+}
+
+std::string activation_without_cpu_code(Activation a) {
+  const ActivationDef& d = activation_def(a);
+  return "activation '" + d.name + "' is a definition without cpu code" + (d.cpu_missing.empty() ? "" : " (" + d.cpu_missing + ")");
+}
+
 bool find_activation(const std::string& name, Activation* out) {
   const int at = lookup(registry(), name);
   if (at < 0) return false;

@@ -8,10 +8,13 @@
 // MlpSpec holds its value under the parameter's name.
 #pragma once
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace sn::nn {
+
+struct ActivationExpr;
 
 // A registered activation, by its index in the registry. The built-ins have fixed ids.
 struct Activation {
@@ -58,6 +61,11 @@ struct ActivationDef {
   std::string origin;  // where errors in the GLSL point: "built-in", or "script.lua:12"
   std::function<double(double z, double p)> f, df;  // double twins
   int simd = -1;  // Builtin id of its SIMD code in the cpu backend; -1: none
+  // A user's definition on the cpu backend, translated by define_activation (nn/activation_expr.h):
+  // glsl alone (inference), and glsl with grad (training); null where they do not translate, and
+  // cpu_missing says why.
+  std::shared_ptr<const ActivationExpr> cpu_f, cpu_both;
+  std::string cpu_missing;
 };
 
 // Registers a definition (its name and aliases must be new, or name an earlier user definition,
@@ -65,6 +73,10 @@ struct ActivationDef {
 Activation register_activation(ActivationDef def);
 const ActivationDef& activation_def(Activation a);
 const char* activation_name(Activation a);
+// Whether the cpu backend runs `a` (its SIMD code, or its translated GLSL); if not, why:
+// "activation 'NAME' is a definition without cpu code (REASON)".
+bool activation_has_cpu_code(Activation a);
+std::string activation_without_cpu_code(Activation a);
 
 enum class Position { hidden, output };
 // The activation called `name` valid in `position`; throws listing exactly the names valid there

@@ -10,6 +10,8 @@
 #include "gl/buffer.h"
 #include "gl/program.h"
 #include "io/text.h"
+#include "nn/activation_expr.h"
+#include "nn/cpu_net.h"
 
 namespace sn::nn {
 
@@ -81,12 +83,53 @@ void check_glsl(const ActivationDef& d) {
   }
 }
 
+// The cpu backend's code: glsl and grad translated (nn/activation_expr.h) and held to the twins
+// at the GLSL's points and tolerance. One that does not translate, or disagrees, runs on gl only;
+// cpu_missing says why.
+void translate_for_cpu(ActivationDef& d) {
+  std::shared_ptr<const ActivationExpr> f, both;
+  const std::pair<const char*, const std::string*> parts[] = {{"glsl", &d.glsl}, {"grad", &d.grad}};
+  try {
+    for (const auto& [what, text] : parts) {  // each alone first: an error names its part
+      try {
+        auto e = std::make_shared<const ActivationExpr>(translate_activation(*text));
+        if (!f) f = std::move(e);
+      } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(std::string("its ") + what + ", " + e.what());
+      }
+    }
+    both = std::make_shared<const ActivationExpr>(translate_activation(d.glsl, d.grad));
+  } catch (const std::invalid_argument& e) {
+    d.cpu_missing = e.what();
+    return;
+  }
+  const std::vector<double> zd = sample_points();
+  const std::vector<float> z(zd.begin(), zd.end());
+  std::vector<float> alone(z.size()), with_f(z.size()), with_df(z.size());
+  cpu_translated(*f, 0.0f, z.data(), z.size(), alone.data());
+  cpu_translated(*both, 0.0f, z.data(), z.size(), with_f.data(), with_df.data());
+  auto agrees = [&](const char* what, const std::vector<float>& got, bool grad) {
+    for (std::size_t k = 0; k < z.size(); ++k) {
+      const double want = grad ? d.df(zd[k], 0.0) : d.f(zd[k], 0.0);
+      if (!(std::fabs(double(got[k]) - want) <= 1e-4 * (1 + std::fabs(want)))) {
+        d.cpu_missing = std::string("its ") + what + " translated for the cpu backend gives " + io::number_text(got[k]) +
+                        " at " + io::number_text(zd[k]) + ", its Lua twin " + io::number_text(want);
+        return false;
+      }
+    }
+    return true;
+  };
+  if (agrees("glsl", alone, false) && agrees("glsl", with_f, false) && agrees("grad", with_df, true))
+    d.cpu_f = std::move(f), d.cpu_both = std::move(both);
+}
+
 }  // namespace
 
 Activation define_activation(ActivationDef def) {
   def.simd = -1;
   check_twins(def);
   check_glsl(def);
+  translate_for_cpu(def);
   return register_activation(std::move(def));
 }
 

@@ -4,7 +4,9 @@
 //    differences of f;
 //  - the GLSL of f and of f' compiles (errors name `def.origin` and the line within that text) and
 //    agrees with the twins at the same points.
-// Custom activations have no SIMD code: the cpu backend refuses them, naming backend = "gl".
+// Then the GLSL is translated for the cpu backend (nn/activation_expr.h) and held to the twins
+// at the same points; where it does not translate or agree, the definition runs on gl only, and
+// the cpu backend refuses it, saying why and naming backend = "gl".
 #pragma once
 #include "nn/activation.h"
 

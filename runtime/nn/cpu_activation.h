@@ -112,7 +112,7 @@ SN_INLINE V vexp(const V& in) {
   return select(over, splat<V>(__builtin_inff()), y);
 }
 
-// log(1 + u) for u in [0, 1] as 2 atanh(s), s = u / (2 + u) in [0, 1/3]: an odd series whose
+// log(1 + u) for u in [-0.3, 1] as 2 atanh(s), s = u / (2 + u) in [-0.18, 1/3]: an odd series whose
 // terms past s^13 are below 1e-8, exact near u = 0 (no cancellation).
 template <class V>
 SN_INLINE V vlog1p_unit(const V& u) {
@@ -124,6 +124,24 @@ SN_INLINE V vlog1p_unit(const V& u) {
   p = p * s2 + (1.0f / 3);
   p = p * s2 + 1.0f;
   return 2.0f * s * p;
+}
+
+// log x as x = m 2^e with m in [sqrt(1/2), sqrt(2)): log m = log(1 + u) by the series above (its
+// s = u / (2 + u) stays within 0.18, and there is no cancellation near x = 1), plus e ln 2 in two
+// parts. 0 gives -inf (denormals too: the kernels flush them), x < 0 and NaN give NaN, inf inf.
+template <class V>
+SN_INLINE V vlog(const V& x) {
+  using I = mask_of<V>;
+  const I bits = (I)x;
+  I e = ((bits >> 23) & 255) - 127;
+  V m = (V)((bits & 0x7fffff) | 0x3f800000);  // [1, 2)
+  const I big = m > 1.41421356f;  // -1 where true
+  m = select(big, m * 0.5f, m);
+  e -= big;
+  const V fe = __builtin_convertvector(e, V);
+  const V y = (vlog1p_unit(m - 1.0f) + fe * -2.12194440e-4f) + fe * 0.693359375f;
+  const V special = select(x == 0.0f, splat<V>(-__builtin_inff()), splat<V>(__builtin_nanf("")));
+  return select(x == __builtin_inff(), x, select(x > 0.0f, y, special));
 }
 
 // sin x and cos x: x - n pi/2 in three parts (Cody-Waite), then the Cephes polynomials on
@@ -148,6 +166,23 @@ SN_INLINE void vsincos(const V& x, V& s_out, V& c_out) {
   const V sx = select(odd, c, s), cx = select(odd, -s, c);
   s_out = select((q & 2) != 0, -sx, sx);
   c_out = select((q & 2) != 0, -cx, cx);
+}
+
+// atan x (Cephes' atanf): |x| reduced to [0, tan(pi/8)] by pi/2 - atan(1/x) or pi/4 + atan((x - 1)
+// / (x + 1)), then an odd polynomial; relative error ~2e-7. +-inf gives +-pi/2, NaN NaN.
+template <class V>
+SN_INLINE V vatan(const V& in) {
+  const mask_of<V> negative = in < 0.0f;
+  V x = select(negative, -in, in);
+  const mask_of<V> far = x > 2.414213562373095f, mid = (x > 0.4142135623730950f) & ~far;
+  const V y0 = select(far, splat<V>(1.5707963267948966f), select(mid, splat<V>(0.7853981633974483f), splat<V>(0.0f)));
+  x = select(far, -1.0f / x, select(mid, (x - 1.0f) / (x + 1.0f), x));
+  const V z = x * x;
+  V y = z * 8.05374449538e-2f - 1.38776856032e-1f;
+  y = y * z + 1.99777106478e-1f;
+  y = y * z - 3.33329491539e-1f;
+  y = y * z * x + x + y0;
+  return select(negative, -y, y);
 }
 
 // The logistic function two ways: through fast_tanh (absolute error 5e-7; sigmoid's own, as

@@ -16,6 +16,7 @@
 #include <new>
 
 #include "nn/cpu_activation.h"
+#include "nn/cpu_expr.h"
 
 namespace sn::nn {
 
@@ -50,16 +51,23 @@ struct CpuNet::Layout {
   // o_dz: f'(z) of every unit, same offsets as the activations (stored by a training forward
   // pass for hidden kinds that need z, and for the output layer).
   std::size_t o_dz = 0, o_at = 0, o_d[2] = {}, o_t = 0, scratch = 0;  // o_t: a block's targets
-  int hidden = int(Builtin::tanh), output = int(Builtin::linear);  // Builtin ids (SIMD code)
+  // Builtin ids (their SIMD code), or kTranslated: a user's definition, whose translated f, and
+  // f with f', are held here (so that redefining the name cannot pull them from a running kernel).
+  int hidden = int(Builtin::tanh), output = int(Builtin::linear);
+  std::shared_ptr<const ActivationExpr> hf, hb, of, ob;
   float hp = 0, op = 0;  // their parameters
 
   explicit Layout(const MlpSpec& s) {
     L = s.layers();
-    hidden = activation_def(s.activation).simd;
-    output = activation_def(s.output_activation).simd;
-    if (hidden < 0 || output < 0)
-      throw std::invalid_argument("activation '" + std::string(activation_name(hidden < 0 ? s.activation : s.output_activation)) +
-                                  "' has no cpu code: train it with backend = \"gl\"");
+    auto kind = [](Activation a, std::shared_ptr<const ActivationExpr>& f, std::shared_ptr<const ActivationExpr>& both) {
+      const ActivationDef& d = activation_def(a);
+      if (d.simd >= 0) return d.simd;
+      if (!d.cpu_f) throw std::invalid_argument(activation_without_cpu_code(a) + ": train it with backend = \"gl\"");
+      f = d.cpu_f, both = d.cpu_both;
+      return kTranslated;
+    };
+    hidden = kind(s.activation, hf, hb);
+    output = kind(s.output_activation, of, ob);
     hp = float(s.param(s.activation));
     op = float(s.param(s.output_activation));
     maxw = s.max_width();
@@ -403,6 +411,34 @@ SN_INLINE void load_block(const View<Mode>& V, const float* const mb[], int b) {
   for (int o = 0; o < out; ++o) t[o] = lanes(in + o);
 }
 
+// A translated activation over n floats (nn/cpu_expr.h), compiled once per instruction set and
+// called by the kernels of that set: out[i] = f(in[i]), and grad[i] = f'(in[i]) when given.
+using ExprFn = void (*)(const ActivationExpr&, float, const float*, std::size_t, float*, float*);
+void expr_sse2(const ActivationExpr& e, float p, const float* in, std::size_t n, float* out, float* grad) {
+  run_expr(e, p, reinterpret_cast<const v8*>(in), n / 8, reinterpret_cast<v8*>(out), reinterpret_cast<v8*>(grad));
+}
+__attribute__((target("avx2,fma"))) void expr_avx2(const ActivationExpr& e, float p, const float* in, std::size_t n, float* out,
+                                                   float* grad) {
+  run_expr(e, p, reinterpret_cast<const v8*>(in), n / 8, reinterpret_cast<v8*>(out), reinterpret_cast<v8*>(grad));
+}
+#define SN_AVX512 __attribute__((target("avx512f,avx512vl,avx512dq,avx512bw,avx2,fma")))
+SN_AVX512 void expr_avx512(const ActivationExpr& e, float p, const float* in, std::size_t n, float* out, float* grad) {
+  run_expr(e, p, reinterpret_cast<const v16*>(in), n / 16, reinterpret_cast<v16*>(out), reinterpret_cast<v16*>(grad));
+}
+
+// A layer's `units` vectors through a translated activation, in place: f alone, or (g given)
+// f and f'(z) into g from the program translated with the derivative.
+template <class Mode>
+SN_INLINE void translated(const ActivationExpr& f, const ActivationExpr& both, float p, typename Mode::V* z, int units,
+                          typename Mode::V* g) {
+  const std::size_t n = std::size_t(units) * kLanesOf<Mode>;
+  ExprFn run = expr_avx512;
+  if constexpr (std::is_same_v<Mode, One>) run = expr_sse2;
+  else if constexpr (std::is_same_v<Mode, OneAvx>) run = expr_avx2;
+  float* zf = reinterpret_cast<float*>(z);
+  run(g ? both : f, p, zf, n, zf, reinterpret_cast<float*>(g));
+}
+
 // The forward pass; kTrain also stores f'(z) where backpropagation needs it: for hidden kinds
 // whose derivative does not follow from a (sine, gelu, swish), and for a non-linear output layer.
 // The hidden activation H: a Builtin id compiled into the kernel (tanh, the thesis' and the
@@ -413,7 +449,7 @@ SN_INLINE void load_block(const View<Mode>& V, const float* const mb[], int b) {
 constexpr int kAnyHidden = -1;
 template <int H>
 SN_INLINE bool hidden_from_output(const Layout& S) {
-  if constexpr (H == kAnyHidden) return from_output_any(S.hidden);
+  if constexpr (H == kAnyHidden) return S.hidden != kTranslated && from_output_any(S.hidden);
   else return kFromOutput<H>;
 }
 template <int H, class V>
@@ -450,12 +486,16 @@ SN_INLINE void forward_block(const View<Mode>& V) {
     }
     layer([&](int o, const Vec& c) SN_INLINE_LAMBDA { z[o] = c; });
     if (hidden) {
-      if (kTrain && !hidden_from_output<H>(S)) {
+      if (H == kAnyHidden && S.hidden == kTranslated) {
+        translated<Mode>(*S.hf, *S.hb, S.hp, z, S.out[l], kTrain ? V.dz(l + 1) : nullptr);
+      } else if (kTrain && !hidden_from_output<H>(S)) {
         Vec* g = V.dz(l + 1);
         for (int o = 0; o < S.out[l]; ++o) hidden_both<H>(S, z[o], z[o], g[o]);
       } else {
         for (int o = 0; o < S.out[l]; ++o) z[o] = hidden_act<H>(S, z[o]);
       }
+    } else if (S.output == kTranslated) {
+      translated<Mode>(*S.of, *S.ob, S.op, z, S.out[l], kTrain ? V.dz(l + 1) : nullptr);
     } else if (kTrain && S.output != int(Builtin::linear)) {
       Vec* g = V.dz(l + 1);
       for (int o = 0; o < S.out[l]; ++o) act_both_any(S.output, z[o], S.op, z[o], g[o]);
@@ -469,7 +509,7 @@ SN_INLINE void forward_block(const View<Mode>& V) {
 template <int H, class Mode>
 SN_INLINE typename Mode::V hidden_grad(const View<Mode>& V, int l, int i) {
   if constexpr (H == kAnyHidden) {
-    if (from_output_any(V.S.hidden)) return act_grad_a_any(V.S.hidden, V.act(l)[i], V.S.hp);
+    if (hidden_from_output<H>(V.S)) return act_grad_a_any(V.S.hidden, V.act(l)[i], V.S.hp);
   } else if constexpr (kFromOutput<H>) {
     return act_grad_a<H>(V.act(l)[i], V.S.hp);
   }
@@ -835,7 +875,6 @@ struct FlushDenormals {
 #define SN_NO_TARGET
 SN_KERNEL_SET(sse2, Sse2, SN_NO_TARGET, One, One, v8)
 SN_KERNEL_SET(avx2, Avx2, __attribute__((target("avx2,fma"))), OneAvx, OneAvx, v8)
-#define SN_AVX512 __attribute__((target("avx512f,avx512vl,avx512dq,avx512bw,avx2,fma")))
 SN_KERNEL_SET(avx512, Avx512, SN_AVX512, OneAvx, Wide, v16)
 
 // Validation with 16 samples per register (AVX-512 only).
@@ -914,9 +953,37 @@ Kernels kernels(int hidden) {
 
 }  // namespace
 
+bool has_cpu_code(const MlpSpec& spec, Activation* without) {
+  for (Activation a : {spec.activation, spec.output_activation})
+    if (!activation_has_cpu_code(a)) {
+      if (without) *without = a;
+      return false;
+    }
+  return true;
+}
+
+void cpu_translated(const ActivationExpr& e, float param, const float* z, std::size_t n, float* out, float* grad) {
+  // The runners read whole vectors, aligned: z copied into vectors of 16, the last one padded.
+  struct alignas(64) Block {
+    float f[16];
+  };
+  std::vector<Block> in((n + 15) / 16), res(in.size()), res_grad(grad ? in.size() : 0);
+  std::memcpy(in.data(), z, n * sizeof(float));
+  const Kernel k = kernel_in_use();
+  const ExprFn run = k == Kernel::avx512 ? expr_avx512 : k == Kernel::avx2 ? expr_avx2 : expr_sse2;
+  {
+    FlushDenormals ftz;
+    run(e, param, in.data()->f, in.size() * 16, res.data()->f, grad ? res_grad.data()->f : nullptr);
+  }
+  std::memcpy(out, res.data(), n * sizeof(float));
+  if (grad) std::memcpy(grad, res_grad.data(), n * sizeof(float));
+}
+
 void cpu_activation(Activation a, float param, const float* z, std::size_t n, float* f, float* df) {
-  const int kind = activation_def(a).simd;
-  if (kind < 0) throw std::invalid_argument(std::string("activation '") + activation_name(a) + "' has no cpu code");
+  const ActivationDef& d = activation_def(a);
+  if (!activation_has_cpu_code(a)) throw std::invalid_argument(activation_without_cpu_code(a));
+  if (d.simd < 0) return cpu_translated(*d.cpu_both, param, z, n, f, df);
+  const int kind = d.simd;
   const Kernel k = kernel_in_use();
   with_builtin(kind, [&](auto kk) {
     constexpr int K = decltype(kk)::value;

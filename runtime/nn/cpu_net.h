@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "nn/activation_expr.h"
 #include "nn/loss.h"
 #include "nn/mlp_spec.h"
 #include "nn/trainer.h"
@@ -33,10 +34,18 @@ std::vector<std::string> cpu_kernels_available();
 // Switches kernels (tests compare each with the oracle); throws when the CPU lacks it.
 void use_cpu_kernel(const std::string& name);
 
-// The SIMD code of built-in activation `a` in the kernel in use, over n pre-activations z (the
-// tests compare it with the double twins): f(z), and f'(z) as the backward pass gets it (from
-// f(z) where the activation allows, else as the forward pass stores it).
+// The cpu code of activation `a` in the kernel in use, over n pre-activations z (the tests
+// compare it with the double twins): f(z), and f'(z) as the backward pass gets it (from f(z)
+// where the activation allows, else as the forward pass stores it). A user's definition runs
+// its translated GLSL (nn/activation_expr.h); throws for one without cpu code.
 void cpu_activation(Activation a, float param, const float* z, std::size_t n, float* f, float* df);
+// Whether the cpu kernels can run `spec` (every built-in activation can, and a script's whose
+// GLSL translates). When not, `without` gets the activation that lacks cpu code.
+bool has_cpu_code(const MlpSpec& spec, Activation* without = nullptr);
+// A translated activation program over n points z, in the kernel in use: f(z) into out, and
+// f'(z) into grad when given (a program translated with its derivative).
+void cpu_translated(const ActivationExpr& e, float param, const float* z, std::size_t n, float* out,
+                    float* grad = nullptr);
 
 // A minibatch as the training step reads it: blocks of 8 samples, each its inputs then its
 // targets, value-major (value i of sample s at [i * 8 + s]), the last block's samples past the

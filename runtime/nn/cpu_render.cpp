@@ -34,23 +34,10 @@ GBufferTexels& scratch() {
 
 void zero(float* p, std::size_t floats) { std::memset(p, 0, floats * sizeof(float)); }
 
-}  // namespace
-
-bool has_cpu_code(const MlpSpec& spec, Activation* without) {
-  for (Activation a : {spec.activation, spec.output_activation})
-    if (activation_def(a).simd < 0) {
-      if (without) *without = a;
-      return false;
-    }
-  return true;
-}
-
-namespace {
 void check_cpu_code(const MlpSpec& spec) {
   Activation bad;
   if (!has_cpu_code(spec, &bad))
-    throw std::invalid_argument(spec.describe() + ": activation '" + activation_name(bad) +
-                                "' is a definition without cpu code: render it with backend = \"gl\"");
+    throw std::invalid_argument(spec.describe() + ": " + activation_without_cpu_code(bad) + ": render it with backend = \"gl\"");
 }
 }  // namespace
 

@@ -18,10 +18,6 @@
 
 namespace sn::nn {
 
-// Whether the cpu kernels can run `spec` (every built-in activation can; an activation defined in
-// GLSL by a script cannot). When not, `without` gets the activation that lacks cpu code.
-bool has_cpu_code(const MlpSpec& spec, Activation* without = nullptr);
-
 // Seconds the last cpu_render spent per stage (benchmarks and profiling).
 struct CpuRenderTimes {
   double read = 0;     // G-buffer attachments to host memory

@@ -8,8 +8,8 @@
 namespace sn::nn {
 
 std::vector<double> dead_unit_fractions(const Mlp& net, const float* x, std::size_t count) {
-  // Counted by the cpu backend's kernels: a custom activation without them has no figure.
-  if (activation_def(net.spec.activation).simd < 0 || activation_def(net.spec.output_activation).simd < 0) return {};
+  // Counted by the cpu backend's kernels: an activation without cpu code has no figure.
+  if (!has_cpu_code(net.spec)) return {};
   CpuNet work(net.spec, net.params.data());
   std::vector<float> encoded;  // the cpu kernels read encoded rows
   if (!net.spec.encodings.empty()) encoded = encode_rows(net.spec.encodings, net.spec.inputs, x, count);
@@ -25,8 +25,7 @@ std::vector<double> dead_unit_fractions(const Mlp& net, const float* x, std::siz
 }
 
 int stuck_outputs(const Mlp& net, const float* x, std::size_t count) {
-  if (!count || activation_def(net.spec.activation).simd < 0 || activation_def(net.spec.output_activation).simd < 0)
-    return -1;
+  if (!count || !has_cpu_code(net.spec)) return -1;
   CpuNet work(net.spec, net.params.data());
   std::vector<float> encoded;
   if (!net.spec.encodings.empty()) encoded = encode_rows(net.spec.encodings, net.spec.inputs, x, count);

@@ -15,7 +15,8 @@ std::vector<double> dead_unit_fractions(const Mlp& net, const float* x, std::siz
 
 // Output channels that no longer depend on the input: the same finite value, to the bit, on
 // every one of the rows — a ReLU output pinned at 0 is the thesis' "stall at the all-zeros
-// error" (fig. 4.11). -1 for a network without cpu code (a custom activation) or without rows.
+// error" (fig. 4.11). -1 for a network without cpu code (an activation whose GLSL does not
+// translate) or without rows.
 int stuck_outputs(const Mlp& net, const float* x, std::size_t count);
 
 }  // namespace sn::nn

@@ -7,6 +7,7 @@
 
 #include "gl/context.h"
 #include "gl/render_target.h"
+#include "nn/cpu_net.h"
 #include "nn/render_inputs.h"
 
 namespace sn::nn {
@@ -29,15 +30,14 @@ RenderBackend choose_render_backend(const Mlp& net, const RenderOptions& o, std:
   };
   if (o.backend == RenderBackend::cpu) {
     if (!cpu_ok)
-      throw std::invalid_argument(net.spec.describe() + ": activation '" + activation_name(without) +
-                                  "' is a definition without cpu code: render it with backend = \"gl\"");
+      throw std::invalid_argument(net.spec.describe() + ": " + activation_without_cpu_code(without) +
+                                  ": render it with backend = \"gl\"");
     if (storage) throw std::invalid_argument("weights = \"storage\" is a choice of the gl backend, not of \"cpu\"");
     return say("requested", RenderBackend::cpu);
   }
   if (o.backend == RenderBackend::gl) return say("requested", RenderBackend::gl);
   if (!cpu_ok)
-    return say(std::string("activation '") + activation_name(without) + "' has no cpu code (a GLSL definition)",
-               RenderBackend::gl);
+    return say(activation_without_cpu_code(without), RenderBackend::gl);
   if (storage) return say("weights = \"storage\" asks for the fragment shader", RenderBackend::gl);
   for (const InputEncoding& e : net.spec.encodings)
     if (encoding_def(e.kind).caller_thread)

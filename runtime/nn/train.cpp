@@ -137,10 +137,11 @@ void validate(const TrainJob& job) {
 }
 
 namespace {
-// The first net whose activations have no cpu code (custom ones), or nullptr.
+// The first net with an activation the cpu backend cannot run (a user's definition whose GLSL
+// does not translate), or nullptr.
 const Mlp* net_without_cpu_code(const std::vector<Mlp*>& nets, std::size_t* index) {
   for (std::size_t i = 0; i < nets.size(); ++i)
-    if (activation_def(nets[i]->spec.activation).simd < 0 || activation_def(nets[i]->spec.output_activation).simd < 0) {
+    if (!has_cpu_code(nets[i]->spec)) {
       *index = i;
       return nets[i];
     }
@@ -153,16 +154,19 @@ std::string resolve_backend(const std::string& requested, std::string* reason, c
   const Mlp* custom = net_without_cpu_code(nets, &i);
   if (requested == "cpu" && custom) {
     const MlpSpec& s = custom->spec;
-    const Activation a = activation_def(s.activation).simd < 0 ? s.activation : s.output_activation;
-    throw std::invalid_argument("net " + std::to_string(i + 1) + " (" + s.describe() + "): activation '" +
-                                activation_name(a) + "' is a definition without cpu code: train it with backend = \"gl\"");
+    Activation a;
+    has_cpu_code(s, &a);
+    throw std::invalid_argument("net " + std::to_string(i + 1) + " (" + s.describe() + "): " + activation_without_cpu_code(a) +
+                                ": train it with backend = \"gl\"");
   }
   if (requested != "auto") {
     if (reason) *reason = "requested";
     return requested;
   }
   if (custom && has_backend("gl")) {
-    if (reason) *reason = std::string("activation '") + activation_name(custom->spec.activation) + "' runs on gl only";
+    Activation a;
+    has_cpu_code(custom->spec, &a);
+    if (reason) *reason = activation_without_cpu_code(a);
     return "gl";
   }
   if (!has_backend("gl")) {
@@ -224,8 +228,8 @@ JobResult train(const TrainJob& job) {
   TrainConfig cfg = job.config;
   cfg.stop = &stop;
   cfg.divergence.constant_mse = constant_predictor_mse(*job.data);
-  // The untrained nets' validation MSE, where they have cpu code (a custom activation's net is
-  // measured by its backend): one number per net whichever backend trains it.
+  // The untrained nets' validation MSE, where they have cpu code (a net whose activation's GLSL
+  // does not translate is measured by its backend): one number per net whichever backend trains it.
   const data::Dataset& d = *job.data;
   cfg.initial_val_mse.assign(nets.size(), std::numeric_limits<double>::quiet_NaN());
   // A user's encoding (a Lua function) encodes rows on this thread only.
@@ -234,7 +238,7 @@ JobResult train(const TrainJob& job) {
     if (single_threaded(n->spec.encodings)) threads = 1;
   io::parallel_for(int(nets.size()), threads, [&](int i) {
     const MlpSpec& s = nets[std::size_t(i)]->spec;
-    if (activation_def(s.activation).simd < 0 || activation_def(s.output_activation).simd < 0) return;
+    if (!has_cpu_code(s)) return;
     CpuNet net(s, nets[std::size_t(i)]->params.data());
     // The cpu kernels read what the first layer reads: encoded rows when the net encodes.
     const std::vector<float> encoded =

@@ -47,8 +47,8 @@ void validate(const TrainJob& job);
 // first bad row and column (1-based).
 void check_dataset(const data::Dataset& data);
 // "auto" -> "gl" on a hardware GPU when the gl backend is built in, or when a net has an
-// activation without cpu code (a custom definition); else "cpu". "cpu" with such a net throws
-// naming the net and backend = "gl".
+// activation without cpu code (a definition whose GLSL does not translate); else "cpu". "cpu"
+// with such a net throws naming the net, the reason and backend = "gl".
 std::string resolve_backend(const std::string& requested, std::string* reason, const std::vector<Mlp*>& nets = {});
 JobResult train(const TrainJob& job);
 

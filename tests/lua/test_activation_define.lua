@@ -1,7 +1,8 @@
 -- sn.activation.define: softsign defined by a user (GLSL + Lua twins). Its derivative against
--- central differences; two gl training steps against a Lua reference that takes its gradients
--- by central differences of the Lua twin; the fragment shader against the Lua twin; the cpu
--- backend's refusal; checkpoints that carry the definition; the names sn.mlp then accepts.
+-- central differences; two training steps on each backend (gl: the GLSL; cpu: the GLSL translated)
+-- against a Lua reference that takes its gradients by central differences of the Lua twin; both
+-- renderers against the Lua twin; a definition whose GLSL does not translate, refused by the cpu
+-- backend with the reason; checkpoints that carry the definition; the names sn.mlp then accepts.
 local sn = require "shadenet"
 local reference = require "reference_forward"
 local forward = reference.forward
@@ -46,22 +47,38 @@ for i = 1, 8 do rows[i] = { data:row("train", i) } end
 local lr, eps = 0.1, 1
 local p = reference.adam_steps(net, rows, 2, { lr = lr, eps = eps })
 local function loss(q) return reference.loss(net, rows, q) end
-local r = sn.train { nets = net, data = data, epochs = 2, batch = 8, adam = { lr = lr, eps = eps }, backend = "auto" }[1]
-assert(r.backend == "gl", "auto picks gl for an activation without cpu code, got " .. r.backend)
-assert(r.steps == 2 and math.abs(r.train_loss[1] - loss(p0)) < 1e-6 * loss(p0), "the same rows and forward pass")
-local got, worst, moved = net:params(), 0, 0
-for j = 1, #p do
-  worst = math.max(worst, math.abs(got[j] - p[j]))
-  moved = math.max(moved, math.abs(p[j] - p0[j]))
+for _, backend in ipairs { "gl", "cpu" } do
+  net:set_params(p0)
+  local r = sn.train { nets = net, data = data, epochs = 2, batch = 8, adam = { lr = lr, eps = eps }, backend = backend }[1]
+  assert(r.backend == backend, r.backend)
+  assert(r.steps == 2 and math.abs(r.train_loss[1] - loss(p0)) < 1e-6 * loss(p0), backend .. ": the same rows and forward pass")
+  local got, worst, moved = net:params(), 0, 0
+  for j = 1, #p do
+    worst = math.max(worst, math.abs(got[j] - p[j]))
+    moved = math.max(moved, math.abs(p[j] - p0[j]))
+  end
+  assert(moved > 1e-3, "two steps moved the parameters: " .. moved)
+  assert(worst < 1e-6, ("%s after two steps vs the central-difference reference: %g"):format(backend, worst))
+  print(("softsign: two %s steps moved parameters up to %.2g; vs the central-difference reference: %.2g"):format(backend, moved,
+                                                                                                              worst))
+  assert(#r.dead_units == 2, "dead-unit figures of both hidden layers, counted by the cpu kernels")
 end
-assert(moved > 1e-3, "two steps moved the parameters: " .. moved)
-assert(worst < 1e-6, ("gl after two steps vs the central-difference reference: %g"):format(worst))
-print(("softsign: two gl steps moved parameters up to %.2g; vs the central-difference reference: %.2g"):format(moved, worst))
-assert(#r.dead_units == 0, "no dead-unit figure without cpu code")
 
--- the cpu backend refuses it, naming the way out
-local ok, err = pcall(sn.train, { nets = net, data = data, epochs = 1, batch = 8, backend = "cpu" })
-assert(not ok and tostring(err):find('softsign\' is a definition without cpu code: train it with backend = "gl"'), tostring(err))
+-- GLSL that does not translate for the cpu backend (a loop): gl only, and the cpu backend says why
+local function wobble(t) return t + 0.1 * math.sin(t) end
+sn.activation.define {
+  name = "wobble2",
+  glsl = "vec4 s = x; for (int i = 0; i < 2; i++) s = s + 0.1 * sin(s); return s;",
+  grad = "vec4 s = x; vec4 d = vec4(1.0);\nfor (int i = 0; i < 2; i++) { d = d * (1.0 + 0.1 * cos(s)); s = s + 0.1 * sin(s); }\nreturn d;",
+  lua = function(t) return wobble(wobble(t)) end,
+  lua_grad = function(t) return (1 + 0.1 * math.cos(t)) * (1 + 0.1 * math.cos(wobble(t))) end,
+}
+local looped = sn.mlp { inputs = 6, hidden = { 8 }, outputs = 3, activation = "wobble2", seed = 3 }
+local ok, err = pcall(sn.train, { nets = looped, data = data, epochs = 1, batch = 8, backend = "cpu" })
+assert(not ok and tostring(err):find("activation 'wobble2' is a definition without cpu code (its glsl, line 1: 'for' is not " ..
+                                     "translated for the cpu backend", 1, true)
+       and tostring(err):find(': train it with backend = "gl"', 1, true), tostring(err))
+assert(sn.train { nets = looped, data = data, epochs = 1, batch = 8 }[1].backend == "gl", "auto picks gl for it")
 
 -- rendering: the fragment shader against the Lua twin
 local scene = sn.scene { mesh = "meshes/test_blob.glb", size = { 48, 32 }, views = { count = 1, elevation = 15 } }
@@ -69,21 +86,24 @@ local g = scene:gbuffer { view = 1, attributes = { "normal", "view" } }
 local shown = sn.mlp { inputs = 6, hidden = { 8, 8 }, outputs = 3, activation = "softsign", seed = 7,
                        input_names = { "normal", "view" } }
 shown.layers[3].bias = { 0.4, 0.5, 0.6 }
-local img, normals, views = shown:render(g), g:read("normal"), g:read("view")
+local normals, views = g:read("normal"), g:read("view")
 local w, h = g:size()
-local checked, rworst = 0, 0
-for py = 1, h do
-  for px = 1, w do
-    local n = normals:get(px, py)
-    if n[4] > 0.5 then
-      local vv, c = views:get(px, py), img:get(px, py)
-      local out = forward(shown, { n[1], n[2], n[3], vv[1], vv[2], vv[3] })
-      for k = 1, 3 do rworst = math.max(rworst, math.abs(c[k] - out[k])) end
-      checked = checked + 1
+for _, backend in ipairs { "gl", "cpu" } do
+  local img = shown:render(g, { backend = backend })
+  local checked, rworst = 0, 0
+  for py = 1, h do
+    for px = 1, w do
+      local n = normals:get(px, py)
+      if n[4] > 0.5 then
+        local vv, c = views:get(px, py), img:get(px, py)
+        local out = forward(shown, { n[1], n[2], n[3], vv[1], vv[2], vv[3] })
+        for k = 1, 3 do rworst = math.max(rworst, math.abs(c[k] - out[k])) end
+        checked = checked + 1
+      end
     end
   end
+  assert(checked > 100 and rworst < 2e-5, ("render (%s): %d pixels, worst %g"):format(backend, checked, rworst))
 end
-assert(checked > 100 and rworst < 2e-5, ("render: %d pixels, worst %g"):format(checked, rworst))
 
 -- checkpoints carry the definition; a different definition of the name is an error
 local path = os.tmpname() .. ".snmlp"

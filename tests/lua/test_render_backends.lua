@@ -186,16 +186,19 @@ local _, low = both(cond, gc, "conditioned, roughness 0.2", { values = { roughne
 local _, mid = both(cond, gc, "conditioned, its own value")
 assert(sn.image.mse(low, mid, { channels = 3 }) > 1e-8, "the condition changes the picture")
 
--- An activation defined in GLSL only: auto falls back to the fragment shader and says why;
--- asking for cpu names the activation and the way out.
-sn.activation.define { name = "softsign_r", glsl = "x / (1.0 + abs(x))", grad = "1.0 / ((1.0 + abs(x)) * (1.0 + abs(x)))",
+-- An activation whose GLSL does not translate for the cpu backend (softsign written with a loop):
+-- auto falls back to the fragment shader and says why; asking for cpu names the activation, why
+-- and the way out.
+sn.activation.define { name = "softsign_r", glsl = "vec4 s = x; for (int i = 0; i < 1; i++) s = s / (1.0 + abs(s)); return s;",
+                       grad = "1.0 / ((1.0 + abs(x)) * (1.0 + abs(x)))",
                        lua = function(x) return x / (1 + math.abs(x)) end,
                        lua_grad = function(x) return 1 / (1 + math.abs(x)) ^ 2 end }
 local custom = sn.mlp { inputs = 6, hidden = { 8 }, outputs = 3, activation = "softsign_r", seed = 5, input_names = attrs }
 custom:render(g)
 info = sn.render_info()
-assert(info.backend == "gl" and info.reason:find("activation 'softsign_r' has no cpu code"), info.reason)
-fails("activation 'softsign_r' is a definition without cpu code: render it with backend = \"gl\"", function()
+assert(info.backend == "gl" and info.reason:find("activation 'softsign_r' is a definition without cpu code (its glsl, line 1: 'for'",
+                                                 1, true), info.reason)
+fails("activation 'softsign_r' is a definition without cpu code %(its glsl, line 1: 'for' .-%): render it with backend = \"gl\"", function()
   custom:render(g, { backend = "cpu" })
 end)
 print("ok")

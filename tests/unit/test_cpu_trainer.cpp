@@ -186,6 +186,33 @@ TEST_P(CpuVsOracle, OneAdamStepWithin1e5) {
   }
 }
 
+// A script's activation as sn.activation.define leaves it, its GLSL translated for the cpu
+// backend (registered here without the GLSL's own check, which needs a GL context).
+Activation translated(const char* name, const char* glsl, const char* grad, double (*f)(double), double (*df)(double)) {
+  ActivationDef d;
+  d.name = name;
+  d.glsl = glsl;
+  d.grad = grad;
+  d.origin = "test_cpu_trainer.cpp";
+  d.f = [f](double z, double) { return f(z); };
+  d.df = [df](double z, double) { return df(z); };
+  d.cpu_f = std::make_shared<const ActivationExpr>(translate_activation(glsl));
+  d.cpu_both = std::make_shared<const ActivationExpr>(translate_activation(glsl, grad));
+  return register_activation(std::move(d));
+}
+Activation softsign() {
+  static const Activation a = translated(
+      "test_softsign", "x / (1.0 + abs(x))", "vec4 d = 1.0 + abs(x); return 1.0 / (d * d);",
+      [](double z) { return z / (1 + std::fabs(z)); }, [](double z) { return 1 / ((1 + std::fabs(z)) * (1 + std::fabs(z))); });
+  return a;
+}
+Activation wiggle() {
+  static const Activation a = translated(
+      "test_wiggle", "x + 0.3 * sin(2.0 * x)", "1.0 + 0.6 * cos(2.0 * x)", [](double z) { return z + 0.3 * std::sin(2 * z); },
+      [](double z) { return 1 + 0.6 * std::cos(2 * z); });
+  return a;
+}
+
 INSTANTIATE_TEST_SUITE_P(
     Shapes, CpuVsOracle,
     ::testing::Values(Shape{{6, 6, 6, 6}, Activation::tanh, Activation::linear},
@@ -202,7 +229,10 @@ INSTANTIATE_TEST_SUITE_P(
                       Shape{{10, 6}, Activation::squareplus, Activation::linear},
                       Shape{{8, 8}, Activation::elu, Activation::elu},
                       Shape{{8, 5}, Activation::exponential, Activation::swish},
-                      Shape{{12, 12}, Activation::tanh, Activation::exponential}));
+                      Shape{{12, 12}, Activation::tanh, Activation::exponential},
+                      // Activations defined by a script: their translated GLSL, hidden and at the output.
+                      Shape{{8, 8}, softsign(), Activation::linear},
+                      Shape{{9, 7}, wiggle(), softsign()}));
 
 // The AVX-512 kernel's pair mode: two networks in one register file, each bit for bit what it
 // is alone, over steps of every shape (widths not multiples of 8, encoded inputs, activations
