@@ -5,7 +5,9 @@
 --     backend:     cpu | gl | all (default: every backend in this build)
 --     counts:      networks per job, comma separated (default 1,2,8,32,360)
 --     epochs:      epochs per job (default 1)
---     activations: hidden activations, comma separated (default tanh; "all": every built-in)
+--     activations: hidden activations, comma separated (default tanh; "all": every built-in;
+--                  "tanh_defined" and "softsign": definitions as a script makes them, whose
+--                  GLSL the cpu backend runs translated)
 --     archs:       hidden layers x width, comma separated (default 4x6,8x8,8x12,12x12)
 --     encodings:   input encodings, comma separated (default none): none, or NAME:N, the encoding
 --                  NAME (frequency, oneblob, sh, triangle_wave) with count N (bands, bins or
@@ -32,12 +34,24 @@ local counts = {}
 for n in (arg[2] or "1,2,8,32,360"):gmatch("%d+") do counts[#counts + 1] = tonumber(n) end
 local epochs = tonumber(arg[3] or "1")
 local activations = {}
+-- sn.activation.define'd activations: tanh_defined is the built-in's arithmetic (mlp_tanh is the
+-- cpu backend's fast_tanh), so that it prices the translation alone.
+local defined = {
+  tanh_defined = { glsl = "mlp_tanh(x)", grad = "vec4 t = mlp_tanh(x); return 1.0 - t * t;", lua = math.tanh,
+                   lua_grad = function(x) return 1 - math.tanh(x) ^ 2 end },
+  softsign = { glsl = "x / (1.0 + abs(x))", grad = "vec4 d = 1.0 + abs(x); return 1.0 / (d * d);",
+               lua = function(x) return x / (1 + math.abs(x)) end, lua_grad = function(x) return 1 / (1 + math.abs(x)) ^ 2 end },
+}
 local all_activations = { "tanh", "sigmoid", "relu", "leaky_relu", "sine", "softplus", "squareplus", "elu", "gelu",
                           "swish", "exponential" }
 for a in (arg[4] or "tanh"):gmatch("[%w_]+") do
   if a == "all" then
     for _, b in ipairs(all_activations) do activations[#activations + 1] = b end
   else
+    if defined[a] then
+      defined[a].name = a
+      sn.activation.define(defined[a])
+    end
     activations[#activations + 1] = a
   end
 end
