@@ -16,7 +16,7 @@ cd "$(dirname "$0")/.."
 seconds=${1:-60}
 [ $# -gt 0 ] && shift
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(gltf image checkpoint dataset run_file include)
+[ ${#targets[@]} -gt 0 ] || targets=(gltf image checkpoint dataset run_file include activation)
 
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSHADENET_FUZZ=ON \
   -DBUILD_TESTING=OFF >/dev/null

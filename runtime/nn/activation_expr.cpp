@@ -276,6 +276,15 @@ class Translator {
   }
   Value unary() {
     const int line = peek().line;
+    // Every nesting (parentheses, arguments, signs) recurses through here: bounded, so that no
+    // text can exhaust the stack.
+    struct Depth {
+      int& d;
+      Depth(int& depth, int line) : d(depth) {
+        if (++d > kMaxDepth) fail(line, "nested more than " + std::to_string(kMaxDepth) + " deep");
+      }
+      ~Depth() { --d; }
+    } depth(depth_, line);
     if (accept("-")) return unop(ExprOp::neg, number(unary(), line, "-"));
     if (accept("+")) return number(unary(), line, "+");
     if (accept("!")) return logical_not(unary(), line);
@@ -445,8 +454,10 @@ class Translator {
     return Value{ssa_++, mask};
   }
 
+  static constexpr int kMaxDepth = 256;
   std::vector<Token> t_;
   std::size_t at_ = 0;
+  int depth_ = 0;
   std::map<std::string, Value> names_;
   std::vector<Step> steps_;
   std::map<std::tuple<int, int, int, int, uint32_t>, int> done_;

@@ -107,5 +107,18 @@ seed("include", "memory.comp", table.concat({
 seed("include", "mlp_eval.comp", read("shaders/mlp_eval.comp") .. SEP .. "0(12) : error C1008: undefined variable\n")
 seed("include", "cycle.comp", table.concat({ "#include \"a.glsl\"\n", "", "#include \"b.glsl\"\n", "#include \"a.glsl\"\n" }, SEP))
 
+-- activation: a definition's GLSL of f, then of f' (the built-ins' own, which use every form the
+-- translator reads: expressions, statements, bvec mixes, shadenet's GLSL functions).
+seed("activation", "softsign.glsl", "x / (1.0 + abs(x))" .. SEP .. "vec4 d = 1.0 + abs(x); return 1.0 / (d * d);")
+seed("activation", "squareplus.glsl", "vec4 s = sqrt(z * z + 4.0); return mix(2.0 / (s - z), 0.5 * (z + s), greaterThanEqual(z, vec4(0.0)));"
+     .. SEP .. "return 0.5 + 0.5 * z / sqrt(z * z + 4.0);")
+seed("activation", "gelu.glsl", "return 0.5 * z * (1.0 + sn_gelu_tanh(z));" .. SEP ..
+     "vec4 t = sn_gelu_tanh(z);\nreturn 0.5 * (1.0 + t) + 0.5 * z * (1.0 - t * t) * 0.7978845608028654 * (1.0 + 0.134145 * z * z);")
+seed("activation", "functions.glsl", table.concat({
+  "const float k = 2.0; /* c */ vec4 y = x; y *= k; y += smoothstep(-1.0, 1.0, x) - fract(x) + mod(x, 3.0);\n" ..
+  "bool far = p > 1.0 && !(p < -1.0) || p == 0.5; return far ? pow(abs(y), vec4(1.5)) + atan(y) : log2(exp2(y)) + inversesqrt(1.0 + y * y);",
+  "return step(0.0, x) * sign(x) + clamp(x, -1.0, 1.0) + tanh(x) * cosh(x) - sinh(x) + asinh(x) + acos(0.5) + asin(0.5) + radians(degrees(x));",
+}, SEP))
+
 os.execute("rm -rf '" .. scratch .. "'")
 print("seeds written under " .. root)

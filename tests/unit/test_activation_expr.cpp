@@ -203,6 +203,8 @@ TEST(ActivationExpr, WhatDoesNotTranslateIsNamedWithItsLine) {
   EXPECT_EQ(error_of("y * 2.0"), "line 1: 'y' is not a name the cpu backend knows (z, x, p or a local)");
   EXPECT_EQ(error_of("x # 2.0"), "line 1: '#' is not translated for the cpu backend");
   EXPECT_EQ(error_of("x /* open"), "line 1: a comment that does not end");
+  EXPECT_EQ(error_of(std::string(300, '(') + "x" + std::string(300, ')')), "line 1: nested more than 256 deep");
+  EXPECT_EQ(error_of(std::string(100000, '-') + "x"), "line 1: nested more than 256 deep");
 }
 
 }  // namespace
