@@ -1,7 +1,7 @@
 #include "nn/activation_expr.h"
 
 #include <cctype>
-#include <cstdlib>
+#include <charconv>
 #include <cstring>
 #include <map>
 #include <stdexcept>
@@ -47,9 +47,8 @@ std::vector<Token> tokenize(const std::string& s) {
       i = close + 2;
     } else if (std::isdigit(static_cast<unsigned char>(c)) || (c == '.' && i + 1 < s.size() && std::isdigit(static_cast<unsigned char>(s[i + 1])))) {
       Token t{Token::number, "", 0, line};
-      char* end = nullptr;
-      t.value = std::strtod(s.c_str() + i, &end);
-      const std::size_t n = std::size_t(end - (s.c_str() + i));
+      const char* first = s.data() + i;
+      const std::size_t n = std::size_t(std::from_chars(first, s.data() + s.size(), t.value).ptr - first);  // any locale
       t.text = s.substr(i, n);
       i += n;
       if (i < s.size() && (s[i] == 'f' || s[i] == 'F')) ++i;  // GLSL's float suffix
@@ -205,7 +204,18 @@ class Translator {
     }
   }
 
+  // Every nesting (parentheses, arguments, signs, ?:) recurses through expression() or unary():
+  // bounded, so that no text can exhaust the stack.
+  struct Depth {
+    int& d;
+    Depth(int& depth, int line) : d(depth) {
+      if (++d > kMaxDepth) fail(line, "nested more than " + std::to_string(kMaxDepth) + " deep");
+    }
+    ~Depth() { --d; }
+  };
+
   Value expression() {
+    const Depth depth(depth_, peek().line);
     const Value c = logical_or();
     if (!accept("?")) return c;
     const int line = peek().line;
@@ -276,15 +286,7 @@ class Translator {
   }
   Value unary() {
     const int line = peek().line;
-    // Every nesting (parentheses, arguments, signs) recurses through here: bounded, so that no
-    // text can exhaust the stack.
-    struct Depth {
-      int& d;
-      Depth(int& depth, int line) : d(depth) {
-        if (++d > kMaxDepth) fail(line, "nested more than " + std::to_string(kMaxDepth) + " deep");
-      }
-      ~Depth() { --d; }
-    } depth(depth_, line);
+    const Depth depth(depth_, line);
     if (accept("-")) return unop(ExprOp::neg, number(unary(), line, "-"));
     if (accept("+")) return number(unary(), line, "+");
     if (accept("!")) return logical_not(unary(), line);

@@ -205,6 +205,10 @@ TEST(ActivationExpr, WhatDoesNotTranslateIsNamedWithItsLine) {
   EXPECT_EQ(error_of("x /* open"), "line 1: a comment that does not end");
   EXPECT_EQ(error_of(std::string(300, '(') + "x" + std::string(300, ')')), "line 1: nested more than 256 deep");
   EXPECT_EQ(error_of(std::string(100000, '-') + "x"), "line 1: nested more than 256 deep");
+  std::string ternaries;
+  for (int i = 0; i < 20000; ++i) ternaries += "p > 0.5 ? x : ";
+  ternaries += "x";
+  EXPECT_EQ(error_of(ternaries), "line 1: nested more than 256 deep");
 }
 
 }  // namespace
