@@ -34,12 +34,13 @@ GBufferTexels& scratch() {
 
 void zero(float* p, std::size_t floats) { std::memset(p, 0, floats * sizeof(float)); }
 
+}  // namespace
+
 void check_cpu_code(const MlpSpec& spec) {
   Activation bad;
   if (!has_cpu_code(spec, &bad))
     throw std::invalid_argument(spec.describe() + ": " + activation_without_cpu_code(bad) + ": render it with backend = \"gl\"");
 }
-}  // namespace
 
 const std::vector<float>& GBufferTexels::of(const std::string& attribute) const {
   for (std::size_t a = 0; a < attributes.size(); ++a)

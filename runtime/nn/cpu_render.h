@@ -29,6 +29,9 @@ struct CpuRenderTimes {
 // whose other pixels are cleared).
 enum class CpuLayout { image, gl_box };
 
+// Throws unless the cpu kernels can run net `spec`, naming the activation, why and backend = "gl".
+void check_cpu_code(const MlpSpec& spec);
+
 // Renders `net` over `g` into `out`, resized to what `layout` asks (reused when it has that size:
 // a frame then allocates nothing). `inputs` from render_inputs(net, g, values). Returns how many
 // covered pixels came out NaN or infinite. Throws when has_cpu_code(net.spec) is false.

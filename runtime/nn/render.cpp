@@ -29,9 +29,7 @@ RenderBackend choose_render_backend(const Mlp& net, const RenderOptions& o, std:
     return b;
   };
   if (o.backend == RenderBackend::cpu) {
-    if (!cpu_ok)
-      throw std::invalid_argument(net.spec.describe() + ": " + activation_without_cpu_code(without) +
-                                  ": render it with backend = \"gl\"");
+    check_cpu_code(net.spec);
     if (storage) throw std::invalid_argument("weights = \"storage\" is a choice of the gl backend, not of \"cpu\"");
     return say("requested", RenderBackend::cpu);
   }

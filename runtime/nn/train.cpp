@@ -138,10 +138,10 @@ void validate(const TrainJob& job) {
 
 namespace {
 // The first net with an activation the cpu backend cannot run (a user's definition whose GLSL
-// does not translate), or nullptr.
-const Mlp* net_without_cpu_code(const std::vector<Mlp*>& nets, std::size_t* index) {
+// does not translate), or nullptr; `index` and `without` get its place and that activation.
+const Mlp* net_without_cpu_code(const std::vector<Mlp*>& nets, std::size_t* index, Activation* without) {
   for (std::size_t i = 0; i < nets.size(); ++i)
-    if (!has_cpu_code(nets[i]->spec)) {
+    if (!has_cpu_code(nets[i]->spec, without)) {
       *index = i;
       return nets[i];
     }
@@ -151,11 +151,10 @@ const Mlp* net_without_cpu_code(const std::vector<Mlp*>& nets, std::size_t* inde
 
 std::string resolve_backend(const std::string& requested, std::string* reason, const std::vector<Mlp*>& nets) {
   std::size_t i = 0;
-  const Mlp* custom = net_without_cpu_code(nets, &i);
+  Activation a;
+  const Mlp* custom = net_without_cpu_code(nets, &i, &a);
   if (requested == "cpu" && custom) {
     const MlpSpec& s = custom->spec;
-    Activation a;
-    has_cpu_code(s, &a);
     throw std::invalid_argument("net " + std::to_string(i + 1) + " (" + s.describe() + "): " + activation_without_cpu_code(a) +
                                 ": train it with backend = \"gl\"");
   }
@@ -164,8 +163,6 @@ std::string resolve_backend(const std::string& requested, std::string* reason, c
     return requested;
   }
   if (custom && has_backend("gl")) {
-    Activation a;
-    has_cpu_code(custom->spec, &a);
     if (reason) *reason = activation_without_cpu_code(a);
     return "gl";
   }
