@@ -49,7 +49,7 @@ int w_draw(lua_State* L) {
   }
   scene::set_standard_uniforms(program, camera, camera.aspect_for(target.width(), target.height()), model, gpu);
   apply_bindings(L, o, program);  // the script's own uniforms come last and may override the standard ones
-  scene::draw(program, gpu, cull);
+  scene::draw(program, gpu, model, cull);
   lua_pushvalue(L, required("target", "Target"));
   return 1;
 }

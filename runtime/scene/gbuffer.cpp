@@ -124,7 +124,7 @@ GBuffer render_gbuffer(const std::vector<MeshDraw>& draws, const Camera& camera,
   for (const auto& [m, model] : draws) {
     GpuMesh& gpu = upload(*m);
     set_standard_uniforms(*prog, camera, aspect, model, gpu);
-    draw(*prog, gpu, Cull::none);
+    draw(*prog, gpu, model, Cull::none);
     PixelBox b;
     if (!g.bounded || !projected_box(gpu.bounds(), view_proj * model, width, height, &b)) {
       g.bounded = false;

@@ -142,20 +142,21 @@ void set_standard_uniforms(gl::Program& p, const Camera& camera, double aspect, 
   set("u_has_base_color", {mesh.has_base_color() ? 1.0 : 0.0});
 }
 
-void draw(gl::Program& p, const GpuMesh& mesh, Cull cull) {
+void draw(gl::Program& p, const GpuMesh& mesh, const glm::dmat4& model, Cull cull) {
   if (p.is_compute()) throw std::invalid_argument("draw needs a vertex + fragment program, got compute " + p.name());
   if (cull == Cull::none) {
     glDisable(GL_CULL_FACE);
   } else {
     glEnable(GL_CULL_FACE);
     glCullFace(cull == Cull::back ? GL_BACK : GL_FRONT);
-    glFrontFace(GL_CCW);
   }
+  glFrontFace(glm::determinant(glm::dmat3(model)) < 0 ? GL_CW : GL_CCW);
   glUseProgram(p.id());
   glBindVertexArray(mesh.vao());
   glDrawElements(GL_TRIANGLES, GLsizei(mesh.index_count()), GL_UNSIGNED_INT, nullptr);
   glBindVertexArray(0);
   glDisable(GL_CULL_FACE);
+  glFrontFace(GL_CCW);
 }
 
 }  // namespace sn::scene

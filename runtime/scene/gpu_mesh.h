@@ -55,7 +55,9 @@ void set_standard_uniforms(gl::Program& p, const Camera& camera, double aspect, 
                            const GpuMesh& mesh);
 
 // Draws the mesh's triangles with `p` into whatever framebuffer is bound (depth test as set by
-// RenderTarget::bind). Throws for a compute program.
-void draw(gl::Program& p, const GpuMesh& mesh, Cull cull = Cull::none);
+// RenderTarget::bind). A model matrix that mirrors (negative determinant) reverses the
+// triangles' winding on screen, so the front face is then the clockwise one: gl_FrontFacing and
+// culling see the mesh's own sides. Throws for a compute program.
+void draw(gl::Program& p, const GpuMesh& mesh, const glm::dmat4& model, Cull cull = Cull::none);
 
 }  // namespace sn::scene

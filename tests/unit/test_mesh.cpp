@@ -643,7 +643,7 @@ TEST(GpuMesh, BaseColorTextureIsSampledAtTheMeshUvs) {
     target.bind();
     target.clear();
     set_standard_uniforms(*p, cam, 1.0, glm::dmat4(1.0), upload(duck));
-    draw(*p, upload(duck));
+    draw(*p, upload(duck), glm::dmat4(1.0));
     return target.read();
   };
   sn::io::Image uv = render("uv.frag"), color = render("base_color.frag");
