@@ -299,16 +299,24 @@ int w_dataset(lua_State* L) {
     lua_pop(L, 1);
   }
   r.color = shading::parse_color_space(o.string("color", "rgb"));
-  // 1-based indices from Lua -> 0-based, each within 1..count.
+  // 1-based indices from Lua -> 0-based, each within 1..count and listed once (a repeated view
+  // would put the same rows in training and validation both).
   auto indices = [&](const char* key, std::size_t count, const char* noun) {
     std::vector<int> out;
     int v = o.push(key);
     auto list = check_numbers(L, v, o.where(key).c_str());
     lua_pop(L, 1);
+    if (list.empty())
+      throw Error(o.where(key) + ": an empty list selects no " + noun + "; leave it out for all " +
+                  std::to_string(count) + " of them");
+    std::vector<bool> seen(count);
     for (double x : list) {
       if (x < 1 || x > double(count) || x != std::floor(x))
         throw Error(o.where(key) + ": " + noun + " " + io::number_text(x) + " is outside the scene's " + noun + "s 1.." +
                     std::to_string(count));
+      if (seen[std::size_t(x) - 1])
+        throw Error(o.where(key) + ": " + noun + " " + io::number_text(x) + " is listed twice");
+      seen[std::size_t(x) - 1] = true;
       out.push_back(int(x) - 1);
     }
     return out;

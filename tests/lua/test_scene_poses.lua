@@ -96,6 +96,14 @@ local ok, err = pcall(five.gbuffer, five, { pose = 6 })
 assert(not ok and err:find("pose.: 6 is outside the scene.s poses 1..5"), err)
 ok, err = pcall(five.render, five, target, { pose = 3 })
 assert(ok, err)
+-- A view or pose listed twice would put the same rows in training and validation: refused, as
+-- is an empty list (which selected every one).
+ok, err = pcall(five.dataset, five, { target = target, views = { 1, 2, 1 } })
+assert(not ok and err:find("option 'views': view 1 is listed twice", 1, true), err)
+ok, err = pcall(five.dataset, five, { target = target, poses = { 3, 3 } })
+assert(not ok and err:find("option 'poses': pose 3 is listed twice", 1, true), err)
+ok, err = pcall(five.dataset, five, { target = target, views = {} })
+assert(not ok and err:find("an empty list selects no view; leave it out for all 4 of them", 1, true), err)
 
 -- 4. A transform that mirrors (a negative determinant) reverses the triangles' winding on screen:
 --    a closed mesh seen from outside must still show its outward side (n . v > 0 everywhere; with
