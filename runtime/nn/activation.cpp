@@ -26,13 +26,7 @@ int lookup(const Defs& defs, const std::string& name) {
 
 // The one way into the registry, for built-ins and user definitions alike.
 int add(Defs& defs, ActivationDef def, bool builtin) {
-  for (const auto& a : def.aliases)
-    if (!valid_registry_name(a)) throw std::invalid_argument("activation alias '" + a + "': use lower-case letters, digits and _");
-  if (!valid_registry_name(def.name))
-    throw std::invalid_argument("activation name '" + def.name + "': use lower-case letters, digits and _ (at most 40)");
-  if (def.glsl.empty() || def.grad.empty())
-    throw std::invalid_argument("activation '" + def.name + "' needs both its GLSL and the GLSL of its derivative");
-  if (!def.f || !def.df) throw std::invalid_argument("activation '" + def.name + "' needs its function and derivative twins");
+  check_activation_def(def);
   const int at = lookup(defs, def.name);
   if (at >= 0) {
     if (at < int(Builtin::count))
@@ -48,6 +42,20 @@ int add(Defs& defs, ActivationDef def, bool builtin) {
   defs.push_back(std::move(def));
   return int(defs.size()) - 1;
 }
+
+}  // namespace
+
+void check_activation_def(const ActivationDef& def) {
+  for (const auto& a : def.aliases)
+    if (!valid_registry_name(a)) throw std::invalid_argument("activation alias '" + a + "': use lower-case letters, digits and _");
+  if (!valid_registry_name(def.name))
+    throw std::invalid_argument("activation name '" + def.name + "': use lower-case letters, digits and _ (at most 40)");
+  if (def.glsl.empty() || def.grad.empty())
+    throw std::invalid_argument("activation '" + def.name + "' needs both its GLSL and the GLSL of its derivative");
+  if (!def.f || !def.df) throw std::invalid_argument("activation '" + def.name + "' needs its function and derivative twins");
+}
+
+namespace {
 
 Defs& registry() {
   static Defs defs = [] {
@@ -126,7 +134,7 @@ namespace {
 // A body as given, or one expression made into a return.
 std::string body(const std::string& code) {
   if (code.find("return") != std::string::npos) return code;
-  return "return " + code + ";";
+  return "return " + code + "\n;";  // a line of its own: the code may end in a // comment
 }
 }  // namespace
 

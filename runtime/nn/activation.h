@@ -68,6 +68,10 @@ struct ActivationDef {
   std::string cpu_missing;
 };
 
+// Throws for a name or alias outside the registry's rules, or a definition missing a part
+// (its GLSL, its derivative's, a twin): what register_activation checks first.
+void check_activation_def(const ActivationDef& def);
+
 // Registers a definition (its name and aliases must be new, or name an earlier user definition,
 // which it replaces); returns its handle. Throws for a bad name or a clash with a built-in.
 Activation register_activation(ActivationDef def);

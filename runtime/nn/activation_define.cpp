@@ -37,19 +37,10 @@ void check_twins(const ActivationDef& d) {
   }
 }
 
-// The GLSL function `part` of `d` at the sample points.
-std::vector<float> run_glsl(const ActivationDef& d, ActivationPart part) {
-  const std::vector<double> zd = sample_points();
-  std::vector<float> z(zd.begin(), zd.end());
-  gl::ProgramDesc desc;
-  desc.compute = "activation_check.comp";
-  const char* what = part == ActivationPart::f ? "glsl" : "grad";
-  desc.includes["mlp/act_hidden.glsl"] = activation_glsl_function(d, part);
-  desc.includes["mlp/act_output.glsl"] = "";
-  desc.defines["CHECK_CALL(z)"] = "sn_act_" + d.name + (part == ActivationPart::f ? "" : "_grad") + "(z, 0.0)";
-  std::shared_ptr<gl::Program> prog;
+// `desc` compiled, for part `what` of `d`; a compile error names the defining script line.
+std::shared_ptr<gl::Program> compile(const ActivationDef& d, const char* what, const gl::ProgramDesc& desc) {
   try {
-    prog = gl::get_program(desc);
+    return gl::get_program(desc);
   } catch (const std::exception& e) {
     // The log names the include; a person wrote the text at the defining script line.
     std::string log = e.what();
@@ -58,13 +49,32 @@ std::vector<float> run_glsl(const ActivationDef& d, ActivationPart part) {
       log.replace(at, include.size(), origin);
     throw std::invalid_argument("activation '" + d.name + "': its " + what + " GLSL does not compile:\n" + log);
   }
-  gl::Buffer in(gl::ElemType::float32, z.size()), out(gl::ElemType::float32, z.size());
+}
+
+// The GLSL function `part` of `d` at the sample points, 4 values per point: lane k of point i
+// is the function at point i + k (mod the count). The function is compiled in a fragment shader
+// too (a render's), and not run there.
+std::vector<float> run_glsl(const ActivationDef& d, ActivationPart part) {
+  const std::vector<double> zd = sample_points();
+  std::vector<float> z(zd.begin(), zd.end());
+  gl::ProgramDesc desc;
+  const char* what = part == ActivationPart::f ? "glsl" : "grad";
+  desc.includes["mlp/act_hidden.glsl"] = activation_glsl_function(d, part);
+  desc.includes["mlp/act_output.glsl"] = "";
+  desc.defines["CHECK_CALL(z)"] = "sn_act_" + d.name + (part == ActivationPart::f ? "" : "_grad") + "(z, 0.0)";
+  gl::ProgramDesc fragment = desc;
+  fragment.vertex = "fullscreen.vert";
+  fragment.fragment = "activation_check.frag";
+  desc.compute = "activation_check.comp";
+  const std::shared_ptr<gl::Program> prog = compile(d, what, desc);
+  compile(d, what, fragment);
+  gl::Buffer in(gl::ElemType::float32, z.size()), out(gl::ElemType::float32, 4 * z.size());
   in.upload(z.data(), 0, z.size());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, out.id());
   prog->set_uniform("u_count", {double(z.size())});
   gl::dispatch(*prog, unsigned((z.size() + 63) / 64));
-  std::vector<float> y(z.size());
+  std::vector<float> y(4 * z.size());
   out.download(y.data(), 0, y.size());
   return y;
 }
@@ -74,11 +84,24 @@ void check_glsl(const ActivationDef& d) {
   for (ActivationPart part : {ActivationPart::f, ActivationPart::grad}) {
     const std::vector<float> got = run_glsl(d, part);
     const char* what = part == ActivationPart::f ? "glsl" : "grad";
-    for (std::size_t i = 0; i < z.size(); ++i) {
-      const double want = part == ActivationPart::f ? d.f(z[i], 0.0) : d.df(z[i], 0.0);
-      if (!(std::fabs(double(got[i]) - want) <= 1e-4 * (1 + std::fabs(want))))
-        throw std::invalid_argument("activation '" + d.name + "': its " + what + " GLSL gives " + io::number_text(got[i]) + " at " +
-                                    io::number_text(z[i]) + ", its Lua twin " + io::number_text(want));
+    auto twin = [&](std::size_t i, std::size_t lane) {
+      const double at = z[(i / 4 + lane) % z.size()];
+      return part == ActivationPart::f ? d.f(at, 0.0) : d.df(at, 0.0);
+    };
+    auto agrees = [](double v, double want) { return std::fabs(v - want) <= 1e-4 * (1 + std::fabs(want)); };
+    for (std::size_t i = 0; i < got.size(); ++i) {
+      const std::size_t lane = i % 4;
+      const double want = twin(i, lane);
+      if (agrees(got[i], want)) continue;
+      std::string why = "activation '" + d.name + "': its " + what + " GLSL gives " + io::number_text(got[i]) + " at " +
+                        io::number_text(z[(i / 4 + lane) % z.size()]) + ", its Lua twin " + io::number_text(want);
+      for (std::size_t other = 0; other < 4; ++other)
+        if (other != lane && agrees(got[i], twin(i, other))) {
+          why += std::string(": lane ") + "xyzw"[lane] + " of the vec4 holds lane " + "xyzw"[other] +
+                 "'s value, and each lane is a unit of its own (no swizzles or sums across lanes)";
+          break;
+        }
+      throw std::invalid_argument(why);
     }
   }
 }
@@ -127,6 +150,7 @@ void translate_for_cpu(ActivationDef& d) {
 
 Activation define_activation(ActivationDef def) {
   def.simd = -1;
+  check_activation_def(def);  // the name's rules before its GLSL is compiled under that name
   check_twins(def);
   check_glsl(def);
   translate_for_cpu(def);

@@ -105,6 +105,25 @@ for _, backend in ipairs { "gl", "cpu" } do
   assert(checked > 100 and rworst < 2e-5, ("render (%s): %d pixels, worst %g"):format(backend, checked, rworst))
 end
 
+-- GLSL that ends in a // comment (the body's closing text starts on a line of its own): its
+-- forward pass against the twin on gl, and one epoch on each backend (cpu: the comment skipped
+-- by the translation) to the same parameters
+sn.activation.define { name = "halved", glsl = "0.5 * x  // half", grad = "vec4(0.5) // constant",
+                       lua = function(t) return 0.5 * t end, lua_grad = function() return 0.5 end }
+reference.custom.halved = function(t) return 0.5 * t end
+local halved = sn.mlp { inputs = 6, hidden = { 4 }, outputs = 3, activation = "halved", output_activation = "halved", seed = 2 }
+local got, want = halved:forward(x[1]), forward(halved, x[1])
+for o = 1, 3 do assert(math.abs(got[o] - want[o]) < 1e-6, ("halved output %d: %.7f, want %.7f"):format(o, got[o], want[o])) end
+local trained = {}
+for _, backend in ipairs { "gl", "cpu" } do
+  local h = halved:clone()
+  sn.train { nets = { h }, data = data, epochs = 1, batch = 8, backend = backend }
+  trained[backend] = h:params()
+end
+for i = 1, #trained.gl do
+  assert(math.abs(trained.gl[i] - trained.cpu[i]) < 1e-6, ("halved parameter %d: gl %.7f, cpu %.7f"):format(i, trained.gl[i], trained.cpu[i]))
+end
+
 -- checkpoints carry the definition; a different definition of the name is an error
 local path = os.tmpname() .. ".snmlp"
 net:save(path)
