@@ -26,7 +26,9 @@ using nn::Mlp;
 Mlp& self(lua_State* L) { return check<Mlp>(L, 1, kType); }
 
 // A view onto part of a network. It holds the network weakly: after net:release() the views
-// report that, instead of keeping a released network alive.
+// report that, instead of keeping a released network alive. Until then the view's environment
+// table holds the network's Lua value, so that `sn.mlp{...}.layers[1].weight` keeps its network
+// from the collector.
 struct View {
   enum Kind { kLayers, kLayer, kWeight, kRow, kBias } kind;
   std::weak_ptr<Mlp> net;
@@ -35,7 +37,18 @@ struct View {
 
 const char* kKinds[] = {"layers", "layer", "weight", "weight row", "bias"};
 
-void push_view(lua_State* L, View v) { push(L, std::make_shared<View>(std::move(v)), kView); }
+// Pushes view v of the network at stack index `net`, or (view true) of the network a view there shows.
+void push_view(lua_State* L, View v, int owner, bool view) {
+  push(L, std::make_shared<View>(std::move(v)), kView);
+  if (view) {
+    lua_getfenv(L, owner);
+  } else {
+    lua_createtable(L, 1, 0);
+    lua_pushvalue(L, owner);
+    lua_rawseti(L, -2, 1);
+  }
+  lua_setfenv(L, -2);
+}
 
 std::shared_ptr<Mlp> net_of(const View& v) {
   auto p = v.net.lock();
@@ -124,13 +137,13 @@ int w_view_index(lua_State* L) {
   switch (v.kind) {
     case View::kLayers: {
       int l = check_index(L, 2, net->spec.layers(), "layer");
-      push_view(L, {View::kLayer, v.net, l, 0});
+      push_view(L, {View::kLayer, v.net, l, 0}, 1, true);
       return 1;
     }
     case View::kLayer: {
       const int in = net->spec.width(v.layer), out = net->spec.width(v.layer + 1);
-      if (key == "weight") push_view(L, {View::kWeight, v.net, v.layer, 0});
-      else if (key == "bias") push_view(L, {View::kBias, v.net, v.layer, 0});
+      if (key == "weight") push_view(L, {View::kWeight, v.net, v.layer, 0}, 1, true);
+      else if (key == "bias") push_view(L, {View::kBias, v.net, v.layer, 0}, 1, true);
       else if (key == "inputs") lua_pushinteger(L, in);
       else if (key == "outputs") lua_pushinteger(L, out);
       else if (key == "activation")
@@ -142,7 +155,7 @@ int w_view_index(lua_State* L) {
     }
     case View::kWeight: {
       int r = check_index(L, 2, net->spec.width(v.layer + 1), layer_name(v) + ": weight row");
-      push_view(L, {View::kRow, v.net, v.layer, r});
+      push_view(L, {View::kRow, v.net, v.layer, r}, 1, true);
       return 1;
     }
     case View::kRow: {
@@ -493,7 +506,7 @@ int w_clone(lua_State* L) {
 int w_index(lua_State* L) {
   auto& box = check_box<Mlp>(L, 1, kType);
   if (lua_type(L, 2) == LUA_TSTRING && std::string(lua_tostring(L, 2)) == "layers") {
-    push_view(L, {View::kLayers, box, 0, 0});
+    push_view(L, {View::kLayers, box, 0, 0}, 1, false);
     return 1;
   }
   lua_pushvalue(L, 2);

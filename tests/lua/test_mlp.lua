@@ -87,4 +87,12 @@ local layer = named.layers[1]
 named:release()
 local ok, err = pcall(function() return layer.weight[1][1] end)
 assert(not ok and err:find("this Mlp was released"), tostring(err))
+-- A view keeps its network from the collector (a net held by nothing else than its views).
+local held = sn.mlp { inputs = 2, hidden = { 3 }, outputs = 1, seed = 1 }
+local w, row = held.layers[1].weight, held.layers[2].weight[1]
+local w11, r1 = w[1][1], row[1]
+held = nil
+collectgarbage()
+collectgarbage()
+assert(w[1][1] == w11 and row[1] == r1 and #w == 3, "views of a collected-looking net still read it")
 print("test_mlp ok")
