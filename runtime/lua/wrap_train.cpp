@@ -3,6 +3,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstdio>
+#include <set>
 
 #include "lua/binding.h"
 #include "lua/mlp_binding.h"
@@ -208,7 +209,14 @@ int w_train(lua_State* L) {
   };
   if (int progress = function_option("progress")) {
     const bool l2 = c.loss.kind == nn::LossKind::l2;
-    job.progress = [L, progress, l2, hook](const nn::ProgressEvent& e) {
+    job.progress = [L, progress, l2, hook, &hold](const nn::ProgressEvent& e) {
+      // The net as it is after this epoch, for a checkpoint or render per epoch (the job's end
+      // replaces it with what was trained, an edit made here included).
+      if (e.params) {
+        nn::Mlp& net = *hold[std::size_t(e.net)];
+        net.params = *e.params;
+        net.touch();
+      }
       hook(progress, "progress", [&] {
         lua_createtable(L, 0, 5);
         set_number(L, "net", e.net + 1);
@@ -243,6 +251,22 @@ int w_train(lua_State* L) {
   } catch (const std::invalid_argument& e) {
     throw Error(std::string("sn.train: ") + e.what());
   }
+  // A progress or tick function may start a job of its own, but not on a net of this one: each
+  // job commits its nets when it ends, and the later commit would silently replace the other's.
+  static std::set<const nn::Mlp*> training;
+  for (std::size_t i = 0; i < hold.size(); ++i)
+    if (training.count(hold[i].get()))
+      throw Error("sn.train: net " + std::to_string(i + 1) +
+                  " is being trained by a job that has not ended (its progress or tick function called this one)");
+  struct Busy {
+    const std::vector<std::shared_ptr<nn::Mlp>>& nets;
+    explicit Busy(const std::vector<std::shared_ptr<nn::Mlp>>& n) : nets(n) {
+      for (auto& p : nets) training.insert(p.get());
+    }
+    ~Busy() {
+      for (auto& p : nets) training.erase(p.get());
+    }
+  } busy(hold);
   nn::JobResult r;
   {
     TrainInterrupt ctrl_c(&stop);

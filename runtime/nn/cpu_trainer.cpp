@@ -350,8 +350,11 @@ class CpuBackend : public Backend {
       }
       if (progress)
         for (int i = 0; i < count; ++i)
-          if (finished[i])
-            progress({i, e + 1, results[i].train_loss.back(), results[i].val_mse.back(), results[i].val_loss.back()});
+          if (finished[i]) {
+            std::vector<float> p(work[i]->spec().param_count());
+            work[i]->get_params(p.data());
+            progress({i, e + 1, results[i].train_loss.back(), results[i].val_mse.back(), results[i].val_loss.back(), &p});
+          }
     }
     // Stopped between epochs: every net still training ends after its last finished epoch.
     if (cfg.stop_requested())

@@ -461,7 +461,7 @@ class Job {
         r.loss_sum = 0;
         r.epochs_done = e + 1;
         any_active = any_active || r.active;
-        if (progress) progress(ProgressEvent{r.index, e + 1, train, val, val_loss});
+        if (progress) progress(ProgressEvent{r.index, e + 1, train, val, val_loss, &p});
       }
     }
     return any_active;

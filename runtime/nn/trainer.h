@@ -155,6 +155,7 @@ struct ProgressEvent {
   int net = 0;    // 0-based index into the job's nets
   int epoch = 0;  // 1-based, just finished
   double train_loss = 0, val_mse = 0, val_loss = 0;
+  const std::vector<float>* params = nullptr;  // the net's parameters after the epoch (Mlp::params' layout)
 };
 // Called on the thread that called train(), after each finished epoch of each net (order across
 // nets unspecified). To end the run early it sets the job's stop flag (TrainJob::stop). An

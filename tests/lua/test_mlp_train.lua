@@ -98,4 +98,32 @@ assert(table.concat(sn.backends(), ","):find("cpu"), "backends lists cpu")
 local auto = sn.train { nets = make(), data = data, epochs = 1 }[1]
 local expect = (sn.gl_info().software or not table.concat(sn.backends(), ","):find("gl")) and "cpu" or "gl"
 assert(auto.backend == expect, "auto chose " .. auto.backend .. ", expected " .. expect)
+-- In a progress function the net holds the parameters of the epoch just ended (the same as a
+-- job of that many epochs gives it), on each backend; an edit made there is replaced by what was
+-- trained, and the net cannot be trained by a second job meanwhile.
+for _, backend in ipairs(sn.backends()) do
+  local net = make()
+  local start = net:clone()
+  local seen, nested = {}, nil
+  sn.train { nets = { net }, data = data, epochs = 3, backend = backend, progress = function(e)
+    seen[e.epoch] = net:params()
+    if e.epoch == 1 then
+      net.layers[1].bias[1] = 50
+      local ok, err = pcall(sn.train, { nets = { net }, data = data, epochs = 1, backend = backend })
+      nested = ok and "trained" or err
+    end
+  end }
+  assert(tostring(nested):find("sn.train: net 1 is being trained by a job that has not ended", 1, true), tostring(nested))
+  assert(net.layers[1].bias[1] ~= 50, backend .. ": the edit made in progress was replaced")
+  local final = net:params()
+  for epochs = 1, 3 do
+    local alone = start:clone()
+    sn.train { nets = { alone }, data = data, epochs = epochs, backend = backend }
+    local want = epochs == 3 and final or alone:params()
+    for i, v in ipairs(alone:params()) do
+      assert(seen[epochs][i] == v and want[i] == v, ("%s: epoch %d, parameter %d: seen %.9g, trained alone %.9g"):format(
+        backend, epochs, i, seen[epochs][i], v))
+    end
+  end
+end
 print("test_mlp_train ok")
