@@ -23,6 +23,14 @@ end
 -- ("gl", "cpu" or "auto", net:render's), `target` a Target the network is drawn into instead of
 -- a new Image (net:render's; what a window shows), `nonfinite` what a network's NaN or infinite
 -- pixels give (net:render's: a warning, an error, nothing).
+-- scene:gbuffer(where) for scene:render: an error (a view, pose, size or camera outside what the
+-- scene has) is raised at the script's line, under the name the script called.
+local function gbuffer_for_render(scene, where)
+  local ok, g = pcall(scene.gbuffer, scene, where)
+  if ok then return g end
+  error((tostring(g):gsub("^scene:gbuffer", "scene:render")), 3)
+end
+
 local RENDER_KEYS = { view = true, pose = true, camera = true, light = true, size = true, values = true,
                       backend = true, target = true, nonfinite = true }
 function Scene.render(scene, what, options)
@@ -48,7 +56,7 @@ function Scene.render(scene, what, options)
             .. "drawn by its shader into a new Image", 2)
     end
     where.attributes = what:attributes()
-    local g = scene:gbuffer(where)
+    local g = gbuffer_for_render(scene, where)
     local light = scene:light()
     if options.light then
       light = { dir = options.light.dir or light.dir, color = options.light.color or light.color }
@@ -70,7 +78,7 @@ function Scene.render(scene, what, options)
       if not conditions[name] then attributes[#attributes + 1] = name end
     end
     where.attributes = attributes
-    local g = scene:gbuffer(where)
+    local g = gbuffer_for_render(scene, where)
     -- Through pcall: the G-buffer goes back to the pool whatever happens, and an error (C
     -- functions called by pcall carry no position) is raised at the caller's line.
     local ok, img = pcall(what.render, what, g, { values = options.values, backend = options.backend,
