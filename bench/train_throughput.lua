@@ -24,7 +24,8 @@
 -- this machine's measured FP32 FMA peak (build/fma_peak) over the cores the job can use (one
 -- per network, at most the machine's threads): "%avx2" against the AVX2 peak, "%avx512"
 -- against the AVX-512 one. The last lines name each backend's device (the cpu
--- backend's kernel: avx512, avx2 or sse2; SHADENET_CPU_KERNEL picks one).
+-- backend's kernel: avx512, avx2 or sse2; SHADENET_CPU_KERNEL picks one) and the gl backend's
+-- training kernel (SHADENET_GL_KERNEL=per_sample|per_net forces one).
 local sn = require "shadenet"
 package.path = (arg[0]:match("^(.*)/[^/]*$") or ".") .. "/?.lua;" .. package.path
 local roofline = require "roofline"
@@ -182,5 +183,10 @@ for _, backend in ipairs(backends) do
 end
 for _, backend in ipairs(backends) do
   if devices[backend] then print(("%s: %s"):format(backend, devices[backend])) end
+end
+if devices.gl then
+  local forced = os.getenv("SHADENET_GL_KERNEL")
+  print("gl kernel: " .. ((forced and forced ~= "" and forced ~= "auto") and forced .. " (SHADENET_GL_KERNEL)" or
+        (sn.gl_info().software and "per_net for networks that fit it, else per_sample (a CPU renderer)" or "per_sample (a GPU)")))
 end
 print(("peak resident memory (VmHWM): %.1f MiB"):format(status("VmHWM") / 1024))

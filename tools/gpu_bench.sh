@@ -6,9 +6,11 @@
 #     --setup-gl      first make OpenGL through EGL reach NVIDIA's driver (below)
 #     --relocate      make a carried build/ work in this copy of the repository (below)
 #     --build         configure and build build/ (Release) first; by default build/ must exist
-#     --skip S,...    leave steps out: gl_info, train, render, tables_4_5_4_7, table_4_1, ctest
+#     --skip S,...    leave steps out: gl_info, train, train_per_net, render, tables_4_5_4_7,
+#                     table_4_1, ctest
 #     --libs DIR      prepend DIR to LD_LIBRARY_PATH (runtime libraries carried to the machine:
-#                     tools/pack_runtime.sh packs them)
+#                     tools/pack_runtime.sh packs them; with stand-ins, OpenImageIO reads a
+#                     file with the reader of its extension alone)
 #     --shared DIR    the shared meshes folder (../shared) when it is not beside the repository
 #
 # Steps, each with a time limit, timed, its output in OUTDIR/NAME.log; one failing or running out
@@ -16,7 +18,8 @@
 #   machine         nvidia-smi, CPU, load, commit
 #   gl_info         build/shadenet --gl-info, on the auto and device EGL platforms
 #   train           bench/train_throughput.lua gl with 1, 2, 8, 32, 360, 1440 and 5760 networks per
-#                   job (SHADENET_BENCH_COUNTS overrides the list)
+#                   job (SHADENET_BENCH_COUNTS overrides the list), the device's kernel
+#   train_per_net   the same with the per-network kernel (SHADENET_GL_KERNEL=per_net), 4x6 and 8x8
 #   render          bench/render_throughput.lua, 640x480 .. 1920x1080, gl and cpu backends
 #   tables_4_5_4_7  scripts/tables_4_5_4_7_performance.lua, full mode, into OUTDIR/results/
 #   table_4_1       scripts/table_4_1_phong.lua --backend gl, full mode, into OUTDIR/results/
@@ -28,7 +31,8 @@
 # Without gnuplot the scripts leave their plots as gnuplot scripts (SHADENET_PLOTS=later):
 # unpack the tarball where gnuplot is and run tools/draw_plots.sh OUTDIR.
 # Benchmarks run one at a time, before the test suite, so that nothing else loads the machine.
-# The limits (SHADENET_LIMIT_<STEP> seconds overrides one) add up to 570 s: one 10-minute call.
+# The limits (SHADENET_LIMIT_<STEP> seconds overrides one) add up to 630 s, more than one 10-minute
+# device call allows: split the steps over two calls with --skip, or lower limits.
 #
 # --setup-gl, for a machine whose image has NVIDIA's driver but no glvnd loader (the lent H100 and
 # H200 machines): unpack the glvnd packages carried in .gl/ (here: `apt-get download libegl1
@@ -59,7 +63,7 @@ while [ $# -gt 0 ]; do
   shift
 done
 [ $# -eq 1 ] || { echo "gpu_bench.sh: expected one OUTDIR after the options (got $#)" >&2; usage >&2; exit 2; }
-steps="gl_info train render tables_4_5_4_7 table_4_1 ctest"
+steps="gl_info train train_per_net render tables_4_5_4_7 table_4_1 ctest"
 for s in ${skip//,/ }; do
   [[ " $steps " == *" $s "* ]] || { echo "gpu_bench.sh: --skip: unknown step '$s' (valid: ${steps// /, })" >&2; exit 2; }
 done
@@ -68,7 +72,13 @@ out=$(cd "$1" && pwd)
 summary=$out/summary.txt
 shadenet=$root/build/shadenet
 
-if [ -n "$libs" ]; then export LD_LIBRARY_PATH=$(cd "$libs" && pwd)${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}; fi
+if [ -n "$libs" ]; then
+  export LD_LIBRARY_PATH=$(cd "$libs" && pwd)${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}
+  # Stood-in readers (tools/pack_runtime.sh) are offered no file the reader of its extension refused.
+  if [ -s "$libs/stand-ins.txt" ]; then
+    export OPENIMAGEIO_OPTIONS=try_all_readers=0${OPENIMAGEIO_OPTIONS:+,$OPENIMAGEIO_OPTIONS}
+  fi
+fi
 
 if [ $setup = 1 ]; then
   shopt -s nullglob
@@ -138,6 +148,7 @@ machine() {
   echo "load: $(cat /proc/loadavg)"
   echo "LD_LIBRARY_PATH=${LD_LIBRARY_PATH:-}"
   echo "__EGL_VENDOR_LIBRARY_FILENAMES=${__EGL_VENDOR_LIBRARY_FILENAMES:-}"
+  echo "OPENIMAGEIO_OPTIONS=${OPENIMAGEIO_OPTIONS:-}"
 }
 gl_info() {
   "$shadenet" --gl-info
@@ -162,6 +173,7 @@ results=$out/results
 if [ $quick = 1 ]; then
   step gl_info 30 gl_info
   step train 60 "$shadenet" bench/train_throughput.lua gl "${SHADENET_BENCH_COUNTS:-1,2}" 1 tanh 4x6
+  step train_per_net 60 env SHADENET_GL_KERNEL=per_net "$shadenet" bench/train_throughput.lua gl "${SHADENET_BENCH_COUNTS:-1,2}" 1 tanh 4x6
   step render 60 "$shadenet" bench/render_throughput.lua 1 gl auto 4x4 160x120,320x240
   step tables_4_5_4_7 60 "$shadenet" scripts/tables_4_5_4_7_performance.lua --quick --backend gl \
     --out "$results/tables_4_5_4_7_performance"
@@ -170,6 +182,8 @@ if [ $quick = 1 ]; then
 else
   step gl_info 15 gl_info
   step train 120 "$shadenet" bench/train_throughput.lua gl "${SHADENET_BENCH_COUNTS:-1,2,8,32,360,1440,5760}"
+  step train_per_net 60 env SHADENET_GL_KERNEL=per_net "$shadenet" bench/train_throughput.lua gl \
+    "${SHADENET_BENCH_COUNTS:-1,2,8,32,360,1440,5760}" 1 tanh 4x6,8x8
   step render 90 "$shadenet" bench/render_throughput.lua 3 gl,cpu
   step tables_4_5_4_7 90 "$shadenet" scripts/tables_4_5_4_7_performance.lua --out "$results/tables_4_5_4_7_performance"
   step table_4_1 105 "$shadenet" scripts/table_4_1_phong.lua --backend gl --out "$results/table_4_1_phong"

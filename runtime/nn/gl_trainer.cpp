@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <map>
 #include <memory>
@@ -23,6 +24,20 @@
 namespace sn::nn {
 
 namespace {
+
+using Kernel = GlTrainOptions::Kernel;
+
+// The options' kernel, or where they leave it automatic SHADENET_GL_KERNEL's, so that a benchmark
+// can price both kernels on one device without a rebuild.
+Kernel kernel_in_use(Kernel asked) {
+  const char* force = std::getenv("SHADENET_GL_KERNEL");
+  if (asked != Kernel::automatic || !force || !*force) return asked;
+  const std::string name = force;
+  if (name == "auto") return Kernel::automatic;
+  if (name == "per_sample") return Kernel::per_sample;
+  if (name == "per_net") return Kernel::per_net;
+  throw std::invalid_argument("SHADENET_GL_KERNEL='" + name + "': unknown gl training kernel (valid: auto, per_sample, per_net)");
+}
 
 // Mirrors NetControl in shaders/include/mlp/train_io.glsl (std430).
 struct GlControl {
@@ -194,12 +209,12 @@ class Job {
     }
     for (Group& g : groups_) {
       const std::size_t P = g.spec.param_count(), PQ = padded_chunks(g.spec), n = g.runs.size();
-      using Kernel = GlTrainOptions::Kernel;
+      const Kernel kernel = kernel_in_use(opt_.kernel);
       const bool want_per_net =
-          opt_.kernel == Kernel::per_net || (opt_.kernel == Kernel::automatic && gl::current().info().software);
+          kernel == Kernel::per_net || (kernel == Kernel::automatic && gl::current().info().software);
       const bool data_fits = buf_.train_x->count() <= gl::BufferTexture::max_texels();
       g.layout = plan_train_layout(g.spec, cfg_.batch, max_shared, want_per_net && data_fits);
-      if (opt_.kernel == Kernel::per_net && !g.layout.per_net)
+      if (kernel == Kernel::per_net && !g.layout.per_net)
         throw std::invalid_argument("gl trainer: " + g.spec.describe() +
                                     (data_fits ? " is too large for the per-network kernel"
                                                : ": the dataset is larger than the driver's texture buffers, which the "

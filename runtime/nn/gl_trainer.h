@@ -38,7 +38,8 @@ struct GlTrainOptions {
   // layouts that keep arrays in a storage buffer.
   std::size_t max_shared_bytes = 0;
   // The kernel: automatic = one invocation per network for small networks on a CPU renderer
-  // (nn/mlp_per_net.h), else one per sample. Tests force each on the same networks.
+  // (nn/mlp_per_net.h), else one per sample; SHADENET_GL_KERNEL=auto|per_sample|per_net forces
+  // one where this is automatic. Tests force each on the same networks.
   enum class Kernel { automatic, per_sample, per_net };
   Kernel kernel = Kernel::automatic;
 };

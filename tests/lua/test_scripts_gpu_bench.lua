@@ -16,7 +16,7 @@ local dir = base .. "/run"
 local ok = sh(("SHADENET_PLOTS=later tools/gpu_bench.sh --quick --skip ctest %s > %s.out 2>&1"):format(dir, dir))
 local summary = read(dir .. "/summary.txt")
 assert(ok, "gpu_bench.sh --quick failed:\n" .. read(dir .. ".out"))
-for _, s in ipairs { "machine", "gl_info", "train", "render", "tables_4_5_4_7", "table_4_1" } do
+for _, s in ipairs { "machine", "gl_info", "train", "train_per_net", "render", "tables_4_5_4_7", "table_4_1" } do
   assert(summary:match("\n" .. s .. " +ok +[%d.]+ s  %(limit %d+ s%)  " .. s .. "%.log"), s .. " not ok:\n" .. summary)
 end
 assert(summary:match("\nctest +skipped"), summary)
@@ -25,6 +25,8 @@ local gl = read(dir .. "/gl_info.log")
 assert(gl:match("\nplatform: %a+ %(EGL%)\n") and gl:match("SHADENET_EGL_PLATFORM=device:\nshadenet [%d.]+\nplatform: device %(EGL%)\n"), gl)
 local train = read(dir .. "/train.log")
 assert(train:match("\ngl +4x6 +tanh +none +6 +1 +%d+") and train:match("\ngl +4x6 +tanh +none +6 +2 +%d+"), train)
+local per_net = read(dir .. "/train_per_net.log")
+assert(per_net:match("\ngl +4x6 +tanh +none +6 +2 +%d+") and per_net:find("\ngl kernel: per_net (SHADENET_GL_KERNEL)\n", 1, true), per_net)
 assert(read(dir .. "/render.log"):match("Table 4%.6 .*\n4x4 +[%d.]+ | %- +[%d.]+ | %-\n"), read(dir .. "/render.log"))
 assert(#C.csv(dir .. "/results/tables_4_5_4_7_performance/table_render.csv") == 2 * 4, "two sizes x four networks")
 assert(read(dir .. "/results/table_4_1_phong/run.json"):find('"quick": true', 1, true))
@@ -41,7 +43,7 @@ end
 
 -- A broken step (no EGL platform of that name) fails alone; the others run, the tarball is written.
 local bad = base .. "/bad"
-ok = sh(("SHADENET_EGL_PLATFORM=gpu tools/gpu_bench.sh --quick --skip train,render,ctest %s > %s.out 2>&1"):format(bad, bad))
+ok = sh(("SHADENET_EGL_PLATFORM=gpu tools/gpu_bench.sh --quick --skip train,train_per_net,render,ctest %s > %s.out 2>&1"):format(bad, bad))
 assert(not ok, "gpu_bench.sh should fail when a step fails")
 summary = read(bad .. "/summary.txt")
 assert(summary:match("\nmachine +ok"), summary)
