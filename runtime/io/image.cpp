@@ -85,11 +85,18 @@ std::vector<unsigned char> encode_image(const Image& img, const std::string& nam
   if (!(is_float || ext == ".png" || ext == ".jpg" || ext == ".jpeg" || ext == ".bmp"))
     throw std::runtime_error("cannot save '" + name + "': unknown image extension '" + ext +
                              "' (valid: .png, .exr, .jpg, .bmp, .tif, .hdr)");
+  if (ext == ".hdr" && img.channels != 3) {
+    // Radiance HDR holds RGB only: alpha is dropped, a grey image's value goes to all three.
+    Image rgb(img.width, img.height, 3);
+    for (std::size_t p = 0; p < std::size_t(img.width) * std::size_t(img.height); ++p)
+      for (int c = 0; c < 3; ++c) rgb.pixels[3 * p + std::size_t(c)] = img.pixels[p * std::size_t(img.channels) + std::size_t(img.channels < 3 ? 0 : c)];
+    return image_codec().encode(rgb, nullptr, name);
+  }
   if (is_float) return image_codec().encode(img, nullptr, name);
   std::vector<unsigned char> bytes(img.pixels.size());
   for (size_t i = 0; i < bytes.size(); ++i) {
     float v = img.pixels[i];
-    v = std::isfinite(v) ? std::clamp(v, 0.f, 1.f) : 0.f;
+    v = std::isnan(v) ? 0.f : std::clamp(v, 0.f, 1.f);  // +inf is as bright as it gets
     bytes[i] = (unsigned char)(v * 255.f + 0.5f);
   }
   return image_codec().encode(img, &bytes, name);

@@ -1,6 +1,8 @@
 -- Image functions at their edges (issue 13's findings): heatmaps of images 1-3 pixels tall used
 -- to abort the process inside OpenImageIO; sn.image.mse read outside the mask with
--- mask_channel = 0 (silently wrong) and crashed with a negative one.
+-- mask_channel = 0 (silently wrong) and crashed with a negative one. Saving: a PNG writes NaN as 0
+-- and +inf as full brightness (inf was 0, the darkest), and Radiance HDR, which holds RGB alone,
+-- takes an image of 4 channels (alpha dropped) or 1 (grey to all three); it refused both.
 local sn = require "shadenet"
 
 for _, h in ipairs { 1, 2, 3 } do
@@ -20,4 +22,26 @@ for _, case in ipairs { { { mask = a, mask_channel = 0 }, "mask channel 0 outsid
   local ok, err = pcall(sn.image.mse, a, a, case[1])
   assert(not ok and err:find(case[2], 1, true), tostring(err))
 end
+local dir = os.tmpname()
+os.remove(dir)
+sn.fs.mkdir(dir)
+local img = sn.image.new { width = 2, height = 1 }
+img:set(1, 1, { 1 / 0, 0 / 0, -1 / 0, 1 })
+img:set(2, 1, { 3.5, 0.25, 0.75, 1 })
+img:save(dir .. "/edges.png")
+local png = sn.image.load(dir .. "/edges.png")
+assert(table.concat(png:get(1, 1), " ") == "1 0 0 1", "inf, NaN, -inf: " .. table.concat(png:get(1, 1), " "))
+img:set(1, 1, { 1, 2, 3, 0.5 })
+img:save(dir .. "/rgba.hdr")
+local hdr = sn.image.load(dir .. "/rgba.hdr")
+assert(select(3, hdr:size()) == 3, "HDR holds RGB")
+for x, want in ipairs { { 1, 2, 3 }, { 3.5, 0.25, 0.75 } } do
+  for c = 1, 3 do  -- RGBE keeps 8 bits of mantissa per channel
+    assert(math.abs(hdr:get(x, 1)[c] - want[c]) <= want[c] / 64, ("hdr %d,1 channel %d: %g"):format(x, c, hdr:get(x, 1)[c]))
+  end
+end
+local grey = sn.image.new { width = 1, height = 1, channels = 1, fill = 0.75 }
+grey:save(dir .. "/grey.hdr")
+assert(table.concat(sn.image.load(dir .. "/grey.hdr"):get(1, 1), " ") == "0.75 0.75 0.75", "grey to all three")
+os.execute("rm -rf '" .. dir .. "'")
 print("ok")
