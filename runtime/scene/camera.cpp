@@ -19,6 +19,10 @@ bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.
 
 }  // namespace
 
+void check_fov(double fov_y) {
+  if (!(fov_y > 0 && fov_y < 180)) throw std::invalid_argument("camera: fov must be in (0, 180) degrees, got " + io::number_text(fov_y));
+}
+
 Camera::Camera(glm::dvec3 eye, glm::dvec3 target, glm::dvec3 up, double fov_y, double aspect, double near,
                double far)
     : eye_(eye), target_(target), up_(up), fov_y_(fov_y), aspect_(aspect), near_(near), far_(far) {
@@ -29,7 +33,7 @@ Camera::Camera(glm::dvec3 eye, glm::dvec3 target, glm::dvec3 up, double fov_y, d
   // up nearly parallel to the view direction leaves look-at without a sideways axis
   if (!(glm::length(glm::cross(forward / dist, up)) > 1e-6 * glm::length(up)))
     throw std::invalid_argument("camera: up is parallel to the viewing direction (or zero); pick another up");
-  if (!(fov_y > 0 && fov_y < 180)) throw std::invalid_argument("camera: fov must be in (0, 180) degrees, got " + io::number_text(fov_y));
+  check_fov(fov_y);
   if (!(aspect >= 0 && std::isfinite(aspect)))
     throw std::invalid_argument("camera: aspect must be positive (or left out to follow the target), got " + io::number_text(aspect));
   if (!(near > 0 && std::isfinite(near))) throw std::invalid_argument("camera: near must be > 0, got " + io::number_text(near));
@@ -68,7 +72,11 @@ std::vector<Camera> orbit(const OrbitOptions& o) {
   for (int k = 0; k < o.count; ++k) {
     double a = 2 * kPi * k / o.count;
     glm::dvec3 offset(std::cos(e) * std::sin(a), std::sin(e), std::cos(e) * std::cos(a));
-    cams.emplace_back(o.target + o.distance * offset, o.target, glm::dvec3(0, 1, 0), o.fov_y, o.aspect, o.near, o.far);
+    // Near a pole the world's up is (almost) the viewing direction; the direction of rising
+    // elevation is what it projects to elsewhere, and is never parallel to it.
+    const glm::dvec3 up = std::cos(e) > 1e-3 ? glm::dvec3(0, 1, 0)
+                                             : glm::dvec3(-std::sin(e) * std::sin(a), std::cos(e), -std::sin(e) * std::cos(a));
+    cams.emplace_back(o.target + o.distance * offset, o.target, up, o.fov_y, o.aspect, o.near, o.far);
   }
   return cams;
 }

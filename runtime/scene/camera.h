@@ -12,6 +12,9 @@ struct Ray {
   glm::dvec3 origin, direction;  // direction is unit length
 };
 
+// Throws unless 0 < fov_y < 180 (degrees): every camera's field of view.
+void check_fov(double fov_y);
+
 class Camera {
  public:
   // Throws when eye == target, `up` is parallel to the viewing direction, fov_y is outside

@@ -54,6 +54,7 @@ GBuffer Scene::gbuffer(int view, const std::vector<std::string>& attributes, int
 
 std::vector<Camera> framing_orbit(const Bounds& b, int count, double elevation, double fov_y,
                                   std::optional<double> distance) {
+  check_fov(fov_y);  // before the distance that frames the mesh is computed from it
   double r = std::max(b.radius(), 1e-6);
   double d = distance ? *distance : 1.1 * r / std::sin(0.5 * fov_y * 3.14159265358979323846 / 180.0);
   OrbitOptions o;

@@ -4,8 +4,11 @@
 
 #include <cmath>
 #include <functional>
+#include <optional>
+#include <vector>
 
 #include "scene/camera.h"
+#include "scene/scene.h"
 
 using namespace sn::scene;
 
@@ -106,6 +109,25 @@ TEST(Camera, OrbitPlacesCamerasEvenlyAtDistanceAndElevation) {
   EXPECT_NEAR(cams[0].eye().z, 3 + 4 * std::cos(kPi / 6), 1e-12);
 }
 
+TEST(Camera, OrbitNextToAPoleLooksAtItsTarget) {
+  // Within 1e-6 of the world's up the look-at had no sideways axis; every elevation inside
+  // (-90, 90) places a camera whose picture is upright along the rising elevation.
+  for (double elevation : {89.9999999, -89.9999999, 89.95, 89.0}) {
+    OrbitOptions o;
+    o.count = 4;
+    o.elevation = elevation;
+    std::vector<Camera> cams;
+    ASSERT_EQ(error_of([&] { cams = orbit(o); }), "") << elevation;
+    for (const Camera& c : cams) {
+      const glm::dvec3 forward = glm::normalize(c.target() - c.eye());
+      EXPECT_NEAR(std::asin(-forward.y) * 180 / kPi, elevation, 1e-6) << elevation;
+      const glm::dvec4 target_in_view = c.view() * glm::dvec4(c.target(), 1.0);
+      EXPECT_NEAR(target_in_view.x, 0, 1e-9);
+      EXPECT_NEAR(target_in_view.y, 0, 1e-9);
+    }
+  }
+}
+
 TEST(Camera, ImpossibleCamerasAreClearErrors) {
   EXPECT_EQ(error_of([] { Camera({1, 1, 1}, {1, 1, 1}); }), "camera: eye and target are the same point");
   EXPECT_NE(error_of([] { Camera({0, 3, 0}, {0, 0, 0}); }).find("up is parallel"), std::string::npos);
@@ -122,4 +144,9 @@ TEST(Camera, ImpossibleCamerasAreClearErrors) {
   o.elevation = 0;
   o.count = 0;
   EXPECT_NE(error_of([&] { orbit(o); }).find("count must be 1.."), std::string::npos);
+  // A field of view of 0 names the field of view, not the infinite distance it would frame at.
+  EXPECT_EQ(error_of([] { framing_orbit(Bounds{{-1, -1, -1}, {1, 1, 1}}, 4, 20, 0, std::nullopt); }),
+            "camera: fov must be in (0, 180) degrees, got 0");
+  EXPECT_EQ(error_of([] { check_fov(180); }), "camera: fov must be in (0, 180) degrees, got 180");
+  EXPECT_EQ(error_of([] { check_fov(60); }), "");
 }
