@@ -74,9 +74,11 @@ shadenet=$root/build/shadenet
 
 if [ -n "$libs" ]; then
   export LD_LIBRARY_PATH=$(cd "$libs" && pwd)${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}
-  # Stood-in readers (tools/pack_runtime.sh) are offered no file the reader of its extension refused.
+  # Stood-in readers (tools/pack_runtime.sh) are offered no file the reader of its extension refused;
+  # gnuplot, which would load the stand-ins through LD_LIBRARY_PATH too, is left for later.
   if [ -s "$libs/stand-ins.txt" ]; then
     export OPENIMAGEIO_OPTIONS=try_all_readers=0${OPENIMAGEIO_OPTIONS:+,$OPENIMAGEIO_OPTIONS}
+    export SHADENET_PLOTS=later
   fi
 fi
 
