@@ -9,6 +9,9 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
+#include <cstdlib>
+#include <stdexcept>
 
 namespace sn::gl {
 
@@ -19,7 +22,40 @@ std::string gl_string(GLenum name) {
   const GLubyte* s = glGetString(name);
   return s ? reinterpret_cast<const char*>(s) : "";
 }
+
+const char* debug_severity(GLenum s) {
+  switch (s) {
+    case GL_DEBUG_SEVERITY_HIGH: return "high";
+    case GL_DEBUG_SEVERITY_MEDIUM: return "medium";
+    case GL_DEBUG_SEVERITY_LOW: return "low";
+    default: return "notification";
+  }
+}
+
+void GLAPIENTRY print_debug_message(GLenum, GLenum type, GLuint id, GLenum severity, GLsizei, const GLchar* message,
+                                    const void* all) {
+  if (severity == GL_DEBUG_SEVERITY_NOTIFICATION && !all) return;
+  std::fprintf(stderr, "GL debug (%s%s, id %u): %s\n", debug_severity(severity), type == GL_DEBUG_TYPE_ERROR ? ", error" : "",
+               id, message);
+}
 }  // namespace
+
+std::string debug_output_choice() {
+  const char* env = std::getenv("SHADENET_GL_DEBUG");
+  const std::string choice = env ? env : "";
+  if (!choice.empty() && choice != "1" && choice != "all" && choice != "0")
+    throw std::runtime_error("SHADENET_GL_DEBUG='" + choice + "': unknown setting (valid: 0, 1, all)");
+  return choice == "0" ? "" : choice;
+}
+
+void Context::enable_debug_output() {
+  const std::string choice = debug_output_choice();
+  if (choice.empty()) return;
+  // Synchronous, so that a message is printed inside the call that caused it.
+  glEnable(GL_DEBUG_OUTPUT);
+  glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
+  glDebugMessageCallback(print_debug_message, choice == "all" ? this : nullptr);
+}
 
 void Context::query_info() {
   info_.vendor = gl_string(GL_VENDOR);
@@ -37,6 +73,7 @@ void Context::query_info() {
   glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &ssbo);
   info_.max_ssbo_size = ssbo;
   glGetIntegerv(GL_MAX_UNIFORM_BLOCK_SIZE, &info_.max_uniform_block_size);
+  enable_debug_output();
 }
 
 std::string info_text(const ContextInfo& i) {
@@ -46,6 +83,7 @@ std::string info_text(const ContextInfo& i) {
   if (i.platform != "window") {
     t += "EGL vendor: " + i.egl_vendor + "\n";
     t += "EGL version: " + i.egl_version + "\n";
+    if (!i.egl_devices.empty()) t += "EGL devices: " + i.egl_devices + "\n";
     if (i.platform == "device") {
       t += "EGL device extensions: " + or_none(i.egl_device_extensions) + "\n";
       t += "EGL device file: " + or_none(i.egl_device_file) + "\n";
@@ -85,6 +123,23 @@ unsigned take_gl_errors() {
     if (first == GL_NO_ERROR) first = e;
   }
   return first;
+}
+
+std::string hex_code(unsigned code) {
+  char buf[16];
+  std::snprintf(buf, sizeof buf, "0x%x", code);
+  return buf;
+}
+
+std::string gl_error_text(unsigned error) {
+  switch (error) {
+    case GL_INVALID_ENUM: return "GL_INVALID_ENUM (0x500)";
+    case GL_INVALID_VALUE: return "GL_INVALID_VALUE (0x501)";
+    case GL_INVALID_OPERATION: return "GL_INVALID_OPERATION (0x502)";
+    case GL_OUT_OF_MEMORY: return "GL_OUT_OF_MEMORY (0x505)";
+    case GL_INVALID_FRAMEBUFFER_OPERATION: return "GL_INVALID_FRAMEBUFFER_OPERATION (0x506)";
+    default: return hex_code(error);
+  }
 }
 
 }  // namespace sn::gl

@@ -19,12 +19,16 @@ struct ContextInfo {
   std::string egl_vendor, egl_version;  // of the EGL display ("" in a window)
   std::string egl_device_extensions;    // of the EGL device ("" on the surfaceless platform)
   std::string egl_device_file;          // its DRM device file or render node, when it has one
+  std::string egl_devices;              // "none (why)" when EGL named no device, else ""
   int max_shared_memory = 0;            // GL_MAX_COMPUTE_SHARED_MEMORY_SIZE, bytes
   int max_workgroup_size[3] = {0, 0, 0};  // GL_MAX_COMPUTE_WORK_GROUP_SIZE
   int max_workgroup_invocations = 0;      // GL_MAX_COMPUTE_WORK_GROUP_INVOCATIONS
   long long max_ssbo_size = 0;            // GL_MAX_SHADER_STORAGE_BLOCK_SIZE, bytes
   int max_uniform_block_size = 0;         // GL_MAX_UNIFORM_BLOCK_SIZE, bytes
 };
+
+// SHADENET_GL_DEBUG's setting: "" (off, or unset), "1" or "all"; throws on any other value.
+std::string debug_output_choice();
 
 // ContextInfo as "name: value" lines, the output of `shadenet --gl-info`.
 std::string info_text(const ContextInfo& info);
@@ -53,7 +57,10 @@ class Context {
   virtual void* native_window() { return nullptr; }
 
  protected:
-  void query_info();  // fills info_ once the context is current
+  void query_info();  // fills info_ once the context is current, then enable_debug_output()
+  // SHADENET_GL_DEBUG=1 prints the driver's debug messages (errors, warnings, performance) to
+  // stderr as they happen; =all adds its notifications (where a driver places each buffer).
+  void enable_debug_output();
   ContextInfo info_;
 };
 
@@ -67,5 +74,9 @@ void destroy_current();
 // it before and after, so a failure earlier (say, a render target too large) is not blamed on
 // the next small buffer.
 unsigned take_gl_errors();
+// "0x502": a GL or EGL error code as the specifications print it.
+std::string hex_code(unsigned code);
+// "GL_INVALID_OPERATION (0x502)", or the code alone for one that is not a standard error.
+std::string gl_error_text(unsigned error);
 
 }  // namespace sn::gl

@@ -47,15 +47,27 @@ struct Candidate {
   bool software = false;         // Mesa's software device (llvmpipe)
 };
 
-// Every EGL device, hardware ones first (in the driver's order).
-std::vector<Candidate> egl_devices() {
+// Every EGL device, hardware ones first (in the driver's order); `why` says why there are none.
+std::vector<Candidate> egl_devices(std::string& why) {
   std::vector<Candidate> out;
-  if (!epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_EXT_platform_device") ||
-      !epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_EXT_device_enumeration"))
+  // EGL_EXT_device_base is device_enumeration and device_query in one (EGL_EXT_device_base's
+  // specification): a driver may name only it.
+  if (!epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_EXT_platform_device")) {
+    why = "the EGL client extensions lack EGL_EXT_platform_device";
     return out;
+  }
+  if (!epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_EXT_device_enumeration") &&
+      !epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_EXT_device_base")) {
+    why = "the EGL client extensions lack EGL_EXT_device_enumeration";
+    return out;
+  }
   EGLDeviceEXT devices[16];
   EGLint count = 0;
-  if (!eglQueryDevicesEXT(16, devices, &count)) return out;
+  if (!eglQueryDevicesEXT(16, devices, &count)) {
+    why = "eglQueryDevicesEXT failed (EGL error " + hex_code(unsigned(eglGetError())) + ")";
+    return out;
+  }
+  if (count == 0) why = "eglQueryDevicesEXT found none";
   for (EGLint i = 0; i < count; ++i) {
     Candidate c;
     c.device = devices[i];
@@ -70,10 +82,10 @@ std::vector<Candidate> egl_devices() {
   return out;
 }
 
-// The candidates SHADENET_EGL_PLATFORM allows, in the order they are tried.
-std::vector<Candidate> candidates(const std::string& choice) {
+// The candidates SHADENET_EGL_PLATFORM allows, in the order they are tried; `why` as egl_devices.
+std::vector<Candidate> candidates(const std::string& choice, std::string& why) {
   const bool surfaceless = epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_MESA_platform_surfaceless");
-  std::vector<Candidate> devices = egl_devices(), out;
+  std::vector<Candidate> devices = egl_devices(why), out;
   if (choice == "device") return devices;
   if (choice == "surfaceless") return surfaceless ? std::vector<Candidate>{Candidate{}} : out;
   for (const auto& d : devices)
@@ -98,8 +110,8 @@ class EglContext final : public Context {
     if (!epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_EXT_platform_base"))
       throw std::runtime_error("EGL: EGL_EXT_platform_base is missing (is libegl-mesa0 installed?)");
     const std::string choice = platform_choice();
-    std::string tried;
-    for (const Candidate& c : candidates(choice)) {
+    std::string tried, no_device;
+    for (const Candidate& c : candidates(choice, no_device)) {
       display_ = c.device ? eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, c.device, nullptr)
                           : eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
       tried += c.device ? (c.software ? " device(software)" : " device(" + (c.file.empty() ? "hardware" : c.file) + ")")
@@ -115,7 +127,9 @@ class EglContext final : public Context {
     if (display_ == EGL_NO_DISPLAY)
       throw std::runtime_error("EGL: no display could be initialised (SHADENET_EGL_PLATFORM=" + choice + ", tried:" +
                                (tried.empty() ? " nothing: no EGL device and no surfaceless platform" : tried) +
+                               (no_device.empty() ? "" : "; no EGL device: " + no_device) +
                                "); install libegl-mesa0 and libgl1-mesa-dri, or the GPU's driver");
+    info_.egl_devices = no_device.empty() ? "" : "none (" + no_device + ")";
     const char* vendor = eglQueryString(display_, EGL_VENDOR);
     const char* version = eglQueryString(display_, EGL_VERSION);
     info_.egl_vendor = vendor ? vendor : "";
@@ -129,13 +143,14 @@ class EglContext final : public Context {
       if (!eglChooseConfig(display_, attribs, &config, 1, &n) || n == 0)
         throw std::runtime_error("EGL: no OpenGL config");
     }
+    const EGLint debug = debug_output_choice().empty() ? EGL_FALSE : EGL_TRUE;  // SHADENET_GL_DEBUG
     const EGLint ctx_attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
                                   EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-                                  EGL_NONE};
+                                  EGL_CONTEXT_OPENGL_DEBUG, debug, EGL_NONE};
     context_ = eglCreateContext(display_, config, EGL_NO_CONTEXT, ctx_attribs);
     if (context_ == EGL_NO_CONTEXT)
-      throw std::runtime_error("EGL: could not create an OpenGL 4.5 core context (error 0x" +
-                               hex(eglGetError()) + ")");
+      throw std::runtime_error("EGL: could not create an OpenGL 4.5 core context (error " +
+                               hex_code(unsigned(eglGetError())) + ")");
     if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_))
       throw std::runtime_error("EGL: eglMakeCurrent failed");
     query_info();
@@ -147,11 +162,6 @@ class EglContext final : public Context {
   }
 
  private:
-  static std::string hex(EGLint v) {
-    char buf[16];
-    snprintf(buf, sizeof buf, "%x", v);
-    return buf;
-  }
   EGLDisplay display_ = EGL_NO_DISPLAY;
   EGLContext context_ = EGL_NO_CONTEXT;
 };

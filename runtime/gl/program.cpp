@@ -5,6 +5,8 @@
 #include <regex>
 #include <stdexcept>
 
+#include "gl/context.h"
+
 namespace sn::gl {
 
 namespace {
@@ -248,8 +250,14 @@ void dispatch(Program& p, unsigned gx, unsigned gy, unsigned gz) {
     throw std::invalid_argument("workgroup count " + std::to_string(gx) + "x" + std::to_string(gy) + "x" +
                                 std::to_string(gz) + " is outside 1..(" + std::to_string(max[0]) + "x" +
                                 std::to_string(max[1]) + "x" + std::to_string(max[2]) + ")");
+  take_gl_errors();  // earlier calls' errors are not this dispatch's
   glUseProgram(p.id());
   glDispatchCompute(gx, gy, gz);
+  // A dispatch the driver refuses leaves its outputs as they were: an error, not a silent result.
+  if (GLenum e = take_gl_errors(); e != GL_NO_ERROR)
+    throw std::runtime_error("dispatching " + p.name() + " (" + std::to_string(gx) + "x" + std::to_string(gy) + "x" +
+                             std::to_string(gz) + " workgroups) failed: " + gl_error_text(e) +
+                             " (SHADENET_GL_DEBUG=1 prints the driver's reason)");
   glMemoryBarrier(GL_ALL_BARRIER_BITS);
 }
 

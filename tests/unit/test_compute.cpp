@@ -35,6 +35,24 @@ TEST(Compute, ShaderMatchesCpp) {
   }
 }
 
+// A dispatch the driver refuses (here: its program object deleted behind the Program's back)
+// left the outputs as they were; it is an error naming the program and the GL error.
+TEST(Compute, RefusedDispatchIsAnError) {
+  current();
+  auto p = get_program({.compute = "tests/data/shaders/poly.comp", .defines = {{"LOCAL_SIZE", "32"}}});
+  glDeleteProgram(p->id());
+  try {
+    dispatch(*p, 1);
+    ADD_FAILURE() << "no error";
+  } catch (const std::runtime_error& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("dispatching " + p->name() + " (1x1x1 workgroups) failed: GL_INVALID_VALUE (0x501)"), std::string::npos) << m;
+  }
+  clear_program_cache();
+  EXPECT_EQ(take_gl_errors(), 0u) << "the failed dispatch's errors were taken";
+  EXPECT_EQ(gl_error_text(0x9999), "0x9999");
+}
+
 TEST(Compute, ProgramCacheReusesEqualSources) {
   current();
   auto a = get_program({.compute = "tests/data/shaders/poly.comp", .defines = {{"LOCAL_SIZE", "64"}}});
