@@ -293,8 +293,9 @@ class Job {
     g.control->download(result.data(), 0, ctl.size() * kControlWords);
   }
 
-  // Two probe dispatches of the first network (1 and 2 steps, learning rate 0, nothing
-  // committed) count the loop budget left after them; the difference is one step's cost.
+  // On a software renderer, two probe dispatches of the first network (1 and 2 steps, learning
+  // rate 0, nothing committed) count the loop budget left after them; the difference is one
+  // step's cost. A GPU has no loop limiter and is not probed.
   void plan_chunks(Group& g) {
     auto remaining_after = [&](int steps) {
       std::vector<GlControl> ctl(g.runs.size()), out;
@@ -302,9 +303,10 @@ class Job {
       dispatch(g, ctl, true, out);
       return (long long)out[0].remaining;
     };
-    const long long r1 = remaining_after(1), r2 = remaining_after(2);
+    const bool probe = gl::current().info().software;
+    const long long r1 = probe ? remaining_after(1) : kProbeSentinel, r2 = probe ? remaining_after(2) : kProbeSentinel;
     const long long cost = r1 - r2;
-    g.report.loop_budget = r1;
+    g.report.loop_budget = probe ? r1 : 0;
     g.report.loop_cost_per_step = r1 >= kProbeSentinel ? 0 : cost;
     if (r1 >= kProbeSentinel) {
       g.max_chunk = steps_;  // no limiter: up to one dispatch per epoch, as time allows
