@@ -25,7 +25,8 @@
 #   table_4_1       scripts/table_4_1_phong.lua --backend gl, full mode, into OUTDIR/results/
 #                   (its wall time is in the summary and in its run.json)
 #   ctest           the whole test suite (without the windowed tests when xvfb-run is missing),
-#                   JUnit XML beside the log
+#                   JUnit XML beside the log; the failed tests then again one at a time with the
+#                   driver's debug messages (SHADENET_GL_DEBUG=1) into ctest_rerun.log
 # then OUTDIR/summary.txt (one line per step: status, seconds, limit) and OUTDIR.tar.gz, all of it
 # in one file (a device run returns at most 8 files, each at most 16 MiB, 2 folders deep).
 # Without gnuplot the scripts leave their plots as gnuplot scripts (SHADENET_PLOTS=later):
@@ -97,6 +98,11 @@ if [ $relocate = 1 ]; then
     mkdir -p "$(dirname "$configured")" && ln -s "$root" "$configured"
     echo "--relocate: $configured -> $root"
   fi
+  # The error tests run CMake by the path it had where the build was configured.
+  cmake_used=$(sed -n 's/^CMAKE_COMMAND:INTERNAL=//p' build/CMakeCache.txt 2>/dev/null || true)
+  if [ -n "$cmake_used" ] && [ ! -e "$cmake_used" ] && command -v cmake > /dev/null; then
+    mkdir -p "$(dirname "$cmake_used")" && ln -s "$(command -v cmake)" "$cmake_used" && echo "--relocate: $cmake_used -> $(command -v cmake)"
+  fi
   if [ -n "$shared" ]; then
     for d in "$root/.." "$(dirname "${configured:-$root}")"; do
       [ -e "$d/shared" ] || { ln -s "$(cd "$shared" && pwd)" "$d/shared" && echo "--relocate: $d/shared -> $shared"; }
@@ -162,7 +168,14 @@ run_ctest() {
   local args=(--test-dir build --output-on-failure -j "$(nproc)" --output-junit "$out/ctest.xml")
   command -v xvfb-run > /dev/null || args+=(-LE window)
   [ $quick = 1 ] && args+=(-R '^(lua\.test_egl_platforms|error\.egl_platform_unknown|error\.cli_unknown_option)$')
-  ctest "${args[@]}"
+  ctest "${args[@]}" && return
+  # Failures again, one test at a time and with the driver's debug messages (OUTDIR/ctest_rerun.log):
+  # what fails only beside other tests, and why the driver refused a call.
+  local rc=$?
+  echo "== the failed tests again, one at a time, SHADENET_GL_DEBUG=1 (ctest_rerun.log)"
+  SHADENET_GL_DEBUG=1 ctest --test-dir build --rerun-failed --output-on-failure -j 1 > "$out/ctest_rerun.log" 2>&1 || true
+  grep -E "tests passed|tests failed" "$out/ctest_rerun.log" || true
+  return $rc
 }
 
 export out quick shadenet
