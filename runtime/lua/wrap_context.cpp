@@ -21,6 +21,7 @@ int w_gl_info(lua_State* L) {
   lua_pushboolean(L, i.software), lua_setfield(L, -2, "software");
   str("platform", i.platform), str("egl_vendor", i.egl_vendor), str("egl_version", i.egl_version);
   str("egl_device_extensions", i.egl_device_extensions), str("egl_device_file", i.egl_device_file);
+  str("egl_devices", i.egl_devices);
   num("max_shared_memory", i.max_shared_memory);
   lua_createtable(L, 3, 0);
   for (int k = 0; k < 3; ++k) lua_pushinteger(L, i.max_workgroup_size[k]), lua_rawseti(L, -2, k + 1);
