@@ -17,6 +17,12 @@ function C.tmpdir(tag)
   return d
 end
 
+-- A child script: `source` written as child.lua in a fresh temporary folder; its path and the folder.
+function C.child(tag, source)
+  local dir = C.tmpdir(tag)
+  return sn.fs.write(dir .. "/child.lua", source), dir
+end
+
 local function sh_quote(s) return "'" .. tostring(s):gsub("'", "'\\''") .. "'" end
 
 -- Runs `shadenet SCRIPT ARGS...`; returns exit code and output (stdout + stderr).

@@ -2,12 +2,9 @@
 -- them (a GL error made through the FFI here), =all adds notifications, 0 or unset prints none,
 -- and any other value is an error naming the valid ones. A whole train and render under it
 -- raises no GL error.
-local sn = require "shadenet"
 local C = require "script_check"
 
-local base = C.tmpdir("gl_debug")
-local child = base .. "/child.lua"
-sn.fs.write(child, [[
+local child, base = C.child("gl_debug", [[
 local sn = require "shadenet"
 local ffi = require "ffi"
 ffi.cdef [=[
@@ -32,10 +29,13 @@ local function run(setting, what)
   return code, out
 end
 
-local code, out = run("1", "error")
-assert(code == 0, out)
-local message = out:find("GL debug %(high, error, id %d+%): [^\n]*GL_INVALID_OPERATION")
-assert(message and message < out:find("after the call", 1, true), "the message, inside the call:\n" .. out)
+for _, setting in ipairs { "1", "all" } do
+  local code, out = run(setting, "error")
+  assert(code == 0, out)
+  local message = out:find("GL debug %(high, error, id %d+%): [^\n]*GL_INVALID_OPERATION")
+  assert(message and message < out:find("after the call", 1, true), setting .. ": the message, inside the call:\n" .. out)
+end
+local code, out
 for _, setting in ipairs { false, "0", "" } do
   code, out = run(setting or nil, "error")
   assert(code == 0 and not out:find("GL debug", 1, true), tostring(setting) .. ":\n" .. out)

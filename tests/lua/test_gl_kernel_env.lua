@@ -5,9 +5,7 @@
 local sn = require "shadenet"
 local C = require "script_check"
 
-local base = C.tmpdir("gl_kernel")
-local child = base .. "/child.lua"
-sn.fs.write(child, [[
+local child, base = C.child("gl_kernel", [[
 local sn = require "shadenet"
 local scene = sn.scene { mesh = "meshes/test_blob.glb", size = { 64, 48 }, views = { count = 2, elevation = 20 } }
 local data = scene:dataset { inputs = { "normal", "view" }, target = sn.lighting.phong {}, split = 0.8, seed = 3 }
