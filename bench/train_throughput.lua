@@ -186,7 +186,8 @@ for _, backend in ipairs(backends) do
 end
 if devices.gl then
   local forced = os.getenv("SHADENET_GL_KERNEL")
-  print("gl kernel: " .. ((forced and forced ~= "" and forced ~= "auto") and forced .. " (SHADENET_GL_KERNEL)" or
-        (sn.gl_info().software and "per_net for networks that fit it, else per_sample (a CPU renderer)" or "per_sample (a GPU)")))
+  local rule = sn.gl_info().software and "per_net for networks that fit it, else per_sample (a CPU renderer)"
+               or "per_sample (a GPU)"
+  print("gl kernel: " .. ((forced and forced ~= "" and forced ~= "auto") and forced .. " (SHADENET_GL_KERNEL)" or rule))
 end
 print(("peak resident memory (VmHWM): %.1f MiB"):format(status("VmHWM") / 1024))

@@ -5,9 +5,9 @@
 # and the image module load beyond the C runtime and the GL loaders, and the build's programs and
 # test files (build/ without CMake's objects and the core library).
 #
-# OpenImageIO links the readers of formats shadenet never reads or writes (movies through FFmpeg and
-# OpenCV, DICOM, OpenVDB, camera raw, HEIF): 94% of its libraries' bytes. Those are packed as
-# stand-ins (tools/stub_library.sh: the same names and symbols, no code), listed in
+# OpenImageIO links the readers of formats shadenet never reads or writes (movies through FFmpeg
+# and OpenCV, DICOM, OpenVDB, camera raw, HEIF): 95% of the bytes of the libraries it loads. Those
+# are packed as stand-ins (tools/stub_library.sh: the same names and symbols, no code), listed in
 # lib/stand-ins.txt; their own dependencies are left out. tools/gpu_bench.sh --libs then sets
 # OPENIMAGEIO_OPTIONS=try_all_readers=0, so that a file the reader of its extension refuses is not
 # offered to the stood-in readers (a call into one aborts, naming it).

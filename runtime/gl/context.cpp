@@ -32,11 +32,12 @@ const char* debug_severity(GLenum s) {
   }
 }
 
+// `all` (the callback's user pointer) is non-null when notifications are printed too.
 void GLAPIENTRY print_debug_message(GLenum, GLenum type, GLuint id, GLenum severity, GLsizei, const GLchar* message,
                                     const void* all) {
   if (severity == GL_DEBUG_SEVERITY_NOTIFICATION && !all) return;
-  std::fprintf(stderr, "GL debug (%s%s, id %u): %s\n", debug_severity(severity), type == GL_DEBUG_TYPE_ERROR ? ", error" : "",
-               id, message);
+  std::fprintf(stderr, "GL debug (%s%s, id %u): %s\n", debug_severity(severity),
+               type == GL_DEBUG_TYPE_ERROR ? ", error" : "", id, message);
 }
 }  // namespace
 

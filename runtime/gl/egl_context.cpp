@@ -143,11 +143,11 @@ class EglContext final : public Context {
       if (!eglChooseConfig(display_, attribs, &config, 1, &n) || n == 0)
         throw std::runtime_error("EGL: no OpenGL config");
     }
-    const EGLint debug = debug_output_choice().empty() ? EGL_FALSE : EGL_TRUE;  // SHADENET_GL_DEBUG
-    const EGLint ctx_attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
-                                  EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-                                  EGL_CONTEXT_OPENGL_DEBUG, debug, EGL_NONE};
-    context_ = eglCreateContext(display_, config, EGL_NO_CONTEXT, ctx_attribs);
+    std::vector<EGLint> ctx_attribs = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
+                                       EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT};
+    if (!debug_output_choice().empty()) ctx_attribs.insert(ctx_attribs.end(), {EGL_CONTEXT_OPENGL_DEBUG, EGL_TRUE});
+    ctx_attribs.push_back(EGL_NONE);
+    context_ = eglCreateContext(display_, config, EGL_NO_CONTEXT, ctx_attribs.data());
     if (context_ == EGL_NO_CONTEXT)
       throw std::runtime_error("EGL: could not create an OpenGL 4.5 core context (error " +
                                hex_code(unsigned(eglGetError())) + ")");

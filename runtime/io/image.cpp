@@ -88,8 +88,9 @@ std::vector<unsigned char> encode_image(const Image& img, const std::string& nam
   if (ext == ".hdr" && img.channels != 3) {
     // Radiance HDR holds RGB only: alpha is dropped, a grey image's value goes to all three.
     Image rgb(img.width, img.height, 3);
+    const std::size_t channels = std::size_t(img.channels);
     for (std::size_t p = 0; p < std::size_t(img.width) * std::size_t(img.height); ++p)
-      for (int c = 0; c < 3; ++c) rgb.pixels[3 * p + std::size_t(c)] = img.pixels[p * std::size_t(img.channels) + std::size_t(img.channels < 3 ? 0 : c)];
+      for (std::size_t c = 0; c < 3; ++c) rgb.pixels[3 * p + c] = img.pixels[p * channels + (channels < 3 ? 0 : c)];
     return image_codec().encode(rgb, nullptr, name);
   }
   if (is_float) return image_codec().encode(img, nullptr, name);

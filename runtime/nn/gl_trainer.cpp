@@ -36,7 +36,8 @@ Kernel kernel_in_use(Kernel asked) {
   if (name == "auto") return Kernel::automatic;
   if (name == "per_sample") return Kernel::per_sample;
   if (name == "per_net") return Kernel::per_net;
-  throw std::invalid_argument("SHADENET_GL_KERNEL='" + name + "': unknown gl training kernel (valid: auto, per_sample, per_net)");
+  throw std::invalid_argument("SHADENET_GL_KERNEL='" + name +
+                              "': unknown gl training kernel (valid: auto, per_sample, per_net)");
 }
 
 // Mirrors NetControl in shaders/include/mlp/train_io.glsl (std430).
