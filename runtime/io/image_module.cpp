@@ -46,8 +46,18 @@ class OiioSource : public ImageSource {
   std::unique_ptr<OIIO::ImageInput> in_;
 };
 
+// shadenet's pixels are unassociated (colour not multiplied by alpha): OpenImageIO would
+// multiply a PNG's colour by its alpha on reading and divide by it on writing, so that a colour
+// under alpha 0.5 came back halved where it was over 0.5, and one under alpha 0 as black.
+OIIO::ImageSpec unassociated() {
+  OIIO::ImageSpec spec;
+  spec.attribute("oiio:UnassociatedAlpha", 1);
+  return spec;
+}
+
 std::unique_ptr<ImageSource> open_file(const std::string& path, std::string* error) {
-  auto in = OIIO::ImageInput::open(path);
+  const OIIO::ImageSpec config = unassociated();
+  auto in = OIIO::ImageInput::open(path, &config);
   if (!in) return *error = OIIO::geterror(), nullptr;
   return std::make_unique<OiioSource>(nullptr, std::move(in));
 }
@@ -55,9 +65,12 @@ std::unique_ptr<ImageSource> open_file(const std::string& path, std::string* err
 std::unique_ptr<ImageSource> open_memory(const unsigned char* bytes, std::size_t size, const std::string& name,
                                          std::string* error) {
   auto mem = std::make_unique<OIIO::Filesystem::IOMemReader>(const_cast<unsigned char*>(bytes), size);
-  // (The proxy goes in as open()'s argument only: an "oiio:ioproxy" PTR attribute must hold a
-  // pointer to the pointer, and given &mem it made OpenImageIO read the vtable and crash.)
-  auto in = OIIO::ImageInput::open(name, nullptr, mem.get());
+  // A reader opened with a configuration takes its proxy from it ("oiio:ioproxy", a PTR attribute
+  // that holds the pointer: given &mem instead, OpenImageIO read the vtable and crashed).
+  OIIO::ImageSpec config = unassociated();
+  OIIO::Filesystem::IOProxy* proxy = mem.get();
+  config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
+  auto in = OIIO::ImageInput::open(name, &config, proxy);
   if (!in) return *error = OIIO::geterror(), nullptr;
   return std::make_unique<OiioSource>(std::move(mem), std::move(in));
 }
@@ -73,6 +86,7 @@ std::vector<unsigned char> encode(const Image& img, const std::vector<unsigned c
   out->set_ioproxy(&memory);
   const OIIO::TypeDesc type = bytes ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT;
   OIIO::ImageSpec spec(img.width, img.height, img.channels, type);
+  spec.attribute("oiio:UnassociatedAlpha", 1);
   if (!out->open(name, spec)) throw std::runtime_error("cannot save '" + name + "': " + out->geterror());
   const bool wrote = bytes ? out->write_image(type, bytes->data()) : out->write_image(type, img.pixels.data());
   std::string err = wrote ? "" : out->geterror();

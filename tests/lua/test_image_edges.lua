@@ -2,7 +2,8 @@
 -- to abort the process inside OpenImageIO; sn.image.mse read outside the mask with
 -- mask_channel = 0 (silently wrong) and crashed with a negative one. Saving: a PNG writes NaN as 0
 -- and +inf as full brightness (inf was 0, the darkest), and Radiance HDR, which holds RGB alone,
--- takes an image of 4 channels (alpha dropped) or 1 (grey to all three); it refused both.
+-- takes an image of 4 channels (alpha dropped) or 1 (grey to all three); it refused both. Colour
+-- under alpha < 1 comes back as it was saved.
 local sn = require "shadenet"
 
 for _, h in ipairs { 1, 2, 3 } do
@@ -38,6 +39,22 @@ assert(select(3, hdr:size()) == 3, "HDR holds RGB")
 for x, want in ipairs { { 1, 2, 3 }, { 3.5, 0.25, 0.75 } } do
   for c = 1, 3 do  -- RGBE keeps 8 bits of mantissa per channel
     assert(math.abs(hdr:get(x, 1)[c] - want[c]) <= want[c] / 64, ("hdr %d,1 channel %d: %g"):format(x, c, hdr:get(x, 1)[c]))
+  end
+end
+-- Colour under alpha is kept as it is (unassociated), in the file and back: it was divided by
+-- alpha on writing (clamped at 1) and multiplied on reading, so (1, 0.25, 0.75) at alpha 0.5 came
+-- back as (0.5, 0.25, 0.5) and colour at alpha 0 as black.
+local seen = sn.image.new { width = 2, height = 1 }
+seen:set(1, 1, { 1, 0.25, 0.75, 0.5 })
+seen:set(2, 1, { 0.2, 0.4, 0.6, 0 })
+for _, ext in ipairs { "png", "tif", "exr" } do
+  seen:save(dir .. "/alpha." .. ext)
+  local back = sn.image.load(dir .. "/alpha." .. ext)
+  for x = 1, 2 do
+    for c = 1, 4 do
+      local want, got = seen:get(x, 1)[c], back:get(x, 1)[c]
+      assert(math.abs(got - want) <= 0.5 / 255 + 1e-6, ("%s pixel %d channel %d: %g, saved %g"):format(ext, x, c, got, want))
+    end
   end
 end
 local grey = sn.image.new { width = 1, height = 1, channels = 1, fill = 0.75 }
