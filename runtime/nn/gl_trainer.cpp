@@ -208,9 +208,9 @@ class Job {
       r.index = int(i);
       g->runs.push_back(r);
     }
+    const Kernel kernel = kernel_in_use(opt_.kernel);
     for (Group& g : groups_) {
       const std::size_t P = g.spec.param_count(), PQ = padded_chunks(g.spec), n = g.runs.size();
-      const Kernel kernel = kernel_in_use(opt_.kernel);
       const bool want_per_net =
           kernel == Kernel::per_net || (kernel == Kernel::automatic && gl::current().info().software);
       const bool data_fits = buf_.train_x->count() <= gl::BufferTexture::max_texels();
@@ -304,15 +304,14 @@ class Job {
       dispatch(g, ctl, true, out);
       return (long long)out[0].remaining;
     };
-    const bool probe = gl::current().info().software;
-    const long long r1 = probe ? remaining_after(1) : kProbeSentinel, r2 = probe ? remaining_after(2) : kProbeSentinel;
-    const long long cost = r1 - r2;
-    g.report.loop_budget = probe ? r1 : 0;
-    g.report.loop_cost_per_step = r1 >= kProbeSentinel ? 0 : cost;
+    const long long r1 = gl::current().info().software ? remaining_after(1) : kProbeSentinel;
     if (r1 >= kProbeSentinel) {
       g.max_chunk = steps_;  // no limiter: up to one dispatch per epoch, as time allows
       g.chunk = std::min(steps_, kFirstChunk);
     } else {
+      const long long cost = r1 - remaining_after(2);
+      g.report.loop_budget = r1;
+      g.report.loop_cost_per_step = cost;
       const long long margin = 16 + r1 / 50;
       if (r1 < g.sentinel + margin || cost <= 0)
         throw std::runtime_error(g.spec.describe() + ": one training step needs more loop iterations than this GL " +

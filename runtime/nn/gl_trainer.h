@@ -22,7 +22,7 @@ struct GlGroupReport {
   std::string arch;                  // spec.describe()
   int nets = 0;
   std::string layout;                // where the kernel keeps its arrays (TrainLayout::describe())
-  long long loop_budget = 0;         // loop iterations left after one step, as the probe counted (0: not probed)
+  long long loop_budget = 0;         // loop iterations left after one step, as the probe counted (0: no limit, or not probed)
   long long loop_cost_per_step = 0;  // 0: the driver does not limit loops
   long long steps_per_dispatch = 0;  // the chunk in use at the end
   long long dispatches = 0;          // training dispatches, re-runs included

@@ -24,10 +24,7 @@ end
 io.stderr:write("after the call\n")
 ]])
 
-local function run(setting, what)
-  local code, out = C.run(child, { what }, setting and { SHADENET_GL_DEBUG = setting } or nil)
-  return code, out
-end
+local function run(setting, what) return C.run(child, { what }, setting and { SHADENET_GL_DEBUG = setting } or nil) end
 
 for _, setting in ipairs { "1", "all" } do
   local code, out = run(setting, "error")

@@ -5,6 +5,7 @@
 -- takes an image of 4 channels (alpha dropped) or 1 (grey to all three); it refused both. Colour
 -- under alpha < 1 comes back as it was saved.
 local sn = require "shadenet"
+local C = require "script_check"
 
 for _, h in ipairs { 1, 2, 3 } do
   local img = sn.image.new { width = 5, height = h, channels = 4, fill = 0.25 }
@@ -23,9 +24,7 @@ for _, case in ipairs { { { mask = a, mask_channel = 0 }, "mask channel 0 outsid
   local ok, err = pcall(sn.image.mse, a, a, case[1])
   assert(not ok and err:find(case[2], 1, true), tostring(err))
 end
-local dir = os.tmpname()
-os.remove(dir)
-sn.fs.mkdir(dir)
+local dir = C.tmpdir("image_edges")
 local img = sn.image.new { width = 2, height = 1 }
 img:set(1, 1, { 1 / 0, 0 / 0, -1 / 0, 1 })
 img:set(2, 1, { 3.5, 0.25, 0.75, 1 })
@@ -60,5 +59,5 @@ end
 local grey = sn.image.new { width = 1, height = 1, channels = 1, fill = 0.75 }
 grey:save(dir .. "/grey.hdr")
 assert(table.concat(sn.image.load(dir .. "/grey.hdr"):get(1, 1), " ") == "0.75 0.75 0.75", "grey to all three")
-os.execute("rm -rf '" .. dir .. "'")
+C.rm(dir)
 print("ok")
