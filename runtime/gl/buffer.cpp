@@ -16,8 +16,23 @@ const ElemInfo kInfo[] = {
     {"vec2", 2, true, true},    {"vec4", 4, true, true},     {"uvec4", 4, false, false},
     {"ivec4", 4, false, true},
 };
-constexpr GLbitfield kStorage =
-    GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT | GL_MAP_WRITE_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
+// Storage the host never maps lives where the GPU wants it. Mappable storage (persistent,
+// coherent) is only made when a buffer is mapped: NVIDIA's driver may keep it in host memory,
+// and an H100 run read mid-sized uploads into it as zeros (docs/performance.md, "On a GPU").
+constexpr GLbitfield kMapAccess = GL_MAP_READ_BIT | GL_MAP_WRITE_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
+
+// A buffer object of `bytes` with `flags`; 0 when the driver is out of memory.
+GLuint create_storage(std::size_t bytes, GLbitfield flags) {
+  take_gl_errors();
+  GLuint id = 0;
+  glCreateBuffers(1, &id);
+  glNamedBufferStorage(id, GLsizeiptr(bytes), nullptr, flags);
+  if (take_gl_errors() == GL_OUT_OF_MEMORY) {
+    glDeleteBuffers(1, &id);
+    throw std::runtime_error("out of GPU memory for a buffer of " + std::to_string(bytes) + " bytes");
+  }
+  return id;
+}
 }  // namespace
 
 const ElemInfo& elem_info(ElemType t) { return kInfo[static_cast<int>(t)]; }
@@ -37,13 +52,7 @@ ElemType parse_elem_type(const std::string& name) {
 
 Buffer::Buffer(ElemType type, std::size_t count) : type_(type), count_(count) {
   if (count == 0) throw std::invalid_argument("buffer size must be at least 1 element");
-  take_gl_errors();
-  glCreateBuffers(1, &id_);
-  glNamedBufferStorage(id_, GLsizeiptr(bytes()), nullptr, kStorage);
-  if (take_gl_errors() == GL_OUT_OF_MEMORY) {
-    glDeleteBuffers(1, &id_);
-    throw std::runtime_error("out of GPU memory for a buffer of " + std::to_string(bytes()) + " bytes");
-  }
+  id_ = create_storage(bytes(), GL_DYNAMIC_STORAGE_BIT);
   const uint32_t zero = 0;
   glClearNamedBufferData(id_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
 }
@@ -59,12 +68,10 @@ static void check_range(const Buffer& b, std::size_t first, std::size_t n) {
                             " is outside its " + std::to_string(b.components()) + " components");
 }
 
+// Through GL even when mapped (persistent mappings allow it): the driver orders the copy after
+// the commands before it, where a write through the mapping could land before a pending one.
 void Buffer::upload(const void* data, std::size_t first, std::size_t n) {
   check_range(*this, first, n);
-  if (mapped_) {  // a mapped buffer is written through its mapping
-    std::memcpy(static_cast<char*>(mapped_) + first * 4, data, n * 4);
-    return;
-  }
   glNamedBufferSubData(id_, GLintptr(first * 4), GLsizeiptr(n * 4), data);
 }
 
@@ -89,9 +96,12 @@ std::vector<float> Buffer::download_floats() const {
 }
 
 void* Buffer::map() {
-  if (!mapped_) {
-    mapped_ = glMapNamedBufferRange(id_, 0, GLsizeiptr(bytes()),
-                                    GL_MAP_READ_BIT | GL_MAP_WRITE_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT);
+  if (!mapped_) {  // moved once into storage the host can map, its contents copied on the GPU
+    GLuint mappable = create_storage(bytes(), GL_DYNAMIC_STORAGE_BIT | kMapAccess);
+    glCopyNamedBufferSubData(id_, mappable, 0, 0, GLsizeiptr(bytes()));
+    glDeleteBuffers(1, &id_);
+    id_ = mappable;
+    mapped_ = glMapNamedBufferRange(id_, 0, GLsizeiptr(bytes()), kMapAccess);
     if (!mapped_) throw std::runtime_error("could not map the buffer into host memory");
   }
   finish();

@@ -43,7 +43,8 @@ class Buffer {
   std::vector<float> download_floats() const;
 
   // A pointer to the whole buffer mapped into host memory (persistent, coherent), valid while
-  // the buffer lives. GPU writes become visible after sn::gl::finish().
+  // the buffer lives. GPU writes become visible after sn::gl::finish(). The first call moves the
+  // contents to new, mappable storage: id() changes, so bind the buffer after mapping it.
   void* map();
 
  private:

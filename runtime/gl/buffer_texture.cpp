@@ -32,18 +32,23 @@ std::size_t BufferTexture::max_texels() {
   return std::size_t(n);
 }
 
-BufferTexture::BufferTexture(const Buffer& buffer) {
+BufferTexture::BufferTexture(const Buffer& buffer) : buffer_(buffer) {
   if (buffer.count() > max_texels())
     throw std::length_error("buffer texture: " + std::to_string(buffer.count()) + " elements, the GL driver reads at most " +
                             std::to_string(max_texels()));
   glCreateTextures(GL_TEXTURE_BUFFER, 1, &id_);
-  glTextureBuffer(id_, texel_format(buffer.type()), buffer.id());
 }
 
 BufferTexture::~BufferTexture() {
   if (id_) glDeleteTextures(1, &id_);
 }
 
-void BufferTexture::bind(unsigned unit) const { glBindTextureUnit(unit, id_); }
+void BufferTexture::bind(unsigned unit) const {
+  if (storage_ != buffer_.id()) {
+    storage_ = buffer_.id();
+    glTextureBuffer(id_, texel_format(buffer_.type()), storage_);
+  }
+  glBindTextureUnit(unit, id_);
+}
 
 }  // namespace sn::gl

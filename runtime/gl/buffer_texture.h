@@ -23,11 +23,13 @@ class BufferTexture {
   BufferTexture(const BufferTexture&) = delete;
   BufferTexture& operator=(const BufferTexture&) = delete;
 
-  void bind(unsigned unit) const;
+  void bind(unsigned unit) const;  // reads the buffer's current storage (map() replaces it)
   static std::size_t max_texels();  // GL_MAX_TEXTURE_BUFFER_SIZE
 
  private:
+  const Buffer& buffer_;
   unsigned id_ = 0;
+  mutable unsigned storage_ = 0;  // the buffer's id() when attached
 };
 
 }  // namespace sn::gl

@@ -5,6 +5,7 @@
 #include <random>
 
 #include "gl/buffer.h"
+#include "gl/buffer_texture.h"
 #include "gl/context.h"
 #include "gl/program.h"
 
@@ -102,6 +103,68 @@ TEST(Buffer, PooledBuffersAreReusedOnlyWhenIdle) {
   c.reset();
   EXPECT_EQ(pooled_buffer(ElemType::vec4, 45).get(), small);  // the smallest that is large enough
   clear_buffer_pool();
+}
+
+// y of poly.comp with u_scale = 1, in double.
+double poly(double x) { return x * x * x - 2 * x + std::tanh(x); }
+
+GLint storage_flags(const Buffer& b) {
+  GLint f = 0;
+  glGetNamedBufferParameteriv(b.id(), GL_BUFFER_STORAGE_FLAGS, &f);
+  return f;
+}
+
+// Storage is mappable only once a buffer is mapped (a driver may keep mappable storage in host
+// memory); mapping keeps what uploads and shaders wrote, and what comes after lands in the new
+// storage, read by shaders through a binding or a buffer texture.
+TEST(Buffer, MappingMovesTheContentsIntoMappableStorage) {
+  current();
+  const int n = 64;
+  Buffer in(ElemType::float32, n), out(ElemType::float32, n);
+  EXPECT_EQ(storage_flags(in) & (GL_MAP_PERSISTENT_BIT | GL_MAP_READ_BIT | GL_MAP_WRITE_BIT), 0);
+  std::vector<float> x(n);
+  for (int i = 0; i < n; ++i) x[i] = 0.05f * float(i) - 1.0f;
+  in.upload(x.data(), 0, n);
+  auto run = [&](Program& prog) {
+    prog.set_uniform("u_count", {double(n)});
+    prog.set_uniform("u_scale", {1.0});
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, out.id());
+    dispatch(prog, 1);
+  };
+  auto prog = get_program({.compute = "tests/data/shaders/poly.comp", .defines = {{"LOCAL_SIZE", "64"}}});
+  run(*prog);
+  const unsigned before = out.id();
+  const float* y = static_cast<const float*>(out.map());
+  EXPECT_NE(out.id(), before);
+  EXPECT_NE(storage_flags(out) & GL_MAP_PERSISTENT_BIT, 0);
+  for (int i = 0; i < n; ++i) ASSERT_NEAR(y[i], poly(x[i]), 1e-5) << i;  // the shader's writes came along
+
+  float* xp = static_cast<float*>(in.map());
+  for (int i = 0; i < n; ++i) ASSERT_EQ(xp[i], x[i]) << i;  // so did the upload
+  xp[3] = 1.5f;  // written through the new mapping, read by the next dispatch
+  const float v = 0.25f;
+  in.upload(&v, 7, 1);  // and through GL
+  run(*prog);
+  finish();
+  EXPECT_NEAR(y[3], poly(1.5), 1e-5);
+  EXPECT_NEAR(y[7], poly(0.25), 1e-5);
+
+  BufferTexture tex(in);  // attached to the storage in place when bound
+  Buffer fresh(ElemType::float32, n);
+  BufferTexture late(fresh);
+  fresh.upload(x.data(), 0, n);
+  static_cast<float*>(fresh.map())[3] = 1.5f;  // mapped after the texture was made: bind() attaches the new storage
+  auto from_texture = get_program(
+      {.compute = "tests/data/shaders/poly.comp", .defines = {{"LOCAL_SIZE", "64"}, {"FROM_TEXTURE", "1"}}});
+  for (const BufferTexture* t : {&tex, &late}) {
+    out.fill_float(0);
+    t->bind(0);
+    run(*from_texture);
+    finish();
+    EXPECT_NEAR(y[5], poly(x[5]), 1e-5);
+    EXPECT_NEAR(y[3], poly(1.5), 1e-5);
+  }
 }
 
 TEST(Buffer, MappedPointerSeesShaderWrites) {
