@@ -1,7 +1,7 @@
 // sn.fs.*: the few file-system calls results writers need and plain Lua lacks (creating
-// folders, listing one, checking a path, writing a file whole), through std::filesystem and
-// io/atomic_write rather than a shell or io.open; and sn.limits, the loaders' resource limits
-// (io/limits.h).
+// folders, listing one, checking a path, writing a file whole, a scratch folder), through
+// std::filesystem and io/atomic_write rather than a shell or io.open; and sn.limits, the
+// loaders' resource limits (io/limits.h).
 #include <algorithm>
 #include <filesystem>
 #include <system_error>
@@ -9,6 +9,7 @@
 #include "io/atomic_write.h"
 #include "io/limits.h"
 #include "io/numbered_path.h"
+#include "io/temp_dir.h"
 #include "lua/binding.h"
 #include "lua/module.h"
 
@@ -99,6 +100,41 @@ int w_claim(lua_State* L) {
   return 1;
 }
 
+// sn.fs.tempdir([tag]) -> path of a new, empty folder TMPDIR/shadenet-TAG-XXXXXX, removed with
+// its contents when the script's Lua state closes. The registry holds each one until then, so
+// no collection removes a folder a script still writes into.
+constexpr const char* kTempDirs = "shadenet.tempdirs";
+
+int tempdir_gc(lua_State* L) {
+  auto** dir = static_cast<io::TempDir**>(lua_touserdata(L, 1));
+  delete *dir;
+  *dir = nullptr;
+  return 0;
+}
+
+int w_tempdir(lua_State* L) {
+  std::string tag = lua_isnoneornil(L, 1) ? "script" : check_string(L, 1, "sn.fs.tempdir tag");
+  lua_getfield(L, LUA_REGISTRYINDEX, kTempDirs);
+  if (lua_isnil(L, -1)) {
+    lua_pop(L, 1);
+    lua_newtable(L);
+    lua_pushvalue(L, -1);
+    lua_setfield(L, LUA_REGISTRYINDEX, kTempDirs);
+  }
+  // The holder first, so a Lua error after the folder exists cannot lose it.
+  auto** dir = static_cast<io::TempDir**>(lua_newuserdata(L, sizeof(io::TempDir*)));
+  *dir = nullptr;
+  lua_newtable(L);
+  lua_pushcfunction(L, tempdir_gc);
+  lua_setfield(L, -2, "__gc");
+  lua_setmetatable(L, -2);
+  lua_rawseti(L, -2, int(lua_objlen(L, -2)) + 1);
+  lua_pop(L, 1);
+  *dir = new io::TempDir(tag);
+  lua_pushstring(L, (*dir)->path().c_str());
+  return 1;
+}
+
 // The limits sn.limits reads and sets, by name.
 struct LimitField {
   const char* name;
@@ -147,7 +183,7 @@ void open_files(lua_State* L) {
   lua_pushcfunction(L, wrap<w_limits>);
   lua_setfield(L, -2, "limits");
   static const luaL_Reg fns[] = {SN_FN("mkdir", w_mkdir), SN_FN("list", w_list), SN_FN("exists", w_exists), SN_FN("write", w_write), SN_FN("write_all", w_write_all),
-                                 SN_FN("claim", w_claim),
+                                 SN_FN("claim", w_claim), SN_FN("tempdir", w_tempdir),
                                  {nullptr, nullptr}};
   lua_newtable(L);
   luaL_register(L, nullptr, fns);
