@@ -4,7 +4,7 @@
 --
 --   shadenet bench/dataset_ops.lua [repeats] [dir]
 --     repeats: timings per operation; the median is printed (default 7)
---     dir:     where the files go (default: a fresh folder from os.tmpname(), removed after)
+--     dir:     where the files go (default: a scratch folder, sn.fs.tempdir, removed after)
 --
 -- Times are sn.clock() (wall clock) around one call; exports include each file's fsync (the
 -- atomic write), so the disk under `dir` counts. "load" is the 1-minute load average before
@@ -12,12 +12,7 @@
 local sn = require "shadenet"
 
 local repeats = tonumber(arg[1] or "7")
-local dir = arg[2]
-local own_dir = not dir
-if own_dir then
-  dir = os.tmpname()
-  os.remove(dir)
-end
+local dir = arg[2] or sn.fs.tempdir("dataset_ops")
 
 package.path = (arg[0]:match("^(.*)/[^/]*$") or ".") .. "/../scripts/?.lua;" .. package.path
 local results = require "lib.results"
@@ -90,7 +85,5 @@ for _, f in ipairs { "a.json", "a.inputs.npy", "a.targets.npy", "a.csv" } do
   local h = io.open(dir .. "/" .. f, "rb")
   sizes[#sizes + 1] = ("%s %.2f MB"):format(f, h:seek("end") / 1e6)
   h:close()
-  if own_dir then os.remove(dir .. "/" .. f) end
 end
 print("files: " .. table.concat(sizes, ", "))
-if own_dir then os.remove(dir) end

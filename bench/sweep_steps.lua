@@ -19,8 +19,7 @@ local thesis = require "lib.thesis"
 
 local repeats = tonumber(arg[1] or "5")
 local seeds = tonumber(arg[2] or "3")
-local out = os.tmpname()
-os.remove(out)
+local out = sn.fs.tempdir("sweep_steps")
 local E = exp.start("sweep_steps", { "--out", out })
 local desc = E:data_desc { model = "phong" }
 local scene = E:scene(desc.scene)
@@ -58,4 +57,3 @@ bench("dataset (64,149 rows of 120 views)", function(i)
                   split = desc.split, seed = 1000 + i }
 end)
 bench(("unseen-mesh errors (%d networks x 15 views)"):format(#nets), function() E:unseen_errors(nets, desc) end)
-os.execute("rm -rf '" .. out .. "'")

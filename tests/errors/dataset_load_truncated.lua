@@ -1,9 +1,8 @@
--- expect: dataset_load_truncated\.lua:14: sn\.dataset\.load: .*/d\.inputs\.npy: 100 data bytes, but shape \(10, 3\) of float32 needs 120 \(truncated\)
+-- expect: dataset_load_truncated\.lua:13: sn\.dataset\.load: .*/d\.inputs\.npy: 100 data bytes, but shape \(10, 3\) of float32 needs 120 \(truncated\)
 local sn = require "shadenet"
 local x, y = {}, {}
 for i = 1, 10 do x[i], y[i] = { i, 0, 1 }, { 0.5, 0.5, 0.5 } end
-local dir = os.tmpname()
-os.remove(dir)
+local dir = sn.fs.tempdir("error")
 local path = sn.dataset { x = x, y = y }:export(dir .. "/d")
 -- Cut the last five floats off the inputs, as an interrupted copy would.
 local f = assert(io.open(dir .. "/d.inputs.npy", "rb"))
@@ -12,6 +11,4 @@ f:close()
 f = assert(io.open(dir .. "/d.inputs.npy", "wb"))
 f:write(bytes:sub(1, #bytes - 20)) f:close()
 local ok, err = pcall(function() local d = sn.dataset.load(path) return d end)
-for _, name in ipairs { "d.json", "d.inputs.npy", "d.targets.npy" } do os.remove(dir .. "/" .. name) end
-os.remove(dir)
 error(err, 0)

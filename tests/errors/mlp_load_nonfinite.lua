@@ -3,7 +3,7 @@
 -- by a build that saved a diverged network) is refused, naming the first bad parameter.
 local sn = require "shadenet"
 local ffi = require "ffi"
-local path = os.tmpname() .. "inf_net.snmlp"
+local path = sn.fs.tempdir("error") .. "/inf_net.snmlp"
 local net = sn.mlp { inputs = 6, hidden = { 6 }, outputs = 3 }
 net.layers[2].weight[3][5] = 1234.5  -- a marker: its float bytes are found and replaced below
 net:save(path)
@@ -18,5 +18,4 @@ local sum = ffi.new("uint64_t[1]", h)
 bytes = bytes:sub(1, 16) .. ffi.string(sum, 8) .. bytes:sub(25)
 f = io.open(path, "wb") f:write(bytes) f:close()
 local ok, err = pcall(sn.load, path)
-os.remove(path)
 error(err, 0)

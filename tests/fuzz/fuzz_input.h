@@ -4,23 +4,20 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
-#include <cstdlib>
 #include <fstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "io/temp_dir.h"
+
 namespace sn::fuzz {
 
-// One scratch folder per process, so parallel fuzzing jobs (-jobs=N) do not share files.
+// One scratch folder per process, so parallel fuzzing jobs (-jobs=N) do not share files;
+// removed when the process exits.
 inline const std::string& scratch_dir() {
-  static const std::string dir = [] {
-    const char* tmp = std::getenv("TMPDIR");
-    std::string pattern = std::string(tmp && *tmp ? tmp : "/tmp") + "/shadenet-fuzz-XXXXXX";
-    if (!mkdtemp(pattern.data())) throw std::runtime_error("fuzz: cannot make a scratch folder");
-    return pattern;
-  }();
-  return dir;
+  static const io::TempDir dir("fuzz");
+  return dir.path();
 }
 
 // Writes `bytes` to scratch_dir()/name and returns the path.

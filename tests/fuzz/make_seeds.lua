@@ -14,9 +14,7 @@ local function seed(target, name, bytes)
   sn.fs.mkdir(root .. target)
   sn.fs.write(root .. target .. "/" .. name, bytes)
 end
-local scratch = os.tmpname()
-os.remove(scratch)
-sn.fs.mkdir(scratch)
+local scratch = sn.fs.tempdir("make_seeds")
 local SEP = "\n--8<--\n"   -- fuzz_input.h: parts of an input holding several files
 
 -- gltf: a glTF with an embedded buffer, procedural meshes as GLB (normals, UVs, tangents, a

@@ -9,13 +9,8 @@ local C = {}
 
 C.shadenet = arg[-1] or "build/shadenet"
 
-function C.tmpdir(tag)
-  local d = os.tmpname()
-  os.remove(d)
-  d = d .. "-" .. tag
-  sn.fs.mkdir(d)
-  return d
-end
+-- A fresh folder, removed when the test ends (sn.fs.tempdir).
+function C.tmpdir(tag) return sn.fs.tempdir(tag) end
 
 -- A child script: `source` written as child.lua in a fresh temporary folder; its path and the folder.
 function C.child(tag, source)
@@ -147,7 +142,7 @@ end
 -- = n, the Ctrl-C comes inside the n-th sn.train call instead, after its first epoch (sn.train
 -- then stops at its next step).
 function C.run_interrupted(script, args, in_training)
-  local wrapper = os.tmpname() .. ".lua"
+  local wrapper = C.tmpdir("interrupted") .. "/wrapper.lua"
   results.write_file(wrapper, string.format([[
 package.path = "scripts/?.lua;" .. package.path
 local sn = require "shadenet"
@@ -182,7 +177,6 @@ arg[0] = %q
 dofile(%q)
 ]], tostring(in_training), script, script))
   local code, out = C.run(wrapper, args)
-  os.remove(wrapper)
   return code, out
 end
 

@@ -103,8 +103,7 @@ assert(tostring(c:split()) == "Dataset(6 -> 3 rgb, 4000 train / 1000 val)")
 fails("dataset:split: split must lie strictly between 0 and 1 (the training share), got 1", c.split, c, { split = 1 })
 
 -- export / load: NumPy arrays with a sidecar, and CSV; each comes back bit for bit.
-local dir = os.tmpname()
-os.remove(dir)
+local dir = sn.fs.tempdir("test_dataset_algebra")
 local path = c:export(dir .. "/cloth")
 assert(path == dir .. "/cloth.json", path)
 local back = sn.dataset.load(path)

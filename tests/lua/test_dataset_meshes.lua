@@ -35,12 +35,11 @@ assert(max_x - min_x > 1.0, string.format("normal x spans %.2f..%.2f", min_x, ma
 local text = assert(io.open("../shared/meshes/Box.gltf")):read("*a")
 local stripped, count = text:gsub('"NORMAL"%s*:%s*%d+%s*,', "")
 assert(count == 1, "Box.gltf has one NORMAL attribute")
-local path = os.tmpname() .. ".gltf"
+local path = sn.fs.tempdir("test_dataset_meshes") .. "/box.gltf"
 local f = assert(io.open(path, "w"))
 f:write(stripped)
 f:close()
 local box = sn.scene { mesh = path, size = { 32, 32 } }
-os.remove(path)
 local notes = box:notes()
 assert(#notes == 1 and notes[1]:match("has no normals") and notes[1]:match("computed"), "note: " .. tostring(notes[1]))
 assert(box:meshes()[1]:normals_computed(), "computed normals are flagged on the mesh")

@@ -13,8 +13,7 @@ local function fails(f, text, ...)
   assert(not ok and tostring(err):find(text, 1, true), "expected '" .. text .. "', got: " .. tostring(err))
 end
 
-local dir = os.tmpname() .. "-limits"
-sn.fs.mkdir(dir)
+local dir = sn.fs.tempdir("test_limits")
 local mesh = "meshes/test_blob.glb"
 local mesh_bytes = #io.open(mesh, "rb"):read("*a")
 local net = sn.mlp { inputs = 6, hidden = { 4 }, outputs = 3 }

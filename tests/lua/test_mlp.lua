@@ -71,10 +71,9 @@ assert(s.inputs == 6 and s.outputs == 3 and #s.hidden == 8 and s.hidden[5] == 6 
 -- Save and load keep every weight and the input names.
 local named = sn.mlp { inputs = 6, hidden = {4}, outputs = 3, input_names = {"normal", "view"}, seed = 9 }
 named.layers[2].weight[3][4] = 0.123
-local path = os.tmpname() .. ".snmlp"
+local path = sn.fs.tempdir("test_mlp") .. "/net.snmlp"
 named:save(path)
 local back = sn.load(path)
-os.remove(path)
 assert(tostring(back) == tostring(named), "loaded spec")
 assert(back.layers[2].weight[3][4] == named.layers[2].weight[3][4], "loaded weight")
 local bp, np = back:params(), named:params()

@@ -121,10 +121,9 @@ for k, enc in ipairs(cases) do
   print(("%s: encode, forward (%.1g) and two steps on cpu and gl match the reference"):format(label, worst))
 
   -- checkpoints keep the encodings
-  local path = os.tmpname() .. ".snmlp"
+  local path = sn.fs.tempdir("test_mlp_encoding") .. "/net.snmlp"
   net:save(path)
   local back = sn.load(path)
-  os.remove(path)
   assert(tostring(back) == label, tostring(back))
   assert(max_abs(back:forward(x[3]), outs[3]) == 0, label .. ": the loaded network computes the same")
 end

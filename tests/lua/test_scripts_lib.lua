@@ -9,9 +9,7 @@ local stats = require "lib.stats"
 local plot = require "lib.plot"
 local Progress = require "lib.progress"
 
-local tmp = os.tmpname()
-os.remove(tmp)
-sn.fs.mkdir(tmp)
+local tmp = sn.fs.tempdir("test_scripts_lib")
 
 -- ---- cli ----
 local none = function() return nil end

@@ -16,7 +16,7 @@ local cases = {
   { lr = 1e15, epoch = 1, step = 2, reason = "exploded", trained = 1 },
   { lr = 1e39, epoch = 1, step = 1, reason = "nonfinite", trained = 0 },
 }
-local tmp = os.tmpname()
+local tmp = sn.fs.tempdir("test_train_divergence") .. "/net.snmlp"
 for _, c in ipairs(cases) do
   local seen = {}
   for _, backend in ipairs(sn.backends()) do
@@ -34,7 +34,6 @@ for _, c in ipairs(cases) do
   end
   print(("lr %g: %s"):format(c.lr, table.concat(seen, ", ")))
 end
-os.remove(tmp)
 
 -- divergence_factor = math.huge turns the explosion rules off: lr = 1e3 trains every epoch.
 for _, backend in ipairs(sn.backends()) do

@@ -8,11 +8,11 @@
 #include <cstring>
 #include <iterator>
 
-#include <unistd.h>
 
 #include "io/hash.h"
 #include "nn/checkpoint.h"
 #include "nn/oracle.h"
+#include "io/temp_dir.h"
 
 namespace sn::nn {
 namespace {
@@ -20,17 +20,9 @@ namespace {
 namespace fs = std::filesystem;
 
 // One scratch folder per test process, removed when the process ends.
-struct Scratch {
-  fs::path dir = fs::temp_directory_path() / ("shadenet_ckpt_" + std::to_string(::getpid()));
-  ~Scratch() {
-    std::error_code ec;
-    fs::remove_all(dir, ec);
-  }
-};
 fs::path scratch(const std::string& name) {
-  static Scratch s;
-  fs::create_directories(s.dir);
-  return s.dir / name;
+  static const sn::io::TempDir dir("test_checkpoint");
+  return fs::path(dir.path()) / name;
 }
 
 Mlp sample_net() {

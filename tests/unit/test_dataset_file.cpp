@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <sys/stat.h>
-#include <unistd.h>
 
 #include <cfloat>
 #include <cmath>
@@ -16,23 +15,16 @@
 #include "data/dataset_file.h"
 #include "io/npy.h"
 #include "io/read_file.h"
+#include "io/temp_dir.h"
 
 namespace sn::data {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Scratch {
-  fs::path dir = fs::temp_directory_path() / ("shadenet_dsfile_" + std::to_string(::getpid()));
-  ~Scratch() {
-    std::error_code ec;
-    fs::remove_all(dir, ec);
-  }
-};
 std::string scratch(const std::string& name) {
-  static Scratch s;
-  fs::create_directories(s.dir);
-  return (s.dir / name).string();
+  static const sn::io::TempDir dir("test_dataset_file");  // removed at exit
+  return (fs::path(dir.path()) / name).string();
 }
 
 void write(const std::string& path, const std::string& bytes) {

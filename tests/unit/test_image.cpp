@@ -4,14 +4,14 @@
 #include <filesystem>
 
 #include "io/image.h"
+#include "io/temp_dir.h"
 
 using namespace sn::io;
 namespace fs = std::filesystem;
 
 static fs::path tmpdir() {
-  fs::path d = fs::temp_directory_path() / ("shadenet_image_test_" + std::to_string(getpid()));
-  fs::create_directories(d);
-  return d;
+  static const sn::io::TempDir dir("test_image");  // removed at exit
+  return dir.path();
 }
 
 TEST(Image, ExrRoundTripIsExact) {

@@ -3,7 +3,6 @@
 
 #include <GLFW/glfw3.h>
 #include <lua.hpp>
-#include <unistd.h>
 
 #include <atomic>
 #include <chrono>
@@ -16,6 +15,7 @@
 #include "live/file_watcher.h"
 #include "live/input.h"
 #include "live/repl.h"
+#include "io/temp_dir.h"
 
 using namespace sn::live;
 namespace fs = std::filesystem;
@@ -119,8 +119,8 @@ TEST(LiveConsole, EnvironmentFromPrepare) {
 }
 
 TEST(LiveWatcher, SeesWritesAndRenamesOfWatchedFilesOnly) {
-  fs::path dir = fs::temp_directory_path() / ("shadenet_watch_" + std::to_string(getpid()));
-  fs::create_directories(dir);
+  const sn::io::TempDir tmp("test_watch");
+  const fs::path dir = tmp.path();
   std::ofstream(dir / "a.lua") << "x = 1\n";
   std::ofstream(dir / "other.lua") << "y = 1\n";
   std::atomic<int> wakes{0};
@@ -143,5 +143,4 @@ TEST(LiveWatcher, SeesWritesAndRenamesOfWatchedFilesOnly) {
   EXPECT_EQ(wait_for(1), std::vector<std::string>{"b.glsl"});
   EXPECT_GE(wakes.load(), 2);
   EXPECT_TRUE(w.take_changed().empty());
-  fs::remove_all(dir);
 }

@@ -1,19 +1,19 @@
 // What live mode shows of an error: the file:line to fix, its source line, the context.
 #include <gtest/gtest.h>
 
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
 
 #include "live/error_report.h"
+#include "io/temp_dir.h"
 
 using namespace sn::live;
 namespace fs = std::filesystem;
 
 TEST(LiveErrorReport, LuaErrorGetsItsSourceLine) {
-  fs::path dir = fs::temp_directory_path() / ("shadenet_report_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  const sn::io::TempDir tmp("test_error_report");
+  const fs::path dir = tmp.path();
   std::string file = (dir / "s.lua").string();
   std::ofstream(file) << "local a = 1\n  local x = = 1\n";
   ErrorReport r = report_error(file + ":2: unexpected symbol near '='\nstack traceback:\n\t[C]: in ?");
@@ -22,7 +22,6 @@ TEST(LiveErrorReport, LuaErrorGetsItsSourceLine) {
   EXPECT_EQ(r.source, "  2 | local x = = 1");
   EXPECT_TRUE(r.context.empty());
   EXPECT_EQ(r.traceback, "stack traceback:\n\t[C]: in ?");
-  fs::remove_all(dir);
 }
 
 TEST(LiveErrorReport, ShaderLineBeforeTheScriptsAndTheLogsSourceLine) {

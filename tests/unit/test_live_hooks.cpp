@@ -9,6 +9,7 @@
 #include "gl/context.h"
 #include "gl/program.h"
 #include "gl/shader_source.h"
+#include "io/temp_dir.h"
 
 using namespace sn::gl;
 namespace fs = std::filesystem;
@@ -16,12 +17,11 @@ namespace fs = std::filesystem;
 namespace {
 
 struct TempShaders {
-  fs::path dir = fs::temp_directory_path() / ("shadenet_live_hooks_" + std::to_string(::getpid()));
-  TempShaders() { fs::create_directories(dir); }
+  sn::io::TempDir tmp{"test_live_hooks"};
+  fs::path dir = tmp.path();
   ~TempShaders() {
     set_shader_file_observer(nullptr);
     set_program_fallback(nullptr);
-    fs::remove_all(dir);
   }
   std::string write(const std::string& name, const std::string& text) {
     std::ofstream(dir / name) << text;

@@ -16,6 +16,7 @@
 #include "gl/context.h"
 #include "gl/program.h"
 #include "gl/render_target.h"
+#include "io/temp_dir.h"
 #include "scene/camera.h"
 #include "scene/gpu_mesh.h"
 #include "scene/mesh.h"
@@ -34,9 +35,8 @@ std::string shared_meshes() {
 }
 
 fs::path temp_dir() {
-  fs::path d = fs::temp_directory_path() / ("shadenet_test_mesh_" + std::to_string(getpid()));
-  fs::create_directories(d);
-  return d;
+  static const sn::io::TempDir dir("test_mesh");  // removed at exit
+  return dir.path();
 }
 
 std::vector<unsigned char> read_bytes(const std::string& path) {
