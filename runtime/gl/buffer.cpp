@@ -23,7 +23,7 @@ constexpr GLbitfield kMapAccess = GL_MAP_READ_BIT | GL_MAP_WRITE_BIT | GL_MAP_PE
 
 // A buffer object of `bytes` with `flags`; 0 when the driver is out of memory.
 GLuint create_storage(std::size_t bytes, GLbitfield flags) {
-  take_gl_errors();
+  check_gl_errors_before("creating a buffer");
   GLuint id = 0;
   glCreateBuffers(1, &id);
   glNamedBufferStorage(id, GLsizeiptr(bytes), nullptr, flags);

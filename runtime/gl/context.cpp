@@ -126,6 +126,12 @@ unsigned take_gl_errors() {
   return first;
 }
 
+void check_gl_errors_before(const std::string& what) {
+  if (GLenum e = take_gl_errors(); e != GL_NO_ERROR)
+    throw std::runtime_error("a GL call before " + what + " failed: " + gl_error_text(e) +
+                             " (SHADENET_GL_DEBUG=1 prints the driver's reason)");
+}
+
 std::string hex_code(unsigned code) {
   char buf[16];
   std::snprintf(buf, sizeof buf, "0x%x", code);

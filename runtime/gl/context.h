@@ -70,10 +70,12 @@ bool has_current();
 void set_current(std::unique_ptr<Context> ctx);
 void destroy_current();
 
-// Reads and clears every pending GL error flag; returns the first (0 = none). Allocations call
-// it before and after, so a failure earlier (say, a render target too large) is not blamed on
-// the next small buffer.
+// Reads and clears every pending GL error flag; returns the first (0 = none).
 unsigned take_gl_errors();
+// Throws "a GL call before WHAT failed: GL_..." when an error is pending. Dispatches and
+// allocations call it first: an earlier call's error is then neither dropped with its wrong
+// result nor blamed on them.
+void check_gl_errors_before(const std::string& what);
 // "0x502": a GL or EGL error code as the specifications print it.
 std::string hex_code(unsigned code);
 // "GL_INVALID_OPERATION (0x502)", or the code alone for one that is not a standard error.

@@ -250,7 +250,7 @@ void dispatch(Program& p, unsigned gx, unsigned gy, unsigned gz) {
     throw std::invalid_argument("workgroup count " + std::to_string(gx) + "x" + std::to_string(gy) + "x" +
                                 std::to_string(gz) + " is outside 1..(" + std::to_string(max[0]) + "x" +
                                 std::to_string(max[1]) + "x" + std::to_string(max[2]) + ")");
-  take_gl_errors();  // earlier calls' errors are not this dispatch's
+  check_gl_errors_before("dispatching " + p.name());
   glUseProgram(p.id());
   glDispatchCompute(gx, gy, gz);
   // A dispatch the driver refuses leaves its outputs as they were: an error, not a silent result.

@@ -21,7 +21,7 @@ RenderTarget::RenderTarget(int width, int height, int n)
                                 " is outside 1.." + std::to_string(max_size));
   if (n < 1 || n > kMaxAttachments)
     throw std::invalid_argument("render target colour attachments must be 1.." + std::to_string(kMaxAttachments));
-  take_gl_errors();
+  check_gl_errors_before("creating a render target");
   glCreateFramebuffers(1, &fbo_);
   glCreateTextures(GL_TEXTURE_2D, n, color_);
   GLenum bufs[kMaxAttachments];
@@ -42,7 +42,7 @@ RenderTarget::RenderTarget(int width, int height, int n)
                                  ? "out of GPU memory for a " + std::to_string(width) + "x" + std::to_string(height) +
                                        " render target with " + std::to_string(n) + " attachment(s)"
                                  : "cannot make a " + std::to_string(width) + "x" + std::to_string(height) +
-                                       " render target (GL error " + std::to_string(e) + ")");
+                                       " render target: " + gl_error_text(e));
   }
   GLenum status = glCheckNamedFramebufferStatus(fbo_, GL_FRAMEBUFFER);
   if (status != GL_FRAMEBUFFER_COMPLETE) {

@@ -52,6 +52,35 @@ TEST(Compute, RefusedDispatchIsAnError) {
   clear_program_cache();
   EXPECT_EQ(take_gl_errors(), 0u) << "the failed dispatch's errors were taken";
   EXPECT_EQ(gl_error_text(0x9999), "0x9999");
+
+  // A call that failed before a dispatch (here a binding past the last one) is not dropped...
+  auto q = get_program({.compute = "tests/data/shaders/poly.comp", .defines = {{"LOCAL_SIZE", "32"}}});
+  Buffer b(ElemType::float32, 32);
+  GLint bindings = 0;
+  glGetIntegerv(GL_MAX_SHADER_STORAGE_BUFFER_BINDINGS, &bindings);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(bindings), b.id());
+  try {
+    dispatch(*q, 1);
+    ADD_FAILURE() << "no error";
+  } catch (const std::runtime_error& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("a GL call before dispatching " + q->name() + " failed: GL_INVALID_VALUE (0x501)"), std::string::npos)
+        << m;
+  }
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(bindings), b.id());  // nor blamed on an allocation
+  EXPECT_THROW(
+      {
+        try {
+          Buffer c(ElemType::float32, 4);
+        } catch (const std::runtime_error& e) {
+          EXPECT_STREQ(e.what(), "a GL call before creating a buffer failed: GL_INVALID_VALUE (0x501) "
+                                 "(SHADENET_GL_DEBUG=1 prints the driver's reason)");
+          throw;
+        }
+      },
+      std::runtime_error);
+  EXPECT_EQ(take_gl_errors(), 0u);
+  Buffer c(ElemType::float32, 4);  // and then gone
 }
 
 TEST(Compute, ProgramCacheReusesEqualSources) {
