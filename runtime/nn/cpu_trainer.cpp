@@ -203,7 +203,7 @@ class CpuBackend : public Backend {
       : threads_(threads > 0 ? threads : io::default_threads()), shared_bytes_(shared_bytes) {}
 
   std::string name() const override { return "cpu"; }
-  bool mixes_seeds() const override { return true; }
+  std::size_t seeds_per_call(std::size_t) const override { return SIZE_MAX; }  // one job: pairs form across seeds
   std::string device() const override {
     return cpu_model() + ", " + std::to_string(threads_) + " threads, " + cpu_kernel_name() + " kernel";
   }

@@ -65,8 +65,13 @@ constexpr int kProbeSentinel = 1 << 22;
 constexpr double kDispatchSeconds = 0.25;
 constexpr long long kFirstChunk = 64;
 
+// The epoch's orders, one permutation of the rows per seed of the call, take at most this much
+// GPU memory (Backend::seeds_per_call); a call of Table 4.1's ten seeds takes 2 MB.
+constexpr std::size_t kMaxOrderBytes = std::size_t(256) << 20;
+
 struct NetRun {
   int index = 0;         // into the job's nets
+  uint32_t order_base = 0;  // where its seed's permutation starts in the order buffer
   bool active = true;    // false once diverged
   long long step = 0;    // steps done in the current epoch
   long long t = 0;       // Adam steps applied in this run
@@ -111,6 +116,8 @@ class Job {
     rows_ = uint32_t(data.train_count());
     steps_ = (long long)(rows_ / uint32_t(cfg.batch));
     results_.resize(nets.size());
+    for (std::size_t i = 0; i < nets.size(); ++i)
+      if (std::find(seeds_.begin(), seeds_.end(), cfg.seed_of(i)) == seeds_.end()) seeds_.push_back(cfg.seed_of(i));
   }
 
   std::vector<NetResult> run(const Progress& progress, std::vector<GlGroupReport>& report) {
@@ -172,7 +179,11 @@ class Job {
     buf_.train_y = upload_floats(data_.train_y);
     buf_.val_x = upload_floats(data_.val_x);
     buf_.val_y = upload_floats(data_.val_y);
-    buf_.order = std::make_unique<gl::Buffer>(gl::ElemType::uint32, gl::texture_buffer_size(std::size_t(steps_ * cfg_.batch)));
+    const std::size_t orders = seeds_.size() * std::size_t(steps_ * cfg_.batch);
+    if (orders * 4 > kMaxOrderBytes)
+      throw std::invalid_argument("gl trainer: " + std::to_string(seeds_.size()) + " seeds of " + std::to_string(rows_) +
+                                  " rows in one call (the job splits calls by GlTrainer::seeds_per_call)");
+    buf_.order = std::make_unique<gl::Buffer>(gl::ElemType::uint32, gl::texture_buffer_size(orders));
     upload_bias_corrections();
   }
 
@@ -206,6 +217,8 @@ class Job {
       }
       NetRun r;
       r.index = int(i);
+      const auto slot = std::find(seeds_.begin(), seeds_.end(), cfg_.seed_of(i)) - seeds_.begin();
+      r.order_base = uint32_t(std::size_t(slot) * std::size_t(steps_ * cfg_.batch));
       g->runs.push_back(r);
     }
     const Kernel kernel = kernel_in_use(opt_.kernel);
@@ -213,7 +226,7 @@ class Job {
       const std::size_t P = g.spec.param_count(), PQ = padded_chunks(g.spec), n = g.runs.size();
       const bool want_per_net =
           kernel == Kernel::per_net || (kernel == Kernel::automatic && gl::current().info().software);
-      const bool data_fits = buf_.train_x->count() <= gl::BufferTexture::max_texels();
+      const bool data_fits = std::max(buf_.train_x->count(), buf_.order->count()) <= gl::BufferTexture::max_texels();
       g.layout = plan_train_layout(g.spec, cfg_.batch, max_shared, want_per_net && data_fits);
       if (kernel == Kernel::per_net && !g.layout.per_net)
         throw std::invalid_argument("gl trainer: " + g.spec.describe() +
@@ -256,13 +269,17 @@ class Job {
     }
   }
 
-  // The epoch's permutation, computed here by nn/shuffle.h (the code the cpu backend and the
-  // oracle run: the same order by construction) and uploaded once per epoch for all networks;
-  // in the kernel its cycle-walking loop would spend llvmpipe's loop budget, per sample.
+  // The epoch's permutation of each seed, one after another, computed here by nn/shuffle.h (the
+  // code the cpu backend and the oracle run: the same order by construction) and uploaded once
+  // per epoch for all networks; in the kernel its cycle-walking loop would spend llvmpipe's loop
+  // budget, per sample. A net reads its seed's from its order_base.
   void upload_order(uint32_t epoch) {
-    EpochShuffle perm(cfg_.seed, epoch, rows_);
-    std::vector<uint32_t> order(std::size_t(steps_ * cfg_.batch));
-    for (std::size_t k = 0; k < order.size(); ++k) order[k] = perm(uint32_t(k));
+    const std::size_t n = std::size_t(steps_ * cfg_.batch);
+    std::vector<uint32_t> order(n * seeds_.size());
+    for (std::size_t s = 0; s < seeds_.size(); ++s) {
+      EpochShuffle perm(seeds_[s], epoch, rows_);
+      for (std::size_t k = 0; k < n; ++k) order[s * n + k] = perm(uint32_t(k));
+    }
     buf_.order->upload(order.data(), 0, order.size());
   }
 
@@ -347,7 +364,7 @@ class Job {
         if (!r.active || r.step >= steps_) continue;
         const long long end = r.stop_at >= 0 ? r.stop_at : steps_;
         ctl[k].limit = int32_t(std::min(g.chunk, end - r.step));
-        ctl[k].first_row = uint32_t(r.step * cfg_.batch);
+        ctl[k].first_row = r.order_base + uint32_t(r.step * cfg_.batch);
         ctl[k].loss_sum = r.loss_sum;
         ctl[k].t0 = uint32_t(r.t);
         ctl[k].sample_limit = r.sample_limit;
@@ -490,6 +507,7 @@ class Job {
   const GlTrainOptions& opt_;
   uint32_t rows_ = 0;
   long long steps_ = 0;
+  std::vector<uint32_t> seeds_;  // the call's distinct seeds, by first net: the order buffer's slots
   DataBuffers buf_;
   std::vector<Group> groups_;
   std::vector<NetResult> results_;
@@ -509,6 +527,11 @@ std::vector<NetResult> GlTrainer::train(const std::vector<const Mlp*>& nets, con
   if (nets.empty()) return {};
   Job job(nets, data, cfg, options_);
   return job.run(progress, report_);
+}
+
+std::size_t GlTrainer::seeds_per_call(std::size_t train_rows) const {
+  const std::size_t rows = std::max<std::size_t>(1, train_rows);
+  return std::max<std::size_t>(1, std::min(kMaxOrderBytes / 4, gl::BufferTexture::max_texels()) / rows);
 }
 
 std::unique_ptr<Backend> make_gl_backend() { return std::make_unique<GlTrainer>(); }

@@ -49,6 +49,9 @@ class GlTrainer : public Backend {
   explicit GlTrainer(GlTrainOptions options = {}) : options_(options) {}
   std::string name() const override { return "gl"; }
   std::string device() const override;
+  // As many as the epoch's orders (one permutation per seed, read by every net of that seed)
+  // fit kMaxOrderBytes and, for the per-network kernel, a texture buffer.
+  std::size_t seeds_per_call(std::size_t train_rows) const override;
   std::vector<NetResult> train(const std::vector<const Mlp*>& nets, const data::Dataset& data, const TrainConfig& cfg,
                                const Progress& progress) override;
   const std::vector<GlGroupReport>& report() const { return report_; }

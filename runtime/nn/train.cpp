@@ -180,23 +180,29 @@ std::string resolve_backend(const std::string& requested, std::string* reason, c
 }
 
 namespace {
-// A backend that takes one shuffle seed per call (Backend::mixes_seeds) trains each seed's
-// nets in a call of their own, in the order of their first net.
+// A job with more distinct seeds than the backend takes in one call (Backend::seeds_per_call)
+// trains them in calls of at most `per_call` seeds, each seed's nets in one call, the seeds in
+// the order of their first net.
 std::vector<NetResult> train_by_seed(Backend& backend, const std::vector<const Mlp*>& nets, const data::Dataset& d,
-                                     const TrainConfig& cfg, const Progress& progress) {
+                                     const TrainConfig& cfg, const Progress& progress, std::size_t per_call) {
+  std::vector<uint32_t> order;  // distinct seeds, by first net
+  for (std::size_t i = 0; i < nets.size(); ++i)
+    if (std::find(order.begin(), order.end(), cfg.seed_of(i)) == order.end()) order.push_back(cfg.seed_of(i));
   std::vector<NetResult> out(nets.size());
-  std::vector<char> done(nets.size(), 0);
-  for (std::size_t i = 0; i < nets.size(); ++i) {
-    if (done[i]) continue;
+  for (std::size_t first = 0; first < order.size(); first += per_call) {
+    const auto from = order.begin() + long(first), to = order.begin() + long(std::min(order.size(), first + per_call));
     std::vector<std::size_t> index;  // the call's nets in the job
-    for (std::size_t j = i; j < nets.size(); ++j)
-      if (!done[j] && cfg.seed_of(j) == cfg.seed_of(i)) index.push_back(j), done[j] = 1;
+    for (std::size_t j = 0; j < nets.size(); ++j)
+      if (std::find(from, to, cfg.seed_of(j)) != to) index.push_back(j);
     TrainConfig one = cfg;
-    one.seed = cfg.seed_of(i);
+    one.seed = *from;
     one.seeds.clear();
     one.initial_val_mse.clear();
     std::vector<const Mlp*> some;
-    for (std::size_t j : index) some.push_back(nets[j]), one.initial_val_mse.push_back(cfg.initial_val_mse_of(j));
+    for (std::size_t j : index) {
+      some.push_back(nets[j]), one.initial_val_mse.push_back(cfg.initial_val_mse_of(j));
+      if (to - from > 1) one.seeds.push_back(cfg.seed_of(j));
+    }
     Progress mapped;
     if (progress)
       mapped = [&](const ProgressEvent& e) {
@@ -266,8 +272,12 @@ JobResult train(const TrainJob& job) {
     cfg.seed = cfg.seeds[0];
     cfg.seeds.clear();
   }
-  out.nets = cfg.seeds.empty() || backend->mixes_seeds() ? backend->train(nets, *job.data, cfg, progress)
-                                                         : train_by_seed(*backend, nets, *job.data, cfg, progress);
+  std::size_t seeds = 1;
+  for (std::size_t i = 1; i < cfg.seeds.size(); ++i)
+    seeds += std::find(cfg.seeds.begin(), cfg.seeds.begin() + long(i), cfg.seeds[i]) == cfg.seeds.begin() + long(i);
+  const std::size_t per_call = std::max<std::size_t>(1, backend->seeds_per_call(job.data->train_count()));
+  out.nets = seeds <= per_call ? backend->train(nets, *job.data, cfg, progress)
+                               : train_by_seed(*backend, nets, *job.data, cfg, progress, per_call);
   out.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (out.nets.size() != nets.size()) throw std::logic_error("backend " + out.backend + " returned wrong result count");
   const long long steps_per_epoch = (long long)(job.data->train_count() / std::size_t(cfg.batch));

@@ -173,9 +173,10 @@ class Backend {
   // shares data.inputs/outputs and colour space, batch <= data.train_count(), data is finite.
   virtual std::vector<NetResult> train(const std::vector<const Mlp*>& nets, const data::Dataset& data,
                                        const TrainConfig& cfg, const Progress& progress) = 0;
-  // Whether train() takes nets of different shuffle seeds (TrainConfig::seeds) in one call; the
-  // job (nn/train.h) gives one seed per call to a backend that does not.
-  virtual bool mixes_seeds() const { return false; }
+  // How many distinct shuffle seeds (TrainConfig::seeds) train() takes in one call, for a
+  // dataset of `train_rows`; the job (nn/train.h) splits a job with more into calls of at most
+  // that many, each seed's nets in one call.
+  virtual std::size_t seeds_per_call(std::size_t /*train_rows*/) const { return 1; }
 };
 
 std::unique_ptr<Backend> make_cpu_backend();

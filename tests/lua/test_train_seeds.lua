@@ -1,6 +1,6 @@
 -- sn.train's seed per net: a job of nets with different shuffle seeds trains each exactly as a
 -- job of that net alone with its seed, on every backend (the cpu backend pairs nets of one
--- architecture across seeds in its AVX-512 lanes; the gl backend trains one seed at a time).
+-- architecture across seeds in its AVX-512 lanes; the gl backend a seed's permutation per net).
 -- Bad seed tables are refused with the option's name.
 local sn = require "shadenet"
 local expect = require "expect"

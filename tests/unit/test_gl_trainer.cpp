@@ -9,6 +9,7 @@
 #include <cmath>
 #include <random>
 
+#include "gl/buffer_texture.h"
 #include "gl/context.h"
 #include "nn/cpu_trainer.h"
 #include "nn/gl_trainer.h"
@@ -473,6 +474,37 @@ TEST_P(GlKernel, ArchitecturesTrainAsSeparateGroupsLikeAlone) {
   EXPECT_EQ(r[1].final_params, rb.final_params);
   EXPECT_EQ(r[2].final_params, rc.final_params);
   EXPECT_EQ(r[2].val_mse, rc.val_mse);
+}
+
+// Nets of one architecture with different shuffle seeds share a group, each reading its seed's
+// permutation: one dispatch trains a sweep's seeds together, each net as it trains alone.
+TEST_P(GlKernel, NetsOfDifferentSeedsShareAGroupAndTrainAsAlone) {
+  sn::gl::current();
+  const MlpSpec spec = spec_of({6, 6});
+  Mlp a(spec, Init::xavier, 1), b(spec, Init::xavier, 2), c(spec, Init::xavier, 3);
+  Dataset data = phong_like(200, 40, 7);
+  TrainConfig cfg;
+  cfg.epochs = 2;
+  cfg.seeds = {5, 9, 5};
+  GlTrainer gl = trainer();
+  auto r = gl.train({&a, &b, &c}, data, cfg, nullptr);
+  expect_kernel(gl);
+  ASSERT_EQ(gl.report().size(), 1u);
+  EXPECT_EQ(gl.report()[0].nets, 3);
+  const Mlp* nets[3] = {&a, &b, &c};
+  for (int n = 0; n < 3; ++n) {
+    TrainConfig alone = cfg;
+    alone.seeds.clear();
+    alone.seed = cfg.seeds[std::size_t(n)];
+    auto one = gl.train({nets[n]}, data, alone, nullptr)[0];
+    EXPECT_EQ(r[std::size_t(n)].final_params, one.final_params) << "net " << n;
+    EXPECT_EQ(r[std::size_t(n)].val_mse, one.val_mse) << "net " << n;
+  }
+  EXPECT_NE(r[0].final_params, r[1].final_params);
+  // How many seeds one call takes: their permutations fit 256 MB and a texture buffer.
+  const std::size_t texels = sn::gl::BufferTexture::max_texels();
+  EXPECT_EQ(gl.seeds_per_call(51319), std::min<std::size_t>(std::size_t(64) << 20, texels) / 51319);
+  EXPECT_EQ(gl.seeds_per_call(std::size_t(1) << 30), 1u);
 }
 
 // The layouts for networks too large for shared memory keep arrays in a storage buffer: same
