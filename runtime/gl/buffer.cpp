@@ -21,7 +21,7 @@ const ElemInfo kInfo[] = {
 // and an H100 run read mid-sized uploads into it as zeros (docs/performance.md, "On a GPU").
 constexpr GLbitfield kMapAccess = GL_MAP_READ_BIT | GL_MAP_WRITE_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
 
-// A buffer object of `bytes` with `flags`; 0 when the driver is out of memory.
+// A buffer object of `bytes` with `flags`; throws when the driver is out of memory.
 GLuint create_storage(std::size_t bytes, GLbitfield flags) {
   check_gl_errors_before("creating a buffer");
   GLuint id = 0;

@@ -181,8 +181,9 @@ class Job {
     buf_.val_y = upload_floats(data_.val_y);
     const std::size_t orders = seeds_.size() * std::size_t(steps_ * cfg_.batch);
     if (orders * 4 > kMaxOrderBytes)
-      throw std::invalid_argument("gl trainer: " + std::to_string(seeds_.size()) + " seeds of " + std::to_string(rows_) +
-                                  " rows in one call (the job splits calls by GlTrainer::seeds_per_call)");
+      throw std::invalid_argument("gl trainer: the permutations of " + std::to_string(seeds_.size()) + " seeds of " +
+                                  std::to_string(rows_) + " rows exceed one call's " +
+                                  std::to_string(kMaxOrderBytes >> 20) + " MB (GlTrainer::seeds_per_call)");
     buf_.order = std::make_unique<gl::Buffer>(gl::ElemType::uint32, gl::texture_buffer_size(orders));
     upload_bias_corrections();
   }
