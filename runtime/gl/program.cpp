@@ -242,7 +242,7 @@ void clear_program_cache() {
 }
 std::size_t program_cache_size() { return cache().size(); }
 
-void dispatch(Program& p, unsigned gx, unsigned gy, unsigned gz) {
+void dispatch_without_barrier(Program& p, unsigned gx, unsigned gy, unsigned gz) {
   if (!p.is_compute()) throw std::invalid_argument("dispatch needs a compute program, got " + p.name());
   GLint max[3];
   for (int i = 0; i < 3; ++i) glGetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, i, &max[i]);
@@ -258,6 +258,10 @@ void dispatch(Program& p, unsigned gx, unsigned gy, unsigned gz) {
     throw std::runtime_error("dispatching " + p.name() + " (" + std::to_string(gx) + "x" + std::to_string(gy) + "x" +
                              std::to_string(gz) + " workgroups) failed: " + gl_error_text(e) +
                              " (SHADENET_GL_DEBUG=1 prints the driver's reason)");
+}
+
+void dispatch(Program& p, unsigned gx, unsigned gy, unsigned gz) {
+  dispatch_without_barrier(p, gx, gy, gz);
   glMemoryBarrier(GL_ALL_BARRIER_BITS);
 }
 

@@ -77,5 +77,8 @@ void set_program_fallback(std::function<void(const std::string& error)> sink);
 
 // Runs `groups` workgroups of the bound compute program and orders its writes before later reads.
 void dispatch(Program& p, unsigned gx, unsigned gy = 1, unsigned gz = 1);
+// The same without the barrier: dispatches over separate buffers, issued one after another,
+// may then run side by side; the caller orders their writes (glMemoryBarrier) before reading.
+void dispatch_without_barrier(Program& p, unsigned gx, unsigned gy = 1, unsigned gz = 1);
 
 }  // namespace sn::gl

@@ -9,6 +9,7 @@
 #include <cstring>
 #include <map>
 #include <memory>
+#include <numeric>
 #include <stdexcept>
 #include <thread>
 
@@ -57,12 +58,12 @@ enum Status { kOk = 0, kStopped = 1, kLate = 2, kCut = 3, kExploded = 4 };
 // A probe run's sentinel bound: far above any loop budget, so it counts what is left.
 constexpr int kProbeSentinel = 1 << 22;
 
-// A dispatch aims at this long, so that a stop (Ctrl-C, a progress function's "stop") is seen
-// within about this time even in a long epoch; chunking never changes a result (the kernel
-// carries the loss sum and Adam's t across dispatches). Without a loop limiter (a hardware GPU)
-// the first dispatch of an architecture holds kFirstChunk steps and later ones are sized from
-// the measured time per step.
-constexpr double kDispatchSeconds = 0.25;
+// A round of dispatches (one per architecture, run_epoch) aims at this long, so that a stop
+// (Ctrl-C, a progress function's "stop") is seen within about this time even in a long epoch;
+// chunking never changes a result (the kernel carries the loss sum and Adam's t across
+// dispatches). Without a loop limiter (a hardware GPU) the first dispatch of an architecture
+// holds kFirstChunk steps and later ones are sized from the round's measured time per step.
+constexpr double kRoundSeconds = 0.25;
 constexpr long long kFirstChunk = 64;
 
 // The epoch's orders, one permutation of the rows per seed of the call, take at most this much
@@ -142,7 +143,7 @@ class Job {
       upload_order(uint32_t(e));
       if (e == 0)
         for (Group& g : groups_) plan_chunks(g);
-      for (Group& g : groups_) run_epoch(g, e);
+      run_epoch(e);
       if (!finish_epoch(e, progress)) break;
     }
     // Stopped: every net still training ends where it is (a partial epoch's steps are kept).
@@ -284,7 +285,9 @@ class Job {
     buf_.order->upload(order.data(), 0, order.size());
   }
 
-  void dispatch(Group& g, const std::vector<GlControl>& ctl, bool probe, std::vector<GlControl>& result) {
+  // Starts the group's dispatch over `ctl`; nothing orders its writes before later reads
+  // (read_back does).
+  void issue(Group& g, const std::vector<GlControl>& ctl, bool probe) {
     g.control->upload(ctl.data(), 0, ctl.size() * kControlWords);
     const gl::Buffer* bind[7] = {buf_.train_x.get(), buf_.train_y.get(), buf_.order.get(), g.state.get(),
                                  g.scratch.get(),    g.control.get(),    buf_.bias.get()};
@@ -307,9 +310,13 @@ class Job {
       groups = std::max((ctl.size() + kNetsPerGroup - 1) / kNetsPerGroup, std::min(ctl.size(), threads));
       p.set_uniform("u_groups", {double(groups)});
     }
-    gl::dispatch(p, unsigned(groups));
-    result.resize(ctl.size());
-    g.control->download(result.data(), 0, ctl.size() * kControlWords);
+    gl::dispatch_without_barrier(p, unsigned(groups));
+  }
+
+  void read_back(Group& g, std::size_t nets, std::vector<GlControl>& result) {
+    glMemoryBarrier(GL_ALL_BARRIER_BITS);
+    result.resize(nets);
+    g.control->download(result.data(), 0, nets * kControlWords);
   }
 
   // On a software renderer, two probe dispatches of the first network (1 and 2 steps, learning
@@ -319,7 +326,8 @@ class Job {
     auto remaining_after = [&](int steps) {
       std::vector<GlControl> ctl(g.runs.size()), out;
       ctl[0].limit = steps;
-      dispatch(g, ctl, true, out);
+      issue(g, ctl, true);
+      read_back(g, ctl.size(), out);
       return (long long)out[0].remaining;
     };
     const long long r1 = gl::current().info().software ? remaining_after(1) : kProbeSentinel;
@@ -340,12 +348,12 @@ class Job {
     if (opt_.steps_per_dispatch > 0) g.chunk = g.max_chunk = std::min(steps_, opt_.steps_per_dispatch);
   }
 
-  // Sizes the next dispatches from the last one: `steps` took `seconds`.
+  // Sizes the group's next dispatches from the last round: `steps` of it took `seconds`.
   void time_chunks(Group& g, long long steps, double seconds) {
     if (opt_.steps_per_dispatch > 0 || steps < 1 || !(seconds > 0)) return;
     const double per_step = seconds / double(steps);
-    // With a tick, short enough for the caller to tick between dispatches on time.
-    const double target = cfg_.tick ? std::min(kDispatchSeconds, cfg_.tick_seconds) : kDispatchSeconds;
+    // With a tick, short enough for the caller to tick between rounds on time.
+    const double target = cfg_.tick ? std::min(kRoundSeconds, cfg_.tick_seconds) : kRoundSeconds;
     g.chunk = std::clamp((long long)(target / per_step), 1LL, g.max_chunk);
   }
 
@@ -354,80 +362,111 @@ class Job {
     results_[std::size_t(r.index)].diverged = Divergence{epoch + 1, r.stop_at + 1, r.stop_kind};
   }
 
-  void run_epoch(Group& g, int e) {
-    std::vector<GlControl> ctl(g.runs.size()), out;
-    for (;;) {
-      bool any = false;
-      for (std::size_t k = 0; k < g.runs.size(); ++k) {
-        NetRun& r = g.runs[k];
-        ctl[k] = GlControl{};
-        if (r.active && r.stop_at >= 0 && r.step == r.stop_at) diverge(r, e);
-        if (!r.active || r.step >= steps_) continue;
-        const long long end = r.stop_at >= 0 ? r.stop_at : steps_;
-        ctl[k].limit = int32_t(std::min(g.chunk, end - r.step));
-        ctl[k].first_row = r.order_base + uint32_t(r.step * cfg_.batch);
-        ctl[k].loss_sum = r.loss_sum;
-        ctl[k].t0 = uint32_t(r.t);
-        ctl[k].sample_limit = r.sample_limit;
-        any = true;
+  // The group's next dispatch: each net that has steps left this epoch, up to the group's chunk.
+  // False when none has.
+  bool prepare(Group& g, int e, std::vector<GlControl>& ctl) {
+    ctl.assign(g.runs.size(), GlControl{});
+    bool any = false;
+    for (std::size_t k = 0; k < g.runs.size(); ++k) {
+      NetRun& r = g.runs[k];
+      if (r.active && r.stop_at >= 0 && r.step == r.stop_at) diverge(r, e);
+      if (!r.active || r.step >= steps_) continue;
+      const long long end = r.stop_at >= 0 ? r.stop_at : steps_;
+      ctl[k].limit = int32_t(std::min(g.chunk, end - r.step));
+      ctl[k].first_row = r.order_base + uint32_t(r.step * cfg_.batch);
+      ctl[k].loss_sum = r.loss_sum;
+      ctl[k].t0 = uint32_t(r.t);
+      ctl[k].sample_limit = r.sample_limit;
+      any = true;
+    }
+    return any;
+  }
+
+  // What the kernel reports for each net of a dispatch; `seconds` sizes the next one.
+  void settle(Group& g, int e, const std::vector<GlControl>& ctl, const std::vector<GlControl>& out, double seconds) {
+    ++g.report.dispatches;
+    bool cut = false, cut_at_one = false;
+    for (std::size_t k = 0; k < g.runs.size(); ++k) {
+      if (ctl[k].limit <= 0) continue;
+      NetRun& r = g.runs[k];
+      const GlControl& c = out[k];
+      switch (c.status) {
+        case kOk:
+          if (c.done != ctl[k].limit)
+            throw std::logic_error("gl trainer: the kernel finished " + std::to_string(c.done) + " of " +
+                                   std::to_string(ctl[k].limit) + " steps and gave no reason");
+          [[fallthrough]];
+        case kStopped:
+        case kExploded:
+          r.step += c.done;
+          r.t += c.done;
+          r.loss_sum = c.loss_sum;
+          if (c.status != kOk) {
+            r.stop_at = r.step;
+            r.stop_kind = c.status == kExploded ? DivergenceKind::exploded : DivergenceKind::nonfinite;
+            diverge(r, e);
+          }
+          break;
+        case kLate:  // nothing committed: re-run up to the step before the bad one
+          r.stop_at = r.step + c.done - 1;
+          ++g.report.divergence_reruns;
+          break;
+        case kCut:
+          cut = true;
+          cut_at_one = cut_at_one || ctl[k].limit == 1;
+          break;
+        default:
+          throw std::logic_error("gl trainer: unknown kernel status " + std::to_string(c.status));
       }
-      if (!any || cfg_.stop_requested()) return;
+    }
+    if (!cut) {
+      long long longest = 0;
+      for (const GlControl& c : ctl) longest = std::max<long long>(longest, c.limit);
+      time_chunks(g, longest, seconds);
+      return;
+    }
+    ++g.report.cut_dispatches;
+    if (cut_at_one)
+      throw std::runtime_error(g.spec.describe() + ": one training step needs more loop iterations than this GL " +
+                               "driver runs per shader invocation; train it with backend = \"cpu\"");
+    g.chunk = std::max(1LL, g.chunk / 2);
+    g.max_chunk = g.chunk;
+  }
+
+  // Epoch e of every group, in rounds: each group with steps left gets one dispatch, and all of a
+  // round's are issued before any is read back, so a GPU may run the architectures' workgroups
+  // side by side (one architecture's are as many as its networks). A round is sized to take
+  // about kRoundSeconds: each group's chunk from the round's time. A software renderer runs one
+  // dispatch at a time whatever is issued: there each group is a round of its own, sized by its
+  // own time (rounds of every group only added dispatches: Table 4.1 --quick --backend gl took
+  // 11.4-15.1 s against 10.0-12.5 s, 4 alternating runs).
+  void run_epoch(int e) {
+    std::vector<std::size_t> all(groups_.size());
+    std::iota(all.begin(), all.end(), std::size_t(0));
+    const bool together = opt_.rounds == GlTrainOptions::Rounds::automatic
+                              ? !gl::current().info().software
+                              : opt_.rounds == GlTrainOptions::Rounds::all_architectures;
+    if (together) return run_rounds(e, all);
+    for (std::size_t i : all) run_rounds(e, {i});
+  }
+
+  void run_rounds(int e, const std::vector<std::size_t>& groups) {
+    std::vector<std::vector<GlControl>> ctl(groups_.size()), out(groups_.size());
+    for (;;) {
+      std::vector<std::size_t> round;
+      for (std::size_t i : groups)
+        if (prepare(groups_[i], e, ctl[i])) round.push_back(i);
+      if (round.empty() || cfg_.stop_requested()) return;
       const auto t0 = std::chrono::steady_clock::now();
-      dispatch(g, ctl, false, out);
+      for (std::size_t i : round) issue(groups_[i], ctl[i], false);
+      for (std::size_t i : round) read_back(groups_[i], ctl[i].size(), out[i]);
       const auto t1 = std::chrono::steady_clock::now();
       const double seconds = std::chrono::duration<double>(t1 - t0).count();
-      ++g.report.dispatches;
       if (cfg_.tick && std::chrono::duration<double>(t1 - last_tick_).count() >= cfg_.tick_seconds) {
         last_tick_ = t1;
         tick(e);
       }
-      bool cut = false, cut_at_one = false;
-      for (std::size_t k = 0; k < g.runs.size(); ++k) {
-        if (ctl[k].limit <= 0) continue;
-        NetRun& r = g.runs[k];
-        const GlControl& c = out[k];
-        switch (c.status) {
-          case kOk:
-            if (c.done != ctl[k].limit)
-              throw std::logic_error("gl trainer: the kernel finished " + std::to_string(c.done) + " of " +
-                                     std::to_string(ctl[k].limit) + " steps and gave no reason");
-            [[fallthrough]];
-          case kStopped:
-          case kExploded:
-            r.step += c.done;
-            r.t += c.done;
-            r.loss_sum = c.loss_sum;
-            if (c.status != kOk) {
-              r.stop_at = r.step;
-              r.stop_kind = c.status == kExploded ? DivergenceKind::exploded : DivergenceKind::nonfinite;
-              diverge(r, e);
-            }
-            break;
-          case kLate:  // nothing committed: re-run up to the step before the bad one
-            r.stop_at = r.step + c.done - 1;
-            ++g.report.divergence_reruns;
-            break;
-          case kCut:
-            cut = true;
-            cut_at_one = cut_at_one || ctl[k].limit == 1;
-            break;
-          default:
-            throw std::logic_error("gl trainer: unknown kernel status " + std::to_string(c.status));
-        }
-      }
-      if (!cut) {
-        long long longest = 0;
-        for (const GlControl& c : ctl) longest = std::max<long long>(longest, c.limit);
-        time_chunks(g, longest, seconds);
-      }
-      if (cut) {
-        ++g.report.cut_dispatches;
-        if (cut_at_one)
-          throw std::runtime_error(g.spec.describe() + ": one training step needs more loop iterations than this GL " +
-                                   "driver runs per shader invocation; train it with backend = \"cpu\"");
-        g.chunk = std::max(1LL, g.chunk / 2);
-        g.max_chunk = g.chunk;
-      }
+      for (std::size_t i : round) settle(groups_[i], e, ctl[i], out[i], seconds);
     }
   }
 

@@ -42,6 +42,10 @@ struct GlTrainOptions {
   // one where this is automatic. Tests force each on the same networks.
   enum class Kernel { automatic, per_sample, per_net };
   Kernel kernel = Kernel::automatic;
+  // Rounds of dispatches (nn/gl_trainer.cpp, run_epoch): automatic = every architecture in one
+  // round on a GPU, one at a time on a software renderer. Tests force each on llvmpipe.
+  enum class Rounds { automatic, all_architectures, each_architecture };
+  Rounds rounds = Rounds::automatic;
 };
 
 class GlTrainer : public Backend {

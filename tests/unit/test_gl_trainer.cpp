@@ -474,6 +474,17 @@ TEST_P(GlKernel, ArchitecturesTrainAsSeparateGroupsLikeAlone) {
   EXPECT_EQ(r[1].final_params, rb.final_params);
   EXPECT_EQ(r[2].final_params, rc.final_params);
   EXPECT_EQ(r[2].val_mse, rc.val_mse);
+  // Both architectures' dispatches issued in each round (a GPU's way) or one architecture at a
+  // time (a software renderer's), in short dispatches so that rounds interleave: the same nets.
+  for (auto rounds : {GlTrainOptions::Rounds::all_architectures, GlTrainOptions::Rounds::each_architecture}) {
+    GlTrainer forced(GlTrainOptions{5, 0, GetParam(), rounds});
+    auto f = forced.train({&a, &b, &c}, data, cfg, nullptr);
+    for (std::size_t n = 0; n < 3; ++n) {
+      EXPECT_EQ(f[n].final_params, r[n].final_params) << "net " << n;
+      EXPECT_EQ(f[n].val_mse, r[n].val_mse) << "net " << n;
+    }
+    EXPECT_GE(forced.report()[1].dispatches, 2 * 200 / 8 / 5);  // 2 epochs of 25 steps, 5 a dispatch
+  }
 }
 
 // Nets of one architecture with different shuffle seeds share a group, each reading its seed's
