@@ -42,33 +42,15 @@ FileWatcher::~FileWatcher() {
   close(control_[1]);
 }
 
+// One inotify watch per folder of a watched file, added here on the caller's thread.
 void FileWatcher::watch(const std::vector<std::string>& files) {
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    files_.clear();
-    folders_wanted_.clear();
-    for (const auto& f : files) {
-      std::string a = normal_absolute(f);
-      files_.insert(a);
-      folders_wanted_.insert(fs::path(a).parent_path().string());
-    }
-  }
-  char s = 's';
-  (void)!write(control_[1], &s, 1);
-}
-
-std::vector<std::string> FileWatcher::take_changed() {
   std::lock_guard<std::mutex> lock(mutex_);
-  std::vector<std::string> out(changed_.begin(), changed_.end());
-  changed_.clear();
-  return out;
-}
-
-void FileWatcher::sync_watches() {
+  files_.clear();
   std::set<std::string> wanted;
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    wanted = folders_wanted_;
+  for (const auto& f : files) {
+    std::string a = normal_absolute(f);
+    files_.insert(a);
+    wanted.insert(fs::path(a).parent_path().string());
   }
   for (auto it = watches_.begin(); it != watches_.end();) {
     if (!wanted.count(it->second)) {
@@ -85,6 +67,13 @@ void FileWatcher::sync_watches() {
   }
 }
 
+std::vector<std::string> FileWatcher::take_changed() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  std::vector<std::string> out(changed_.begin(), changed_.end());
+  changed_.clear();
+  return out;
+}
+
 void FileWatcher::run() {
   alignas(inotify_event) char buf[16384];
   for (;;) {
@@ -93,13 +82,7 @@ void FileWatcher::run() {
       if (errno == EINTR) continue;
       return;
     }
-    if (fds[0].revents) {
-      char c;
-      bool quit = false, sync = false;
-      while (read(control_[0], &c, 1) == 1) (c == 'q' ? quit : sync) = true;
-      if (quit) return;
-      if (sync) sync_watches();
-    }
+    if (fds[0].revents) return;  // the destructor's 'q'
     if (!(fds[1].revents & POLLIN)) continue;
     bool any = false;
     ssize_t n;
@@ -108,10 +91,10 @@ void FileWatcher::run() {
         auto* ev = reinterpret_cast<inotify_event*>(p);
         p += sizeof(inotify_event) + ev->len;
         if (!ev->len) continue;
+        std::lock_guard<std::mutex> lock(mutex_);
         for (const auto& [wd, folder] : watches_) {
           if (wd != ev->wd) continue;
           std::string path = (fs::path(folder) / ev->name).string();
-          std::lock_guard<std::mutex> lock(mutex_);
           if (files_.count(path)) changed_.insert(path), any = true;
         }
       }

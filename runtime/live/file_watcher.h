@@ -19,21 +19,21 @@ class FileWatcher {
   FileWatcher(const FileWatcher&) = delete;
   FileWatcher& operator=(const FileWatcher&) = delete;
 
-  // Replaces the set of watched files (made absolute; they need not exist yet).
+  // Replaces the set of watched files (made absolute; they need not exist yet). Every save after
+  // it returns is seen: the watches are in place (a watch the thread added later missed a save
+  // made in between, and a session stayed on its broken first run).
   void watch(const std::vector<std::string>& files);
   // The watched files written (closed after writing) or renamed into place since the last call.
   std::vector<std::string> take_changed();
 
  private:
   void run();
-  void sync_watches();  // on the thread: one inotify watch per folder of a watched file
 
   std::function<void()> wake_;
   int inotify_ = -1, control_[2] = {-1, -1};
   std::mutex mutex_;
   std::set<std::string> files_, changed_;
-  std::set<std::string> folders_wanted_;
-  std::vector<std::pair<int, std::string>> watches_;  // inotify descriptor, folder (thread only)
+  std::vector<std::pair<int, std::string>> watches_;  // inotify descriptor, folder (under mutex_)
   std::thread thread_;
 };
 

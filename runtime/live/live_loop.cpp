@@ -17,6 +17,7 @@
 #include <regex>
 #include <set>
 #include <sstream>
+#include <utility>
 
 #include "live/error_report.h"
 #include "live/file_watcher.h"
@@ -162,6 +163,7 @@ class Loop {
   std::vector<std::string> fallback_errors_;     // broken programs replaced by their last good build
   std::map<std::string, std::string> contents_;  // watched file -> content when last run
   std::vector<std::string> watched_;
+  bool missed_save_ = false;  // a file changed between its run and its watch: reload
 
   std::string script_error_, frame_error_, shader_error_, last_reported_, title_;
   std::string snapshot_, shown_path_;
@@ -257,19 +259,24 @@ void Loop::update_watch_set() {
   files.insert(files.end(), shader_files_.begin(), shader_files_.end());
   if (files == watched_) return;
   watched_ = files;
-  for (const auto& f : files)
-    if (!contents_.count(f)) contents_[f] = read_all(f);
-  watcher_->watch(files);
+  watcher_->watch(files);  // in place on return: every later save is seen
+  // A save between the run's read and the watch is seen here: the run read what contents_ holds
+  // (the script: run_script's own read; a file first watched now: as it is now).
+  for (const auto& f : files) {
+    std::string now = read_all(f);
+    if (contents_.count(f) && contents_[f] != now) missed_save_ = true;
+    contents_[f] = now;
+  }
 }
 
 // True when a watched file now differs from what the last run read (a save that rewrote the
 // same bytes is no reason to reload).
 bool Loop::files_changed() {
   if (!watcher_) return false;
-  bool any = false;
+  bool any = std::exchange(missed_save_, false);
   std::set<std::string> changed;
   for (const auto& f : watcher_->take_changed()) changed.insert(f);
-  if (changed.empty()) return false;
+  if (changed.empty()) return any;
   for (const auto& f : watched_) {
     std::error_code ec;
     std::string canon = std::filesystem::weakly_canonical(std::filesystem::absolute(f), ec).string();
@@ -286,6 +293,7 @@ void Loop::run_script() {
   // A syntax error changes nothing: the last good state stays, networks included. The files
   // are still watched (the first run may be the broken one), so the fix is seen.
   std::string source = read_all(o_.script);
+  contents_[o_.script] = source;  // what this run reads (update_watch_set compares with it)
   bool empty = source.find_first_not_of(" \t\r\n") == std::string::npos;
   if (empty || luaL_loadfile(L_, o_.script.c_str()) != 0) {
     // An empty file is a save in progress (truncated, not yet written) or a mistake, never a good run.

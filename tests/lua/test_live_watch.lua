@@ -1,7 +1,8 @@
 -- `shadenet --watch` headless, the ways a live session used to lose the user (issue 14): a run
 -- that starts with a syntax error, an empty or half-written save, a module required lazily by a
 -- view that breaks and is fixed, the user's view mode across a light change, and a GLSL error
--- raised while the script builds a program. Each step fails without its fix.
+-- raised while the script builds a program, a save made while the first run runs. Each step
+-- fails without its fix.
 local sn = require "shadenet"
 package.path = "tests/live/?.lua;" .. package.path
 local H = require "harness"
@@ -112,3 +113,19 @@ local title = status("title")
 assert(title:find("^ERROR [^|]*bad%.frag:3:"), "the status names the shader's file:line first: " .. title)
 print("5. GLSL error in a program the script builds: " .. title:match("^ERROR ([^|]*)"))
 s:stop()
+
+-- 6. A save that lands while the first run runs, before the file is watched: the session reloads
+-- (it stayed on the first run, comparing the next saves with the saved text it never ran).
+local own = dir .. "/own.lua"
+H.write(own, ([[
+local sn = require "shadenet"
+print("RUN A")
+local f = assert(io.open(%q, "w"))
+f:write('local sn = require "shadenet"\nprint("RUN B")\n')
+f:close()
+]]):format(own))
+local t = H.start { dir = dir .. "/session_own", script = own, window = false, limit = 60 }
+t:wait_log("RUN B", 20)
+assert(count(t:log(), "RUN A") == 1, "the first run ran once: " .. t:log())
+t:stop()
+print("6. a save during the first run is run")

@@ -126,7 +126,7 @@ TEST(LiveWatcher, SeesWritesAndRenamesOfWatchedFilesOnly) {
   std::atomic<int> wakes{0};
   FileWatcher w([&] { ++wakes; });
   w.watch({(dir / "a.lua").string(), (dir / "b.glsl").string()});  // b.glsl does not exist yet
-  std::this_thread::sleep_for(std::chrono::milliseconds(100));     // the thread adds its watches
+  // No wait: the watches are in place when watch() returns (a save right after was missed).
   auto wait_for = [&](size_t n) {
     std::vector<std::string> got;
     for (int i = 0; i < 200 && got.size() < n; ++i) {
