@@ -117,8 +117,6 @@ class Job {
     rows_ = uint32_t(data.train_count());
     steps_ = (long long)(rows_ / uint32_t(cfg.batch));
     results_.resize(nets.size());
-    for (std::size_t i = 0; i < nets.size(); ++i)
-      if (std::find(seeds_.begin(), seeds_.end(), cfg.seed_of(i)) == seeds_.end()) seeds_.push_back(cfg.seed_of(i));
   }
 
   std::vector<NetResult> run(const Progress& progress, std::vector<GlGroupReport>& report) {
@@ -285,8 +283,8 @@ class Job {
     buf_.order->upload(order.data(), 0, order.size());
   }
 
-  // Starts the group's dispatch over `ctl`; nothing orders its writes before later reads
-  // (read_back does).
+  // Starts the group's dispatch over `ctl`; nothing orders its writes before later reads (the
+  // caller's barrier does, one for every dispatch issued before it).
   void issue(Group& g, const std::vector<GlControl>& ctl, bool probe) {
     g.control->upload(ctl.data(), 0, ctl.size() * kControlWords);
     const gl::Buffer* bind[7] = {buf_.train_x.get(), buf_.train_y.get(), buf_.order.get(), g.state.get(),
@@ -313,8 +311,8 @@ class Job {
     gl::dispatch_without_barrier(p, unsigned(groups));
   }
 
+  // The control words of the group's last dispatch (after the caller's barrier).
   void read_back(Group& g, std::size_t nets, std::vector<GlControl>& result) {
-    glMemoryBarrier(GL_ALL_BARRIER_BITS);
     result.resize(nets);
     g.control->download(result.data(), 0, nets * kControlWords);
   }
@@ -327,6 +325,7 @@ class Job {
       std::vector<GlControl> ctl(g.runs.size()), out;
       ctl[0].limit = steps;
       issue(g, ctl, true);
+      glMemoryBarrier(GL_ALL_BARRIER_BITS);
       read_back(g, ctl.size(), out);
       return (long long)out[0].remaining;
     };
@@ -459,6 +458,7 @@ class Job {
       if (round.empty() || cfg_.stop_requested()) return;
       const auto t0 = std::chrono::steady_clock::now();
       for (std::size_t i : round) issue(groups_[i], ctl[i], false);
+      glMemoryBarrier(GL_ALL_BARRIER_BITS);  // one for the round's dispatches
       for (std::size_t i : round) read_back(groups_[i], ctl[i].size(), out[i]);
       const auto t1 = std::chrono::steady_clock::now();
       const double seconds = std::chrono::duration<double>(t1 - t0).count();
@@ -547,7 +547,7 @@ class Job {
   const GlTrainOptions& opt_;
   uint32_t rows_ = 0;
   long long steps_ = 0;
-  std::vector<uint32_t> seeds_;  // the call's distinct seeds, by first net: the order buffer's slots
+  const std::vector<uint32_t> seeds_ = cfg_.distinct_seeds(nets_.size());  // the order buffer's slots
   DataBuffers buf_;
   std::vector<Group> groups_;
   std::vector<NetResult> results_;

@@ -185,9 +185,7 @@ namespace {
 // the order of their first net.
 std::vector<NetResult> train_by_seed(Backend& backend, const std::vector<const Mlp*>& nets, const data::Dataset& d,
                                      const TrainConfig& cfg, const Progress& progress, std::size_t per_call) {
-  std::vector<uint32_t> order;  // distinct seeds, by first net
-  for (std::size_t i = 0; i < nets.size(); ++i)
-    if (std::find(order.begin(), order.end(), cfg.seed_of(i)) == order.end()) order.push_back(cfg.seed_of(i));
+  const std::vector<uint32_t> order = cfg.distinct_seeds(nets.size());
   std::vector<NetResult> out(nets.size());
   for (std::size_t first = 0; first < order.size(); first += per_call) {
     const auto from = order.begin() + long(first), to = order.begin() + long(std::min(order.size(), first + per_call));
@@ -272,12 +270,10 @@ JobResult train(const TrainJob& job) {
     cfg.seed = cfg.seeds[0];
     cfg.seeds.clear();
   }
-  std::size_t seeds = 1;
-  for (std::size_t i = 1; i < cfg.seeds.size(); ++i)
-    seeds += std::find(cfg.seeds.begin(), cfg.seeds.begin() + long(i), cfg.seeds[i]) == cfg.seeds.begin() + long(i);
   const std::size_t per_call = std::max<std::size_t>(1, backend->seeds_per_call(job.data->train_count()));
-  out.nets = seeds <= per_call ? backend->train(nets, *job.data, cfg, progress)
-                               : train_by_seed(*backend, nets, *job.data, cfg, progress, per_call);
+  out.nets = cfg.distinct_seeds(nets.size()).size() <= per_call
+                 ? backend->train(nets, *job.data, cfg, progress)
+                 : train_by_seed(*backend, nets, *job.data, cfg, progress, per_call);
   out.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (out.nets.size() != nets.size()) throw std::logic_error("backend " + out.backend + " returned wrong result count");
   const long long steps_per_epoch = (long long)(job.data->train_count() / std::size_t(cfg.batch));

@@ -33,6 +33,7 @@
 //    `interrupted` = {finished epochs + 1, steps applied in that epoch}; the job (nn/train.h)
 //    writes a stop at an epoch's start as the end of the epoch before.
 #pragma once
+#include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <functional>
@@ -90,6 +91,13 @@ struct TrainConfig {
   // seed only, never on the job it shares: a sweep's seeds can train in one job.
   std::vector<uint32_t> seeds;
   uint32_t seed_of(std::size_t net) const { return seeds.empty() ? seed : seeds[net]; }
+  // The different seeds of nets 0 .. nets-1, in the order of their first net.
+  std::vector<uint32_t> distinct_seeds(std::size_t nets) const {
+    std::vector<uint32_t> out;
+    for (std::size_t i = 0; i < nets; ++i)
+      if (std::find(out.begin(), out.end(), seed_of(i)) == out.end()) out.push_back(seed_of(i));
+    return out;
+  }
   Loss loss;
   DivergenceRule divergence;
   // The job's stop flag (nullptr: never stops early). Backends read it at every step boundary.

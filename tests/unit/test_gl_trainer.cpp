@@ -9,7 +9,6 @@
 #include <cmath>
 #include <random>
 
-#include "gl/buffer_texture.h"
 #include "gl/context.h"
 #include "nn/cpu_trainer.h"
 #include "nn/gl_trainer.h"
@@ -512,9 +511,9 @@ TEST_P(GlKernel, NetsOfDifferentSeedsShareAGroupAndTrainAsAlone) {
     EXPECT_EQ(r[std::size_t(n)].val_mse, one.val_mse) << "net " << n;
   }
   EXPECT_NE(r[0].final_params, r[1].final_params);
-  // How many seeds one call takes: their permutations fit 256 MB and a texture buffer.
-  const std::size_t texels = sn::gl::BufferTexture::max_texels();
-  EXPECT_EQ(gl.seeds_per_call(51319), std::min<std::size_t>(std::size_t(64) << 20, texels) / 51319);
+  // How many seeds one call takes: Table 4.1's ten on its 51,319 rows; one where a single
+  // permutation (2^30 rows, 4 GB) is already beyond 256 MB.
+  EXPECT_GE(gl.seeds_per_call(51319), 10u);
   EXPECT_EQ(gl.seeds_per_call(std::size_t(1) << 30), 1u);
 }
 
