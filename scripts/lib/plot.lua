@@ -24,14 +24,13 @@ local function run_gnuplot(script, png)
   results.write_file(gp, script)
   if later then return nil end
   local dir, name = gp:match("^(.*)/([^/]*)$")
-  local log = os.tmpname()
-  local status = os.execute(string.format("cd %q && gnuplot %q > %s 2>&1", dir or ".", name or gp, log))
-  local out = results.read_file(log) or ""
-  os.remove(log)
-  -- LuaJIT returns the raw status (0 = success); Lua 5.2 semantics return true.
-  if not (status == 0 or status == true) then
-    error("gnuplot failed on " .. gp .. ":\n" .. out, 0)
-  end
+  -- The output through a pipe, the exit status as its last line (LuaJIT's close does not give it).
+  local pipe = assert(io.popen(string.format("cd %q && gnuplot %q 2>&1; printf '\\n%%d\\n' $?", dir or ".", name or gp)))
+  local out = pipe:read("*a")
+  pipe:close()
+  local status
+  out = out:gsub("\n(%d+)\n$", function(code) status = tonumber(code); return "" end)
+  if status ~= 0 then error("gnuplot failed on " .. gp .. ":\n" .. out, 0) end
   return out
 end
 

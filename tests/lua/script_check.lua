@@ -27,13 +27,11 @@ function C.run(script, args, env)
   parts[#parts + 1] = sh_quote(C.shadenet)
   parts[#parts + 1] = sh_quote(script)
   for _, a in ipairs(args or {}) do parts[#parts + 1] = sh_quote(a) end
-  local log = os.tmpname()
-  local cmd = table.concat(parts, " ") .. " > " .. log .. " 2>&1; echo $? >> " .. log
-  os.execute(cmd)
-  local out = results.read_file(log) or ""
-  os.remove(log)
-  local code = tonumber(out:match("(%d+)%s*$"))
-  out = out:gsub("%d+%s*$", "")
+  local pipe = assert(io.popen(table.concat(parts, " ") .. " 2>&1; printf '\\n%d\\n' $?"))
+  local out = pipe:read("*a")
+  pipe:close()
+  local code
+  out = out:gsub("\n(%d+)\n$", function(c) code = tonumber(c); return "" end)
   return code, out
 end
 
