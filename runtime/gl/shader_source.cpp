@@ -184,6 +184,37 @@ std::string rewrite_log(const std::string& log, const ShaderSource& src) {
   return out;
 }
 
+bool glsl_reserved_word(const std::string& name) {
+  // The GLSL 4.50 specification, section 3.6: keywords, then the words reserved for the future.
+  static const std::set<std::string> words = {
+      "const", "uniform", "buffer", "shared", "attribute", "varying", "coherent", "volatile", "restrict",
+      "readonly", "writeonly", "atomic_uint", "layout", "centroid", "flat", "smooth", "noperspective", "patch",
+      "sample", "invariant", "precise", "break", "continue", "do", "for", "while", "switch", "case", "default",
+      "if", "else", "subroutine", "in", "out", "inout", "int", "void", "bool", "true", "false", "float",
+      "double", "discard", "return", "uint", "lowp", "mediump", "highp", "precision", "struct",
+      "common", "partition", "active", "asm", "class", "union", "enum", "typedef", "template", "this",
+      "resource", "goto", "inline", "noinline", "public", "static", "extern", "external", "interface", "long",
+      "short", "half", "fixed", "unsigned", "superp", "input", "output", "hvec2", "hvec3", "hvec4", "fvec2",
+      "fvec3", "fvec4", "sampler3DRect", "filter", "sizeof", "cast", "namespace", "using"};
+  // The vector, matrix, sampler and image types, by their forms.
+  static const std::regex types(R"(([biud]?vec[234])|(d?mat[234](x[234])?)|([iu]?(sampler|image|texture)[0-9A-Z]\w*))");
+  return words.count(name) || std::regex_match(name, types);
+}
+
+std::string without_glsl_comments(const std::string& text) {
+  std::string out = text;
+  for (std::size_t i = 0; i + 1 < out.size(); ++i) {
+    if (out[i] != '/' || (out[i + 1] != '/' && out[i + 1] != '*')) continue;
+    const bool line = out[i + 1] == '/';
+    std::size_t end = line ? out.find('\n', i) : out.find("*/", i + 2);
+    end = end == std::string::npos ? out.size() : line ? end : end + 2;
+    for (std::size_t k = i; k < end; ++k)
+      if (out[k] != '\n') out[k] = ' ';
+    i = end - 1;
+  }
+  return out;
+}
+
 std::string float_literal(double v) {
   char buf[40];
   std::snprintf(buf, sizeof buf, "%.9g", float(v));

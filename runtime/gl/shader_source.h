@@ -38,6 +38,13 @@ void set_shader_file_observer(std::function<void(const std::string& absolute_pat
 ShaderSource preprocess_text(const std::string& name, const std::string& text, const Defines& defines,
                              const Includes& includes = {});
 
+// True for GLSL 4.50's keywords, type names and reserved words (in, vec3, sampler2D, class):
+// a name a script gives to generated GLSL (a struct member) must not be one.
+bool glsl_reserved_word(const std::string& name);
+// `text` with its // and /* */ comments blanked (their newlines kept): what a check of the
+// source's declarations reads.
+std::string without_glsl_comments(const std::string& text);
+
 // A GLSL float literal that reads back as the same float as `v` ("0.5", "1.0", "1e-07").
 std::string float_literal(double v);
 

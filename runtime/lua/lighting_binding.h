@@ -26,6 +26,10 @@ void push_vec3(lua_State* L, const glm::dvec3& v);
 // Pushes a Lighting of model `m` with the parameters in the table at `idx` (nil = defaults).
 int make_lighting(lua_State* L, const shading::ModelPtr& m, int idx);
 
+// True for the names of sn.lighting's own functions (define, check, stress, ...): a model of
+// that name could not be reached as sn.lighting.NAME{...}.
+bool lighting_function_name(const std::string& name);
+
 // sn.lighting.define{...} and sn.lighting.check(model) (wrap_lighting_define.cpp).
 int w_define(lua_State* L);
 int w_check(lua_State* L);

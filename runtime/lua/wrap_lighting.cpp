@@ -6,6 +6,7 @@
 #include <map>
 
 #include "gl/buffer.h"
+#include "io/text.h"
 #include "lua/binding.h"
 #include "lua/lighting_binding.h"
 #include "lua/module.h"
@@ -67,9 +68,30 @@ Light check_light(lua_State* L, int idx, const char* what, const Light& def) {
 
 std::vector<Light> check_lights(lua_State* L, int idx, const char* fn) {
   if (lua_isnoneornil(L, idx)) return shading::stress_lights();
-  if (!lua_istable(L, idx)) throw Error(std::string(fn) + ": a list of lights expected as argument " + std::to_string(idx));
+  const std::string list = std::string(fn) + ": a list of lights ({ {dir = ..., color = ...}, ... }) expected as argument " +
+                           std::to_string(idx);
+  if (!lua_istable(L, idx)) throw Error(list + ", got " + type_name_at(L, idx));
+  // A named key (a single light, or a misspelt option) would otherwise be skipped, and an empty
+  // list compares nothing: both passed as a perfect match.
+  idx = absindex(L, idx);
+  const int n = int(lua_objlen(L, idx));
+  lua_pushnil(L);
+  while (lua_next(L, idx)) {
+    const bool listed = lua_type(L, -2) == LUA_TNUMBER && lua_tonumber(L, -2) == std::floor(lua_tonumber(L, -2)) &&
+                        lua_tonumber(L, -2) >= 1 && lua_tonumber(L, -2) <= n;
+    if (!listed) {
+      const int t = lua_type(L, -2);
+      const std::string key = t == LUA_TSTRING   ? "'" + std::string(lua_tostring(L, -2)) + "'"
+                              : t == LUA_TNUMBER ? "[" + io::number_text(lua_tonumber(L, -2)) + "]"
+                                                 : "[" + std::string(luaL_typename(L, -2)) + "]";
+      lua_pop(L, 2);
+      throw Error(list + ", got a table with the key " + key + " (a single light goes in braces: { {dir = ...} })");
+    }
+    lua_pop(L, 1);
+  }
+  if (n == 0) throw Error(list + ", got an empty list: there would be nothing to compare");
   std::vector<Light> lights;
-  for (int i = 1; i <= int(lua_objlen(L, idx)); ++i) {
+  for (int i = 1; i <= n; ++i) {
     lua_rawgeti(L, idx, i);
     lights.push_back(check_light(L, -1, (std::string(fn) + " light").c_str()));
     lua_pop(L, 1);
@@ -365,7 +387,22 @@ int w_convert(lua_State* L) {
   return 0;
 }
 
+const luaL_Reg kLightingFns[] = {
+    SN_FN("define", w_define),
+    SN_FN("check", w_check),
+    SN_FN("new", w_new),
+    SN_FN("models", w_models),
+    SN_FN("stress", w_stress),
+    SN_FN("stress_cases", w_stress_cases),
+    {nullptr, nullptr}};
+
 }  // namespace
+
+bool lighting_function_name(const std::string& name) {
+  for (const luaL_Reg* f = kLightingFns; f->name; ++f)
+    if (name == f->name) return true;
+  return false;
+}
 
 void open_lighting(lua_State* L) {
   static const luaL_Reg methods[] = {SN_FN("params", w_params),     SN_FN("name", w_name),
@@ -375,16 +412,8 @@ void open_lighting(lua_State* L) {
   static const luaL_Reg meta[] = {{"__eq", w_eq}, {nullptr, nullptr}};
   define_box_type<LightingParams>(L, kLightingType, methods, wrap<w_tostring>, meta);
 
-  static const luaL_Reg fns[] = {
-      SN_FN("define", w_define),
-      SN_FN("check", w_check),
-      SN_FN("new", w_new),
-      SN_FN("models", w_models),
-      SN_FN("stress", w_stress),
-      SN_FN("stress_cases", w_stress_cases),
-      {nullptr, nullptr}};
   lua_newtable(L);
-  luaL_register(L, nullptr, fns);
+  luaL_register(L, nullptr, kLightingFns);
   lua_newtable(L);  // metatable: sn.lighting.NAME is a registered model's constructor, else an error
   lua_pushcfunction(L, wrap<w_index>);
   lua_setfield(L, -2, "__index");

@@ -170,6 +170,8 @@ int w_define(lua_State* L) {
   if (!o.has("name")) throw Error("sn.lighting.define: 'name' is required");
   m.name = o.string("name");
   const std::string who = "sn.lighting.define '" + m.name + "'";
+  if (lighting_function_name(m.name))
+    throw Error(who + ": the name is taken by the function sn.lighting." + m.name + "; choose another name");
   int pi = o.push("params");
   m.params = read_param_schema(L, pi, who);
   lua_pop(L, 1);

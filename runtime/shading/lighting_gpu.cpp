@@ -69,6 +69,10 @@ std::string upper(const std::string& s) {
 // The name the definition's source is #included by: its file, or a label for a string.
 std::string source_include(const LightingModel& m) { return m.glsl_path.empty() ? m.glsl_name : m.glsl_path; }
 
+// A parameter's uniform: a prefix of its own, so that no parameter name (`view`, `position`,
+// `count`) meets the uniforms of the shaders that include the model (u_view, u_count).
+std::string param_uniform(const std::string& name) { return "u_param_" + name; }
+
 // Binding of each surface attribute's buffer in eval_lighting.comp.
 int attribute_binding(const std::string& a) {
   const auto& all = surface_attributes();
@@ -84,10 +88,10 @@ gl::Includes lighting_includes(const LightingModel& m, const std::vector<std::st
   for (const auto& ps : m.params) g += std::string("  ") + glsl_type(ps.components) + " " + ps.name + ";\n";
   if (m.params.empty()) g += "  float unused_;  // GLSL has no empty structs\n";
   g += "};\nuniform vec3 u_light_dir;  // unit, towards the light\nuniform vec3 u_light_color;\n";
-  for (const auto& ps : m.params) g += std::string("uniform ") + glsl_type(ps.components) + " u_" + ps.name + ";\n";
+  for (const auto& ps : m.params) g += std::string("uniform ") + glsl_type(ps.components) + " " + param_uniform(ps.name) + ";\n";
   g += "#include \"" + source_include(m) + "\"\n";
   g += "Params lighting_params() {\n  Params p;\n";
-  for (const auto& ps : m.params) g += "  p." + ps.name + " = u_" + ps.name + ";\n";
+  for (const auto& ps : m.params) g += "  p." + ps.name + " = " + param_uniform(ps.name) + ";\n";
   if (m.params.empty()) g += "  p.unused_ = 0.0;\n";
   g += "  return p;\n}\n";
   if (!vary.empty()) {
@@ -140,7 +144,7 @@ void set_lighting_uniforms(gl::Program& prog, const LightingParams& p, const sce
     prog.set_uniform("u_light_color", {light.color.r, light.color.g, light.color.b});
   const LightingModel& s = p.spec();
   for (std::size_t i = 0; i < s.params.size(); ++i) {
-    std::string name = "u_" + s.params[i].name;
+    std::string name = param_uniform(s.params[i].name);
     // A parameter the compiler found unused has no location; every name comes from the
     // definition, so this hides no typo.
     if (!prog.uniform(name)) continue;
@@ -150,8 +154,7 @@ void set_lighting_uniforms(gl::Program& prog, const LightingParams& p, const sce
 
 void compile_lighting(const LightingModel& m) {
   static const std::regex entry(R"(vec3\s+shade\s*\(\s*(in\s+)?Surface\s+\w+\s*,\s*(in\s+)?Params\s+\w+\s*\))");
-  std::string text = m.glsl_text();
-  if (!std::regex_search(text, entry))
+  if (!std::regex_search(gl::without_glsl_comments(m.glsl_text()), entry))
     throw std::invalid_argument("lighting model '" + m.name + "': its glsl (" + gl::display_path(source_include(m)) +
                                 ") must define vec3 shade(Surface s, Params p) (docs/lua-api/ground-truth.md)");
   gl::ProgramDesc desc;

@@ -26,7 +26,7 @@ void use_lighting(gl::ProgramDesc& desc, const LightingParams& p, const std::vec
 gl::Includes lighting_includes(const LightingModel& m, const std::vector<std::string>& vary = {});
 // Throws unless `vary` names at most 4 distinct scalar parameters of the model.
 void check_vary(const LightingModel& m, const std::vector<std::string>& vary);
-// Sets u_light_dir, u_light_color and "u_" + every parameter the program uses.
+// Sets u_light_dir, u_light_color and u_param_NAME of every parameter the program uses.
 void set_lighting_uniforms(gl::Program& prog, const LightingParams& p, const scene::Light& light);
 // Compiles the model's GLSL once (a small compute program), so a definition's error shows at
 // its own file:line before any dataset is built.

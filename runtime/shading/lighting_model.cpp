@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "gl/shader_source.h"
 #include "io/limits.h"
 #include "io/read_file.h"
 #include "io/text.h"
@@ -47,6 +48,9 @@ void check_definition(const LightingModel& m) {
     std::string where = who + " parameter '" + p.name + "'";
     if (!identifier(p.name) || p.name == "light_dir" || p.name == "light_color")
       throw std::invalid_argument(where + ": the name must be an identifier other than light_dir and light_color");
+    if (gl::glsl_reserved_word(p.name))
+      throw std::invalid_argument(where + ": the name is a GLSL keyword or type (the parameter is a field of the GLSL "
+                                  "struct Params); choose another name");
     for (std::size_t j = 0; j < i; ++j)
       if (m.params[j].name == p.name) throw std::invalid_argument(where + " is listed twice");
     if (p.components != 1 && p.components != 3 && p.components != 4)

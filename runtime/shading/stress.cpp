@@ -88,12 +88,16 @@ HostSamples stress_samples(const std::vector<StressSample>& grid) {
   return h;
 }
 
-Surface stress_surface(const StressSample& x, const scene::Light& light) {
+Surface stress_surface(const StressSample& x, const scene::Light& light, const std::vector<std::string>& attributes) {
   Surface s = make_surface(light, dvec3(x.n), dvec3(x.v));
-  s.base_color = dvec3(x.base);
-  s.uv = glm::dvec2(x.uv.x, x.uv.y);
-  s.position = dvec3(x.position), s.world_position = dvec3(x.world_position);
-  s.tangent = safe_normalize(dvec3(x.tangent)), s.bitangent = safe_normalize(dvec3(x.bitangent));
+  for (const std::string& a : attributes) {
+    if (a == "base_color") s.base_color = dvec3(x.base);
+    else if (a == "uv") s.uv = glm::dvec2(x.uv.x, x.uv.y);
+    else if (a == "position") s.position = dvec3(x.position);
+    else if (a == "world_position") s.world_position = dvec3(x.world_position);
+    else if (a == "tangent") s.tangent = safe_normalize(dvec3(x.tangent));
+    else if (a == "bitangent") s.bitangent = safe_normalize(dvec3(x.bitangent));
+  }
   return s;
 }
 
@@ -124,7 +128,7 @@ StressResult stress_test(const LightingParams& p, const scene::Light& light) {
   auto gpu_raw = evaluate(p, light, in, shading::ColorSpace::rgb, true);
   for (std::size_t i = 0; i < grid.size(); ++i) {
     count(r.gpu, dvec3(gpu_raw[i]));
-    count(r.twin, shade_raw(p, stress_surface(grid[i], light)));
+    count(r.twin, shade_raw(p, stress_surface(grid[i], light, p.spec().attributes)));
     for (int ch = 0; ch < 3; ++ch)
       if (std::isfinite(gpu_raw[i][ch])) r.max_raw = std::max(r.max_raw, double(gpu_raw[i][ch]));
   }
@@ -194,7 +198,7 @@ TwinCheck check_twin(const LightingParams& p, const std::vector<scene::Light>& l
     grid.insert(grid.end(), everyday.begin(), everyday.end());
     auto gpu = evaluate(p, light, model_samples(p, stress_samples(grid)), shading::ColorSpace::rgb, true);
     for (std::size_t i = 0; i < grid.size(); ++i) {
-      Surface s = stress_surface(grid[i], light);
+      Surface s = stress_surface(grid[i], light, p.spec().attributes);
       if (near_discontinuity(p, s, kTwinBranchEps)) {
         ++c.skipped;
         continue;

@@ -23,9 +23,11 @@ struct StressSample {
 };
 // The grid, built around the light direction (deterministic; about 30k samples).
 std::vector<StressSample> adversarial_grid(const scene::Light& light);
-// The grid as per-attribute sample lists (for evaluate), and one sample as the twin sees it.
+// The grid as per-attribute sample lists (for evaluate), and one sample as the twin of a model
+// reading `attributes` sees it: the others keep Surface's defaults, which the GPU gives an
+// attribute a model does not read.
 HostSamples stress_samples(const std::vector<StressSample>& grid);
-Surface stress_surface(const StressSample& x, const scene::Light& light);
+Surface stress_surface(const StressSample& x, const scene::Light& light, const std::vector<std::string>& attributes);
 
 struct StressCounts {
   std::size_t nan = 0, inf = 0;
