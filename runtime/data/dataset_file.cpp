@@ -131,15 +131,15 @@ void write_numpy(const Dataset& d, const DatasetPaths& p) {
   side["source_key"] = d.key;
   const std::string sidecar = side.dump(2) + "\n";
 
-  // An old sidecar would point at a mix of old and new arrays until the new one replaces it.
   std::error_code ec;
-  const auto st = fs::symlink_status(p.main, ec);
-  if (fs::is_directory(st)) throw std::runtime_error("cannot write dataset '" + p.main + "': it is a directory");
-  if (fs::exists(st) && !fs::remove(p.main, ec))
-    throw std::runtime_error("cannot write dataset '" + p.main + "': cannot remove the old sidecar: " + ec.message());
-  io::write_file_atomic(p.inputs, npy_of(d.train_x, d.val_x, rows, d.inputs), "dataset array");
-  io::write_file_atomic(p.targets, npy_of(d.train_y, d.val_y, rows, d.outputs), "dataset array");
-  io::write_file_atomic(p.main, sidecar, "dataset");
+  if (fs::is_directory(fs::symlink_status(p.main, ec)))
+    throw std::runtime_error("cannot write dataset '" + p.main + "': it is a directory");
+  // All three written before any replaces its old file, the sidecar renamed last: a failure (a
+  // full disk) leaves the old export whole.
+  io::write_files_atomic({{p.inputs, npy_of(d.train_x, d.val_x, rows, d.inputs)},
+                          {p.targets, npy_of(d.train_y, d.val_y, rows, d.outputs)},
+                          {p.main, sidecar}},
+                         "dataset");
 }
 
 // ---- loading ----

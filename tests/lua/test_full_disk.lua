@@ -60,6 +60,23 @@ local ok, err = pcall(function()
   only { "a.png", "b.exr", "r1.json", "r2.json", "table.md" }
   local oka, ea = pcall(sn.fs.write_all, { [dir .. "/x"] = 1 })
   assert(not oka and tostring(ea):find("path = content (strings), got string = number", 1, true), tostring(ea))
+
+  -- A dataset export (a sidecar and two .npy arrays) that does not fit leaves the old export
+  -- whole and loadable: the arrays and the sidecar replace the old ones only once all are written.
+  os.remove(dir .. "/a.png"); os.remove(dir .. "/b.exr")
+  local function rows(n)
+    local x, y = {}, {}
+    for i = 1, n do x[i], y[i] = { i, 0.5, -i }, { 0.25, i / n, 1 } end
+    return sn.dataset { x = x, y = y, split = 1 }
+  end
+  rows(10):export(dir .. "/ds.json")
+  local old = { read(dir .. "/ds.json"), read(dir .. "/ds.inputs.npy"), read(dir .. "/ds.targets.npy") }
+  local oke, ee = pcall(function() rows(4000):export(dir .. "/ds.json") end)
+  assert(not oke and tostring(ee):find("No space left on device", 1, true), tostring(ee))
+  assert(read(dir .. "/ds.json") == old[1] and read(dir .. "/ds.inputs.npy") == old[2] and
+         read(dir .. "/ds.targets.npy") == old[3], "the old export survives")
+  assert(sn.dataset.load(dir .. "/ds.json"):counts() == 10, "and loads")
+  only { "ds.inputs.npy", "ds.json", "ds.targets.npy", "r1.json", "r2.json", "table.md" }
 end)
 cleanup()
 assert(ok, err)
