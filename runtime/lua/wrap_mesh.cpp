@@ -169,7 +169,13 @@ int w_tostring(lua_State* L) {
                   std::to_string(m.triangle_count()) + " triangles";
   if (m.has_normals) s += m.normals_computed ? ", computed normals" : ", normals";
   if (m.has_uvs) s += ", uvs";
-  if (m.base_color) s += ", texture " + std::to_string(m.base_color->width) + "x" + std::to_string(m.base_color->height);
+  if (m.base_color) {
+    try {
+      s += ", texture " + std::to_string(m.base_color->width) + "x" + std::to_string(m.base_color->height);
+    } catch (const std::exception&) {  // printing a mesh is no place for its texture's error
+      s += ", texture (unreadable: mesh:texture() says why)";
+    }
+  }
   lua_pushstring(L, (s + ")").c_str());
   return 1;
 }

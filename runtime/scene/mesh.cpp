@@ -180,6 +180,29 @@ bool keep_image_bytes(tinygltf::Image* image, const int, std::string*, std::stri
   return true;
 }
 
+// tinygltf reads a .gltf's external buffers and images through these: the checks the file itself
+// gets (regular files only, the size limit, io/read_file.h), and nothing that opens a path to see
+// whether it exists (opening a FIFO waits for a writer), nor expands it (tinygltf's own expands ~).
+bool file_exists(const std::string& path, void*) {
+  std::error_code ec;
+  return fs::exists(path, ec);
+}
+std::string path_as_is(const std::string& path, void*) { return path; }
+bool read_whole_file(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
+  try {
+    const std::string bytes = io::read_file(path, "file");
+    out->assign(bytes.begin(), bytes.end());
+    return true;
+  } catch (const std::exception& e) {
+    if (err) *err += std::string(e.what()) + "\n";
+    return false;
+  }
+}
+bool no_writes(std::string* err, const std::string& path, const std::vector<unsigned char>&, void*) {
+  if (err) *err += "loading '" + path + "' does not write files\n";
+  return false;
+}
+
 // Reads accessors with every check a malformed file could need: indices of views and
 // buffers, byte ranges inside their buffers, component types the attribute may use.
 class AccessorReader {
@@ -379,7 +402,8 @@ std::vector<uint32_t> triangles_of(int mode, const std::vector<uint32_t>& in) {
 
 class GltfLoader {
  public:
-  GltfLoader(const tinygltf::Model& m, const std::string& path) : m_(m), path_(path), reader_(m, path) {}
+  GltfLoader(const tinygltf::Model& m, const std::string& path, const std::string& warnings)
+      : m_(m), path_(path), warnings_(warnings), reader_(m, path) {}
 
   Mesh load() {
     mesh_.name = path_;
@@ -584,12 +608,20 @@ class GltfLoader {
     const tinygltf::Image& img = m_.images[size_t(index)];
     std::string what = "mesh file '" + path_ + "': base-colour texture (image " + std::to_string(index) +
                        (img.uri.empty() || img.uri.rfind("data:", 0) == 0 ? std::string() : ", '" + img.uri + "'") + ")";
-    if (img.image.empty()) throw std::runtime_error(what + " has no data");
+    if (img.image.empty()) {
+      // tinygltf says why in a warning that names the image's file (it goes on without it).
+      std::string why;
+      std::istringstream lines(warnings_);
+      for (std::string line; std::getline(lines, line);)
+        if (!img.uri.empty() && line.find(img.uri) != std::string::npos) why += (why.empty() ? "" : "; ") + line;
+      return Texture::unreadable(what + " could not be read" + (why.empty() ? " (it has no data)" : ": " + short_reason(why)));
+    }
     return Texture(img.image, what);
   }
 
   const tinygltf::Model& m_;
   const std::string& path_;
+  const std::string& warnings_;  // tinygltf's, one per line
   AccessorReader reader_;
   Mesh mesh_;
   std::set<int> on_path_;
@@ -645,6 +677,7 @@ Mesh load_mesh(const std::string& path) {
   if (bytes.empty()) throw FileError(path, "is empty");
   tinygltf::TinyGLTF gltf;
   gltf.SetImageLoader(keep_image_bytes, nullptr);
+  gltf.SetFsCallbacks({file_exists, path_as_is, read_whole_file, no_writes, nullptr});
   tinygltf::Model model;
   std::string err, warn;
   bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
@@ -675,7 +708,7 @@ Mesh load_mesh(const std::string& path) {
   } else {
     check_integers(text.data(), text.size(), path);
   }
-  Mesh mesh = GltfLoader(model, path).load();
+  Mesh mesh = GltfLoader(model, path, warn).load();
   validate(mesh);
   return mesh;
 }

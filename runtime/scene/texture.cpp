@@ -1,6 +1,7 @@
 #include "scene/texture.h"
 
 #include <mutex>
+#include <stdexcept>
 
 namespace sn::scene {
 
@@ -8,6 +9,7 @@ struct Texture::State {
   std::once_flag decoded;  // not set when decoding throws: the next read tries again, and throws again
   std::vector<unsigned char> encoded;
   std::string what;
+  std::string error;  // set: unreadable, every read throws it
   io::Image image;
 };
 
@@ -21,8 +23,16 @@ Texture::Texture(std::vector<unsigned char> encoded, std::string what) : state_(
   state_->what = std::move(what);
 }
 
+Texture Texture::unreadable(std::string error) {
+  Texture t;
+  t.state_ = std::make_shared<State>();
+  t.state_->error = std::move(error);
+  return t;
+}
+
 const io::Image& Texture::operator*() const {
   State& s = *state_;
+  if (!s.error.empty()) throw std::runtime_error(s.error);
   std::call_once(s.decoded, [&s] { s.image = io::decode_image(s.encoded, s.what); });
   return s.image;
 }

@@ -19,6 +19,9 @@ class Texture {
   // Decoded on first read; a decoding error is thrown then, naming `what` (e.g. "mesh file
   // 'cloth.glb': base-colour texture (image 0)").
   Texture(std::vector<unsigned char> encoded, std::string what);
+  // A texture the file names but that could not be read (a missing or unreadable image file):
+  // reading it throws `error`, so a mesh whose texture is never sampled still loads.
+  static Texture unreadable(std::string error);
 
   bool has_value() const { return bool(state_); }
   explicit operator bool() const { return has_value(); }

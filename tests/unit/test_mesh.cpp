@@ -2,6 +2,7 @@
 // files, the procedural shapes against their formulas, .glb round trips and the GPU upload cache.
 #include <gtest/gtest.h>
 #include <tiny_gltf.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -398,6 +399,49 @@ TEST(Mesh, GarbageFilesAreClearErrors) {
   std::ofstream(d / "empty.gltf").close();
   e = error_of([&] { load_mesh((d / "empty.gltf").string()); });
   EXPECT_NE(e.find("empty.gltf': is empty"), std::string::npos) << e;
+}
+
+// A .gltf's external buffers and images are read with the checks the file itself gets: a FIFO
+// is refused at once (opening one waits for a writer: the load hung), a directory names itself
+// (it was std::bad_alloc), a file above the size limit is refused before it is read (3 GiB were
+// read whole). An image that cannot be read leaves the mesh loadable; reading the texture says why.
+TEST(Mesh, ExternalFilesAreReadWithTheFileChecks) {
+  fs::path d = temp_dir() / "external";
+  fs::create_directories(d);
+  auto tri = float_bytes({0, 0, 0, 1, 0, 0, 0, 1, 0});
+  write_bytes(d / "tri.bin", tri.data(), tri.size());
+  auto gltf = [&](const std::string& name, const std::string& buffer, const std::string& image) {
+    std::ofstream(d / name) << R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+      "nodes": [{"mesh": 0}], "meshes": [{"primitives": [{"attributes": {"POSITION": 1, "TEXCOORD_0": 0}, "material": 0}]}],
+      "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}],
+      "textures": [{"source": 0}], "images": [{"uri": ")" << image << R"("}],
+      "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC2"},
+                    {"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"}],
+      "bufferViews": [{"buffer": 0, "byteLength": 36}], "buffers": [{"uri": ")" << buffer << R"(", "byteLength": 36}]})";
+    return (d / name).string();
+  };
+  ASSERT_EQ(mkfifo((d / "fifo.bin").c_str(), 0600), 0);
+  std::string e = error_of([&] { load_mesh(gltf("fifo.gltf", "fifo.bin", "none.png")); });
+  EXPECT_NE(e.find("cannot read file '" + (d / "fifo.bin").string() + "': not a regular file"), std::string::npos) << e;
+  e = error_of([&] { load_mesh(gltf("dir.gltf", ".", "none.png")); });
+  EXPECT_NE(e.find("it is a directory"), std::string::npos) << e;
+  {
+    std::ofstream big(d / "big.bin", std::ios::binary);
+    big.write(reinterpret_cast<const char*>(tri.data()), 36);
+  }
+  fs::resize_file(d / "big.bin", (std::uintmax_t(1) << 30) + 1);  // sparse: no disk used
+  e = error_of([&] { load_mesh(gltf("big.gltf", "big.bin", "none.png")); });
+  EXPECT_NE(e.find("1073741825 bytes, above the limit"), std::string::npos) << e;
+
+  // The buffer reads; the image is missing, a FIFO, a folder: the mesh loads, its texture throws.
+  ASSERT_EQ(mkfifo((d / "fifo.png").c_str(), 0600), 0);
+  for (const std::string image : {"none.png", "fifo.png", "."}) {
+    Mesh m = load_mesh(gltf("tex.gltf", "tri.bin", image));
+    EXPECT_EQ(m.triangle_count(), 1u);
+    ASSERT_TRUE(m.base_color.has_value());
+    e = error_of([&] { (void)m.base_color->width; });
+    EXPECT_NE(e.find("base-colour texture (image 0, '" + image + "') could not be read"), std::string::npos) << e;
+  }
 }
 
 TEST(Mesh, TruncatedFilesAreClearErrorsAtEveryLength) {
