@@ -120,6 +120,32 @@ TEST(ActivationSimd, MatchesTheDoubleTwinsOnAFineGrid) {
   use_cpu_kernel(saved);
 }
 
+// tanh and sigmoid saturate exactly in every kernel: beyond tanh's clamp the value is +-1 and the
+// derivative 0, whether the kernel's compiler fused the polynomial's multiply-adds or not (the
+// AVX kernels' tanh stopped at 1 - 2.4e-7 there, and large inputs trained saturated units).
+TEST(ActivationSimd, SaturatedTanhAndSigmoidAreExact) {
+  const std::string saved = cpu_kernel_name();
+  std::vector<float> z = {8.0139399f, 8.5f, 9.f, 20.f, 1e4f, 1e30f};
+  for (std::size_t i = 0, n = z.size(); i < n; ++i) z.push_back(-z[i]);
+  std::vector<float> f(z.size()), df(z.size());
+  for (const auto& k : cpu_kernels_available()) {
+    use_cpu_kernel(k);
+    cpu_activation(Activation::tanh, 0, z.data(), z.size(), f.data(), df.data());
+    for (std::size_t i = 0; i < z.size(); ++i) {
+      EXPECT_EQ(f[i], z[i] > 0 ? 1.0f : -1.0f) << k << " tanh at " << z[i];
+      EXPECT_EQ(df[i], 0.0f) << k << " tanh' at " << z[i];
+    }
+    std::vector<float> z2(z.size());
+    for (std::size_t i = 0; i < z.size(); ++i) z2[i] = 2 * z[i];
+    cpu_activation(Activation::sigmoid, 0, z2.data(), z2.size(), f.data(), df.data());
+    for (std::size_t i = 0; i < z.size(); ++i) {
+      EXPECT_EQ(f[i], z[i] > 0 ? 1.0f : 0.0f) << k << " sigmoid at " << z2[i];
+      EXPECT_EQ(df[i], 0.0f) << k << " sigmoid' at " << z2[i];
+    }
+  }
+  use_cpu_kernel(saved);
+}
+
 // The oracle's backward pass against central differences of its loss, for a network of every
 // activation (hidden, and the same activation at the output).
 TEST(ActivationOracle, GradientMatchesCentralDifferences) {
