@@ -1,6 +1,7 @@
 #include "nn/render_errors.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -16,10 +17,13 @@ namespace sn::nn {
 namespace {
 
 // The error of one render, clamped here, against its truth (`reference`: the truth's part of
-// the SSIM, prepared once per view).
+// the SSIM, prepared once per view). A NaN pixel (clamping keeps NaN) makes both NaN: the pair
+// cannot be scored, its `nonfinite` count says why, and the other pairs still are.
 RenderError score(io::Image&& mine, const io::Image& truth, const io::SsimReference& reference, std::size_t nonfinite) {
   const io::Image shown = io::clamp_colors(std::move(mine));
-  return {io::mse(truth, shown, 3, &truth), io::ssim(reference, shown), nonfinite};
+  const double mse = io::mse(truth, shown, 3, &truth);
+  if (std::isnan(mse)) return {mse, mse, nonfinite};
+  return {mse, io::ssim(reference, shown), nonfinite};
 }
 
 }  // namespace

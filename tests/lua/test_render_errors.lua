@@ -57,6 +57,25 @@ assert(errors[5][1].nonfinite > 100 and errors[1][1].nonfinite == 0, "infinite p
 expect.fails(function()
   sn.render_errors { nets = { nets[5] }, views = views, nonfinite = "error" }
 end, "pixels are NaN or infinite")
+-- A network whose render is NaN (inf - inf) cannot be scored: its pairs are NaN with the pixels
+-- counted, and the networks beside it in the batch are scored as alone.
+local nan_net = sn.mlp { inputs = attrs, hidden = { 2 }, outputs = 3, activation = "relu" }
+nan_net.layers[1].weight = { { 3e38, 3e38, 3e38, 3e38, 3e38, 3e38 }, { 3e38, 3e38, 3e38, 3e38, 3e38, 3e38 } }
+nan_net.layers[2].weight = { { 1, -1 }, { 1, -1 }, { 1, -1 } }
+local with_nan = sn.render_errors { nets = { nets[1], nan_net }, views = views, nonfinite = "ignore" }
+local nan_views = 0
+for k = 1, #views do
+  assert(with_nan[1][k].mse == errors[1][k].mse and with_nan[1][k].ssim == errors[1][k].ssim, "view " .. k)
+  local e = with_nan[2][k]
+  if e.mse ~= e.mse then
+    nan_views = nan_views + 1
+    assert(e.ssim ~= e.ssim and e.nonfinite > 0, ("NaN network, view %d: %g %g %d"):format(k, e.mse, e.ssim, e.nonfinite))
+  end
+end
+assert(nan_views >= 3, "the blob's views are NaN: " .. nan_views)
+expect.fails(function()
+  sn.render_errors { nets = { nets[1], nan_net }, views = views, nonfinite = "error" }
+end, "pixels are NaN or infinite")
 -- One network as itself, an empty list of views
 assert(sn.render_errors { nets = nets[1], views = { views[2] } }[1][1].mse == errors[1][2].mse)
 assert(#sn.render_errors { nets = nets, views = {} }[1] == 0)
