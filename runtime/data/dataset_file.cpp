@@ -132,14 +132,20 @@ void write_numpy(const Dataset& d, const DatasetPaths& p) {
   const std::string sidecar = side.dump(2) + "\n";
 
   std::error_code ec;
-  if (fs::is_directory(fs::symlink_status(p.main, ec)))
-    throw std::runtime_error("cannot write dataset '" + p.main + "': it is a directory");
-  // All three written before any replaces its old file, the sidecar renamed last: a failure (a
-  // full disk) leaves the old export whole.
+  const auto st = fs::symlink_status(p.main, ec);
+  if (fs::is_directory(st)) throw std::runtime_error("cannot write dataset '" + p.main + "': it is a directory");
+  // All three are written before any replaces its old file: a failure there (a full disk) leaves
+  // the old export whole. Then the old sidecar goes, the arrays are renamed and the sidecar last,
+  // so a rename that fails (a folder in an array's place) leaves no sidecar pointing at a mix of
+  // old and new arrays.
   io::write_files_atomic({{p.inputs, npy_of(d.train_x, d.val_x, rows, d.inputs)},
                           {p.targets, npy_of(d.train_y, d.val_y, rows, d.outputs)},
                           {p.main, sidecar}},
-                         "dataset");
+                         "dataset", [&] {
+                           if (fs::exists(st) && !fs::remove(p.main, ec))
+                             throw std::runtime_error("cannot write dataset '" + p.main +
+                                                      "': cannot remove the old sidecar: " + ec.message());
+                         });
 }
 
 // ---- loading ----

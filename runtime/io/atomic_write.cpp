@@ -70,7 +70,8 @@ void write_file_atomic(const std::string& path, const std::string& bytes, const 
   rename_over(write_temporary(path, bytes, what, true), path, what);
 }
 
-void write_files_atomic(const std::vector<std::pair<std::string, std::string>>& files, const std::string& what) {
+void write_files_atomic(const std::vector<std::pair<std::string, std::string>>& files, const std::string& what,
+                        const std::function<void()>& before_renames) {
   std::set<std::string> paths;
   for (const auto& f : files)
     if (!paths.insert(f.first).second) throw std::invalid_argument(head(f.first, what) + "the path is listed twice");
@@ -93,6 +94,7 @@ void write_files_atomic(const std::vector<std::pair<std::string, std::string>>& 
       }
       ::close(fd);
     }
+    if (before_renames) before_renames();
   } catch (...) {
     remove_temps();
     throw;

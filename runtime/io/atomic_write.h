@@ -3,6 +3,7 @@
 // over the target. On any failure the old file is untouched, the temporary is removed and the
 // error names the path and the cause ("No space left on device", ...).
 #pragma once
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -18,6 +19,9 @@ void write_file_atomic(const std::string& path, const std::string& bytes, const 
 // records of 3 KB: 0.07-0.08 s, against 0.12-0.15 s with an fsync each; docs/performance.md).
 // A failure before the renames leaves every old file as it was; one during them (rare: the
 // folder removed meanwhile) leaves the files before it new and the rest old, each whole.
-void write_files_atomic(const std::vector<std::pair<std::string, std::string>>& files, const std::string& what = "file");
+// `before_renames`, when given, runs once every temporary file is written and flushed (a dataset
+// export removes its old sidecar there, so a rename that fails cannot leave it beside new arrays).
+void write_files_atomic(const std::vector<std::pair<std::string, std::string>>& files, const std::string& what = "file",
+                        const std::function<void()>& before_renames = {});
 
 }  // namespace sn::io

@@ -287,18 +287,18 @@ TEST(DatasetFile, UnwritablePathLeavesNothingBehind) {
   write(blocker, "a file, so nothing can be written below it");
   const Dataset d = awkward();
   EXPECT_EQ(message_of([&] { export_dataset(d, blocker + "/sub/x.json"); }),
-            "cannot write dataset array '" + blocker + "/sub/x.inputs.npy': cannot create folder '" + blocker +
+            "cannot write dataset '" + blocker + "/sub/x.inputs.npy': cannot create folder '" + blocker +
                 "/sub': Not a directory");
   EXPECT_EQ(message_of([&] { export_dataset(d, blocker + "/x.csv"); }),
             "cannot write dataset '" + blocker + "/x.csv': cannot create folder '" + blocker + "': Not a directory");
-  // Re-exporting where an array cannot be written removes the old sidecar first: no sidecar
-  // ever points at a mix of old and new arrays.
+  // Re-exporting where an array cannot be renamed into place (a full disk fails before any rename:
+  // tests/lua/test_full_disk.lua) leaves no sidecar: none ever points at a mix of old and new arrays.
   const std::string at = scratch("again/a.json");
   export_dataset(d, at);
   ASSERT_TRUE(fs::exists(at));
   fs::remove(scratch("again/a.targets.npy"));
   fs::create_directories(scratch("again/a.targets.npy/x"));  // a non-empty folder where the array goes
-  EXPECT_NE(message_of([&] { export_dataset(d, at); }).find("cannot write dataset array '" + scratch("again/a.targets.npy") + "'"),
+  EXPECT_NE(message_of([&] { export_dataset(d, at); }).find("cannot write dataset '" + scratch("again/a.targets.npy") + "'"),
             std::string::npos);
   EXPECT_FALSE(fs::exists(at));
 }
