@@ -37,8 +37,8 @@ std::vector<StressSample> adversarial_grid(const scene::Light& light) {
   const double cosines[] = {-1.0, -0.5, -1e-7, 0.0, 1e-7, 1e-3, 0.5, 0.9999999, 1.0};
   const double azimuths_n[] = {0.0, 2.1};
   const double azimuths_v[] = {0.0, 1.5707963267948966, 3.141592653589793, 4.0};
-  // Lengths: zero, denormal-small, tiny, unit, huge.
-  const double lengths[] = {0.0, 1e-20, 1e-7, 1.0, 1e7};
+  // Lengths: zero, denormal-small, tiny, unit, huge (its square overflows float).
+  const double lengths[] = {0.0, 1e-20, 1e-7, 1.0, 1e30};
   std::vector<std::pair<dvec3, dvec3>> dirs;
   for (double cn : cosines)
     for (double an : azimuths_n) {

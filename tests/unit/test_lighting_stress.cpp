@@ -21,7 +21,7 @@ TEST(LightingStress, GridCoversTheAdversarialCases) {
   for (const auto& s : grid) {
     glm::dvec3 n(s.n), v(s.v);
     if (glm::length(n) == 0) ++zero_n;
-    if (glm::length(n) > 1e6) ++huge;
+    if (glm::length(n) > 1e20) ++huge;  // its square overflows float
     if (glm::length(n) == 0 || glm::length(v) == 0) continue;
     double nl = glm::dot(glm::vec3(glm::normalize(n)), glm::vec3(light.dir));  // as the GPU sees it
     if (nl == 0) ++exact_grazing;

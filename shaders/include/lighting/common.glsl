@@ -6,9 +6,15 @@ const float LIGHTING_MIN_ALPHA = 1e-3;         // GGX width floor: a mirror is a
 const float LIGHTING_MIN_DENOMINATOR = 1e-30;
 
 // x / |x|, or the zero vector when |x|^2 < 1e-30 (normalize(0) is NaN, and a shorter vector
-// would come out of a clamped inverse length neither zero nor unit).
+// would come out of a clamped inverse length neither zero nor unit). A vector longer than
+// 1.8e19 is first scaled by its largest component: its square overflows float, and
+// inversesqrt(inf) = 0 made it zero (the double twin has no such limit).
 vec3 safe_normalize(vec3 x) {
   float x2 = dot(x, x);
+  if (isinf(x2)) {
+    x /= max(max(abs(x.x), abs(x.y)), abs(x.z));
+    x2 = dot(x, x);
+  }
   return x2 >= LIGHTING_MIN_LENGTH2 ? x * inversesqrt(x2) : vec3(0.0);
 }
 
