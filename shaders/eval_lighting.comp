@@ -65,9 +65,11 @@ void main() {
 #ifdef LIGHTING_VARY
   lighting_vary(p, varied[i]);
 #endif
+  vec3 raw = lighting_raw(s, p);
 #if LIGHTING_RAW
-  targets[i] = vec4(lighting_raw(s, p), 1.0);
+  targets[i] = vec4(raw, 1.0);
 #else
-  targets[i] = vec4(color_from_rgb(lighting(s, p)), 1.0);
+  // w = 0 flags radiance that is not finite: clamping would store a made-up number.
+  targets[i] = vec4(color_from_rgb(clamp(raw, 0.0, 1.0)), any(isnan(raw)) || any(isinf(raw)) ? 0.0 : 1.0);
 #endif
 }

@@ -190,6 +190,12 @@ std::shared_ptr<Dataset> build_dataset(const scene::Scene& s, const DatasetReque
   gl::Buffer targets(gl::ElemType::vec4, m);
   shading::evaluate(r.target, s.light, model_in, targets, m, r.color, false, r.vary.empty() ? nullptr : &per_row);
   const auto t = scene::download_vec4(targets, m);
+  shading::check_finite_targets(r.target, t, m, [&](std::size_t j) {
+    auto vec = [](const float* v) {
+      return "(" + io::number_text(v[0]) + ", " + io::number_text(v[1]) + ", " + io::number_text(v[2]) + ")";
+    };
+    return "normal " + vec(picks[j].at(index_of("normal"))) + ", view " + vec(picks[j].at(index_of("view")));
+  });
 
   auto d = std::make_shared<Dataset>();
   d->inputs = in_width;

@@ -221,6 +221,11 @@ std::shared_ptr<Dataset> sample_dataset(const SampleRequest& r) {
     }
     shading::evaluate(r.target, r.light, {{"normal", &normals}, {"view", &views}}, targets, m, r.color);
     const std::vector<float> t = scene::download_vec4(targets, m);
+    shading::check_finite_targets(r.target, t, m, [&](std::size_t i) {
+      const glm::vec3 &n = dirs.normals[first + i], &v = dirs.views[first + i];
+      return "normal (" + io::number_text(n.x) + ", " + io::number_text(n.y) + ", " + io::number_text(n.z) +
+             "), view (" + io::number_text(v.x) + ", " + io::number_text(v.y) + ", " + io::number_text(v.z) + ")";
+    });
     for (std::size_t i = 0; i < m; ++i)
       for (int c = 0; c < 3; ++c) ys[(first + i) * 3 + c] = t[i * 4 + c];
   }

@@ -166,6 +166,18 @@ void compile_lighting(const LightingModel& m) {
   gl::get_program(desc);
 }
 
+void check_finite_targets(const LightingParams& p, const std::vector<float>& targets, std::size_t count,
+                          const std::function<std::string(std::size_t)>& sample) {
+  std::size_t bad = 0, first = 0;
+  for (std::size_t i = 0; i < count; ++i)
+    if (targets[i * 4 + 3] != 1.0f && bad++ == 0) first = i;
+  if (bad == 0) return;
+  throw std::runtime_error("lighting model '" + p.spec().name + "' gave NaN or infinite radiance for " +
+                           std::to_string(bad) + " of " + std::to_string(count) + " samples (the first: " +
+                           sample(first) + "); shade() must return finite values for every input, and " +
+                           "sn.lighting.stress(model) shows where it does not");
+}
+
 void evaluate(const LightingParams& p, const scene::Light& light, const SampleBuffers& in, gl::Buffer& targets,
               std::size_t count, shading::ColorSpace color, bool raw, const Varied* varied) {
   if (count == 0) return;

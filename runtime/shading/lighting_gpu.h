@@ -2,6 +2,7 @@
 // shaders/convert_color.comp over sample buffers (vec4 per sample, .xyz used).
 #pragma once
 #include <cstddef>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -44,10 +45,17 @@ struct Varied {
 };
 
 // Shades `count` samples: targets[i] = the model at sample i in colour space `color`, or the
-// unclamped RGB radiance when `raw`. Throws naming an attribute the model reads that `in` lacks.
+// unclamped RGB radiance when `raw`. Without `raw`, targets[i].w is 1, or 0 where the radiance
+// was NaN or infinite (check_finite_targets). Throws naming an attribute the model reads that
+// `in` lacks.
 void evaluate(const LightingParams& p, const scene::Light& light, const SampleBuffers& in, gl::Buffer& targets,
               std::size_t count, shading::ColorSpace color = shading::ColorSpace::rgb, bool raw = false,
               const Varied* varied = nullptr);
+
+// Throws when evaluate flagged a sample (w = 0) in `targets` (count vec4s, downloaded): the
+// model's GLSL gave NaN or infinite radiance there. `sample(i)` describes sample i for the message.
+void check_finite_targets(const LightingParams& p, const std::vector<float>& targets, std::size_t count,
+                          const std::function<std::string(std::size_t)>& sample);
 
 // Host-side convenience (uploads, evaluates, downloads): per attribute, one vec3 per sample
 // (uv in .xy).

@@ -88,4 +88,19 @@ fails("must define vec3 shade(Surface s, Params p)", define, "edges_commented", 
       "// vec3 shade(Surface s, Params p) { return vec3(1.0); }\n/* vec3 shade(Surface s, Params p) */\nvec3 f() { return vec3(1.0); }")
 -- A name that only contains a keyword is fine.
 assert(define("edges_fine", { input_gain = { default = 1, range = { 0, 2 } }, vec3ish = { default = 1, range = { 0, 2 } } }))
+
+-- 5. A model whose GLSL gives NaN or Inf somewhere (its twin clamps it away): a dataset of it is an
+--    error naming the first such sample, not a dataset of clamped made-up targets (sqrt of a
+--    negative cosine stored as 0, 1/0 as 1).
+local nanny = sn.lighting.define {
+  name = "edges_nanny", params = {},
+  glsl = "vec3 shade(Surface s, Params p) { float d = dot(s.n, s.l); return vec3(sqrt(d), 0.5, d < 0.0 ? 1.0 / 0.0 : 0.0); }",
+  twin = function(s) return { math.sqrt(math.max(sn.vec3.dot(s.n, s.l), 0)), 0.5, 0 } end,
+}
+fails("lighting model 'edges_nanny' gave NaN or infinite radiance for ", function()
+  return scene:dataset { target = nanny, samples = 300 }
+end)
+fails("(the first: normal (", sn.dataset.sample, { target = nanny, n = 1000, seed = 1 })
+-- A finite model's datasets are unchanged by the check.
+assert(scene:dataset { target = glow, samples = 300 }:counts() > 0)
 print("ok")
