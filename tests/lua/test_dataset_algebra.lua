@@ -128,7 +128,7 @@ local w = assert(io.open(dir .. "/broken.csv", "w"))
 w:write("x1,r,g,b,set\n1,2,3,4,train\n1,2,3\n")
 w:close()
 fails("sn.dataset.load: " .. dir .. "/broken.csv:3: 3 columns, the header has 5", sn.dataset.load, dir .. "/broken.csv")
-fails("dataset:export: cannot write dataset array '" .. dir .. "/broken.csv/x.inputs.npy': cannot create folder", c.export, c,
+fails("dataset:export: cannot write dataset '" .. dir .. "/broken.csv/x.inputs.npy': cannot create folder", c.export, c,
       dir .. "/broken.csv/x.json")
 
 for _, name in ipairs { "cloth.json", "cloth.inputs.npy", "cloth.targets.npy", "small.csv", "hsv.csv", "uv.json",
