@@ -145,14 +145,17 @@ SN_INLINE V vlog(const V& x) {
 }
 
 // sin x and cos x: x - n pi/2 in three parts (Cody-Waite), then the Cephes polynomials on
-// [-pi/4, pi/4]; absolute error ~1e-7 for |x| up to a few thousand.
+// [-pi/4, pi/4]; absolute error ~1e-7 for |x| up to 8192. Beyond, n pi/2 is no longer exact in
+// three parts and the remainder drifts (past 2^31 n is INT_MIN, x86's conversion of a value out
+// of range), so the remainder is clamped to pi/4: the polynomials stay in [-1, 1] (sin reached
+// 13.3 and -inf), and no value for |x| <= 8192 changes.
 template <class V>
 SN_INLINE void vsincos(const V& x, V& s_out, V& c_out) {
   const mask_of<V> n = round_int(x * 0.636619772367581343f);
   const V fn = __builtin_convertvector(n, V);
   V r = x - fn * 1.5703125f;
   r = r - fn * 4.837512969970703125e-4f;
-  r = r - fn * 7.54978995489188216e-8f;
+  r = clamp_symmetric(r - fn * 7.54978995489188216e-8f, 0.785398185f);
   const V r2 = r * r;
   V s = r2 * -1.9515295891e-4f + 8.3321608736e-3f;
   s = s * r2 + -1.6666654611e-1f;
