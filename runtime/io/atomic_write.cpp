@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
 #include <cstring>
 #include <filesystem>
 #include <set>
@@ -107,6 +108,24 @@ void write_files_atomic(const std::vector<std::pair<std::string, std::string>>& 
       throw;
     }
   }
+}
+
+int remove_stale_temporaries(const std::string& dir, double min_age_seconds) {
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) return 0;
+  const auto now = fs::file_time_type::clock::now();
+  int removed = 0;
+  for (const auto& e : fs::directory_iterator(dir, ec)) {
+    const std::string name = e.path().filename().string();
+    const std::size_t at = name.rfind(".tmp");
+    if (name.size() < 2 || name[0] != '.' || at == std::string::npos || at + 4 == name.size() ||
+        name.find_first_not_of("0123456789", at + 4) != std::string::npos || !e.is_regular_file(ec))
+      continue;
+    const auto written = fs::last_write_time(e.path(), ec);
+    if (ec || std::chrono::duration<double>(now - written).count() < min_age_seconds) continue;
+    if (fs::remove(e.path(), ec)) ++removed;
+  }
+  return removed;
 }
 
 }  // namespace sn::io

@@ -89,6 +89,16 @@ int w_exists(lua_State* L) {
   return 1;
 }
 
+// sn.fs.remove_stale_temporaries(dir [, seconds = 60]) -> count: the temporary files that killed
+// writers left in dir (".NAME.tmpPID"), older than `seconds` (io::remove_stale_temporaries).
+int w_remove_stale_temporaries(lua_State* L) {
+  const std::string dir = check_string(L, 1, "sn.fs.remove_stale_temporaries folder");
+  const double seconds = lua_isnoneornil(L, 2) ? 60.0 : check_number(L, 2, "sn.fs.remove_stale_temporaries seconds");
+  if (!(seconds >= 0)) throw Error("sn.fs.remove_stale_temporaries seconds must be >= 0");
+  lua_pushinteger(L, io::remove_stale_temporaries(dir, seconds));
+  return 1;
+}
+
 // sn.fs.claim(dir, stem [, ext]) -> path: creates dir/stem-NNNN<ext> (a file; with no ext a
 // folder) with the first free number, exclusively, so two processes never get the same one.
 int w_claim(lua_State* L) {
@@ -184,6 +194,7 @@ void open_files(lua_State* L) {
   lua_setfield(L, -2, "limits");
   static const luaL_Reg fns[] = {SN_FN("mkdir", w_mkdir), SN_FN("list", w_list), SN_FN("exists", w_exists), SN_FN("write", w_write), SN_FN("write_all", w_write_all),
                                  SN_FN("claim", w_claim), SN_FN("tempdir", w_tempdir),
+                                 SN_FN("remove_stale_temporaries", w_remove_stale_temporaries),
                                  {nullptr, nullptr}};
   lua_newtable(L);
   luaL_register(L, nullptr, fns);

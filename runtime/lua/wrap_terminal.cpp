@@ -2,6 +2,9 @@
 // (sn.catch_interrupt([on]) / sn.interrupted(); sn.train's stop, lua/interrupt.h). Without them
 // SIGINT kills the process at once; a sweep that catches it stops the training in flight at its
 // next step, keeps the runs finished before, and stops; a second Ctrl-C still stops at once.
+// After sn.catch_interrupt(), SIGTERM (kill's default, and what a batch scheduler such as Slurm
+// sends before SIGKILL) is caught alike: a sweep killed at its time limit keeps its finished runs.
+// sn.train alone catches only Ctrl-C (a script that does not ask would go on after a SIGTERM).
 #include <csignal>
 #include <cstdio>
 #include <sys/ioctl.h>
@@ -27,26 +30,35 @@ void say(const char* msg, std::size_t n) {
   (void)ignored;
 }
 
-extern "C" void on_sigint(int) {
+extern "C" void on_sigint(int signo) {
   g_interrupts = g_interrupts + 1;
-  // The second Ctrl-C gets the default action back: the process ends now.
+  // The second signal gets the default action back: the process ends now.
   std::signal(SIGINT, SIG_DFL);
-  if (std::atomic<bool>* stop = g_train_stop.load()) {
-    stop->store(true);
-    static const char msg[] = "\ninterrupt: stopping training at the next step (Ctrl-C again to stop now)\n";
+  std::signal(SIGTERM, SIG_DFL);
+  if (signo == SIGTERM) {
+    static const char msg[] = "\nterminate (SIGTERM): ";
     say(msg, sizeof msg - 1);
   } else {
-    static const char msg[] = "\ninterrupt: finishing the work in flight, then stopping (Ctrl-C again to stop now)\n";
+    static const char msg[] = "\ninterrupt: ";
+    say(msg, sizeof msg - 1);
+  }
+  if (std::atomic<bool>* stop = g_train_stop.load()) {
+    stop->store(true);
+    static const char msg[] = "stopping training at the next step (Ctrl-C again to stop now)\n";
+    say(msg, sizeof msg - 1);
+  } else {
+    static const char msg[] = "finishing the work in flight, then stopping (Ctrl-C again to stop now)\n";
     say(msg, sizeof msg - 1);
   }
 }
 
-void set_handler(void (*handler)(int)) {
+void set_handler(void (*handler)(int), bool and_sigterm) {
   struct sigaction sa {};
   sa.sa_handler = handler;
   sigemptyset(&sa.sa_mask);
   sa.sa_flags = SA_RESTART;
   sigaction(SIGINT, &sa, nullptr);
+  if (and_sigterm) sigaction(SIGTERM, &sa, nullptr);
 }
 
 void (*current_handler())(int) {
@@ -59,7 +71,7 @@ void (*current_handler())(int) {
 
 TrainInterrupt::TrainInterrupt(std::atomic<bool>* stop) : previous_(g_train_stop.exchange(stop)) {
   if (current_handler() == SIG_DFL) {
-    set_handler(on_sigint);
+    set_handler(on_sigint, false);
     installed_ = true;
   }
 }
@@ -67,7 +79,7 @@ TrainInterrupt::TrainInterrupt(std::atomic<bool>* stop) : previous_(g_train_stop
 TrainInterrupt::~TrainInterrupt() {
   g_train_stop.store(previous_);
   // Still ours and not fired: the default action back, as before sn.train.
-  if (installed_ && current_handler() == on_sigint) set_handler(SIG_DFL);
+  if (installed_ && current_handler() == on_sigint) set_handler(SIG_DFL, false);
 }
 
 namespace {
@@ -101,9 +113,9 @@ int w_catch_interrupt(lua_State* L) {
   bool on = lua_isnoneornil(L, 1) ? true : lua_toboolean(L, 1) != 0;
   if (on) {
     g_interrupts = 0;
-    set_handler(on_sigint);
+    set_handler(on_sigint, true);
   } else {
-    set_handler(SIG_DFL);
+    set_handler(SIG_DFL, true);
   }
   return 0;
 }

@@ -43,14 +43,10 @@ function results.read_json(path)
   return json.decode(s, path)
 end
 
--- Removes temporary files a killed writer left in dir (they never replace a result).
+-- Removes temporary files a killed writer left in dir (they never replace a result), once they
+-- are a minute old: a shard of the same sweep may be writing beside us.
 function results.clean_temps(dir)
-  if sn.fs.exists(dir) ~= "folder" then return 0 end
-  local n = 0
-  for _, name in ipairs(sn.fs.list(dir)) do
-    if name:match("^%..*%.tmp$") then os.remove(dir .. "/" .. name) n = n + 1 end
-  end
-  return n
+  return sn.fs.remove_stale_temporaries(dir)
 end
 
 -- ---- tables -------------------------------------------------------------------------------

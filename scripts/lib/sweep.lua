@@ -169,7 +169,7 @@ function Sweep:run(o)
   sn.catch_interrupt(false)
   progress:finish()
   if interrupted then
-    print(string.format("%s: stopped by Ctrl-C; %d of %d runs finished and kept in %s%s (run the same command to resume)",
+    print(string.format("%s: stopped (Ctrl-C or SIGTERM); %d of %d runs finished and kept in %s%s (run the same command to resume)",
                         self.label, done, #slice, self.runs_dir,
                         stopped_part_way > 0 and string.format("; %d stopped part-way will train again", stopped_part_way) or ""))
   end

@@ -56,8 +56,18 @@ assert(not ok and err:find("f.json"), "json errors name the file")
 local p = results.write_file(tmp .. "/sub/a.txt", "hello")
 assert(results.read_file(p) == "hello", "atomic write")
 for _, name in ipairs(sn.fs.list(tmp .. "/sub")) do assert(not name:find("tmp"), "no temp file left: " .. name) end
-local f = io.open(tmp .. "/sub/.a.txt.dead1.tmp", "w") f:write("half") f:close()
+-- Temporary files as the writers name them (.NAME.tmpPID): a killed writer's, two minutes old, is
+-- cleaned; a fresh one (a writer beside us) and a file that only looks alike stay.
+for _, name in ipairs { ".a.txt.tmp4242", ".b.json.tmp7", ".c.txt.tmp12x", "d.txt.tmp5" } do
+  local f = io.open(tmp .. "/sub/" .. name, "w") f:write("half") f:close()
+end
+os.execute(("touch -d '2 minutes ago' %q %q %q"):format(tmp .. "/sub/.a.txt.tmp4242", tmp .. "/sub/.c.txt.tmp12x",
+                                                        tmp .. "/sub/d.txt.tmp5"))
 assert(results.clean_temps(tmp .. "/sub") == 1, "a killed writer's temp file is cleaned")
+assert(sn.fs.exists(tmp .. "/sub/.a.txt.tmp4242") == nil and sn.fs.exists(tmp .. "/sub/.b.json.tmp7") == "file" and
+       sn.fs.exists(tmp .. "/sub/.c.txt.tmp12x") == "file" and sn.fs.exists(tmp .. "/sub/d.txt.tmp5") == "file")
+assert(sn.fs.remove_stale_temporaries(tmp .. "/sub", 0) == 1, "age 0: the fresh one too")
+for _, name in ipairs { ".c.txt.tmp12x", "d.txt.tmp5" } do os.remove(tmp .. "/sub/" .. name) end
 local cols = { { key = "layers" }, { key = "width" }, { key = "ours", format = "%.6f" }, { key = "thesis", format = "%.6f" } }
 local rows = { { layers = 2, width = 4, ours = 0.0012346, thesis = 0.000736 }, { layers = 2, width = 6, ours = 0.5 } }
 assert(results.csv(cols, rows) == "layers,width,ours,thesis\n2,4,0.0012346,0.000736\n2,6,0.5,\n", "csv")
