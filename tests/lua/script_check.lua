@@ -138,8 +138,8 @@ end
 -- Runs a script in a child shadenet with a Ctrl-C sent to itself after its first training
 -- group: a deterministic stand-in for a person pressing Ctrl-C mid-sweep. With `in_training`
 -- = n, the Ctrl-C comes inside the n-th sn.train call instead, after its first epoch (sn.train
--- then stops at its next step).
-function C.run_interrupted(script, args, in_training)
+-- then stops at its next step). `signal` (default 2, SIGINT) is the signal sent: 15 is SIGTERM.
+function C.run_interrupted(script, args, in_training, signal)
   local wrapper = C.tmpdir("interrupted") .. "/wrapper.lua"
   results.write_file(wrapper, string.format([[
 package.path = "scripts/?.lua;" .. package.path
@@ -147,12 +147,12 @@ local sn = require "shadenet"
 local exp = require "lib.experiment"
 local ffi = require "ffi"
 ffi.cdef "int getpid(void); int kill(int pid, int sig);"
-local in_training = %s
+local in_training, signal = %s, %d
 local train_group = exp.Experiment.train_group
 local sent = false
 local function ctrl_c()
   sent = true
-  ffi.C.kill(ffi.C.getpid(), 2)  -- SIGINT to this process, as a terminal's Ctrl-C sends
+  ffi.C.kill(ffi.C.getpid(), signal)  -- SIGINT: as a terminal's Ctrl-C sends
 end
 exp.Experiment.train_group = function(self, group, tick)
   local out = train_group(self, group, tick)
@@ -173,7 +173,7 @@ sn.train = function(o)
 end
 arg[0] = %q
 dofile(%q)
-]], tostring(in_training), script, script))
+]], tostring(in_training), signal or 2, script, script))
   local code, out = C.run(wrapper, args)
   return code, out
 end

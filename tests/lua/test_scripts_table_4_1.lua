@@ -62,10 +62,17 @@ assert(C.read(R .. "/table.csv") == C.read(A .. "/table.csv"), "a resumed run = 
 local I = root .. "/interrupted"
 local code, iout = C.run_interrupted(script, { "--quick", "--runs-per-job", "36", "--out", I })
 assert(code == 130, "an interrupted sweep exits 130, got " .. tostring(code) .. ":\n" .. iout)
-assert(iout:find("stopped by Ctrl%-C; 36 of 72 runs finished and kept"), "interrupt message:\n" .. iout)
+assert(iout:find("stopped %(Ctrl%-C or SIGTERM%); 36 of 72 runs finished and kept"), "interrupt message:\n" .. iout)
 out = C.ok(script, { "--quick", "--out", I })
 assert(out:find("resuming, 36 of 72"), "the re-run resumes:\n" .. out)
 assert(C.read(I .. "/table.csv") == C.read(A .. "/table.csv"), "interrupted + resumed = uninterrupted")
+
+-- SIGTERM (a scheduler's time limit) after the first training job: the same graceful stop.
+local K = root .. "/terminated"
+code, iout = C.run_interrupted(script, { "--quick", "--runs-per-job", "36", "--out", K }, nil, 15)
+assert(code == 130, "a terminated sweep exits 130, got " .. tostring(code) .. ":\n" .. iout)
+assert(iout:find("terminate (SIGTERM): finishing the work in flight", 1, true) and
+       iout:find("stopped %(Ctrl%-C or SIGTERM%); 36 of 72 runs finished and kept"), "terminate message:\n" .. iout)
 
 -- Ctrl-C inside the second group's training: sn.train stops at its next step, the runs it
 -- stopped part-way are not recorded, and the re-run trains them again from the start.
@@ -73,7 +80,7 @@ local T = root .. "/in_training"
 code, iout = C.run_interrupted(script, { "--quick", "--runs-per-job", "36", "--out", T }, 2)
 assert(code == 130, "interrupted in training: exit 130, got " .. tostring(code) .. ":\n" .. iout)
 assert(iout:find("interrupt: stopping training at the next step", 1, true) and
-       iout:find("stopped by Ctrl%-C; 36 of 72 runs finished and kept in [^\n]*; 36 stopped part%-way will train again"),
+       iout:find("stopped %(Ctrl%-C or SIGTERM%); 36 of 72 runs finished and kept in [^\n]*; 36 stopped part%-way will train again"),
        "interrupt message:\n" .. iout)
 out = C.ok(script, { "--quick", "--out", T })
 assert(out:find("resuming, 36 of 72"), "the re-run resumes:\n" .. out)
