@@ -76,8 +76,8 @@ for _, c in ipairs(cases) do
                        adam = { lr = 0.00025, beta1 = 0.8, beta2 = 0.9 }, seed = 1, keep = "best" }
   local result = r[1]
   if sn.interrupted() then  -- Ctrl-C: a half-trained network is no result to show
-    print(string.format("quickstart: stopped by Ctrl-C while training the %s network; quickstart.png and table.md not written",
-                        c.name))
+    print(string.format("quickstart: stopped by Ctrl-C while training the %s network; "
+                        .. "quickstart.png and table.md not written", c.name))
     os.exit(130)
   end
   print(string.format("%-5s %s: best validation MSE %.3g at epoch %d, trained in %.1f s on %s",
