@@ -32,17 +32,19 @@ end
 local records = E:sweep(runs)
 
 -- Rendering cost per architecture: the cloth at the render size, one view; a network's speed
--- does not depend on its weights, so a freshly initialised one is timed.
-local size = E:pick({ 160, 120 }, { 640, 480 })
-local scene = E:scene { mesh = exp.meshes.train, size = size, views = 8 }
-local g = scene:gbuffer { view = 1, attributes = { "normal", "view" } }
-local covered = g:covered()
-local render_ns = {}
-for _, l in ipairs(sizes) do
-  for _, w in ipairs(sizes) do
-    local net = sn.mlp { inputs = 6, hidden = exp.rep(w, l), outputs = 3, seed = 1, input_names = { "normal", "view" } }
-    local per_frame = E:time("render", exp.render_seconds, net, g, frames)
-    render_ns[l .. "x" .. w] = 1e9 * per_frame / covered
+-- does not depend on its weights, so a freshly initialised one is timed. Not after a Ctrl-C:
+-- the partial results are written at once, without the cost columns.
+local render_ns, size, covered = {}, E:pick({ 160, 120 }, { 640, 480 }), nil
+if not E.interrupted then
+  local scene = E:scene { mesh = exp.meshes.train, size = size, views = 8 }
+  local g = scene:gbuffer { view = 1, attributes = { "normal", "view" } }
+  covered = g:covered()
+  for _, l in ipairs(sizes) do
+    for _, w in ipairs(sizes) do
+      local net = sn.mlp { inputs = 6, hidden = exp.rep(w, l), outputs = 3, seed = 1, input_names = { "normal", "view" } }
+      local per_frame = E:time("render", exp.render_seconds, net, g, frames)
+      render_ns[l .. "x" .. w] = 1e9 * per_frame / covered
+    end
   end
 end
 
@@ -100,6 +102,7 @@ for _, m in ipairs(models) do
         all.x[#all.x + 1], all.y[#all.y + 1], all.labels[#all.labels + 1] = p[cost], p[err], p.arch
       end
     end
+    if #all.x == 0 then return end  -- nothing measured (a stopped sweep's render costs): no plot
     local f = { name = "Pareto-optimal", x = {}, y = {}, style = "linespoints", color = "#d62728" }
     for _, p in ipairs(front) do f.x[#f.x + 1], f.y[#f.y + 1] = p[cost], p[err] end
     E:plot(file, { title = string.format("%s: %s against %s (labels: layers x width)",
@@ -131,8 +134,9 @@ E.R:table {
     string.format("Median over %d seeds; %s, tanh; each network trained alone (%s backend); training data: %s.",
                   seeds, exp.recipe(epochs), E.backend, E:data_note()),
     exp.unseen_note(),
-    string.format("Rendering: %d frames drawn at %dx%d (%d covered fragments) in one call, less a one-frame call: drawing only, no read-back; %s.",
-                  frames, size[1], size[2], covered, sn.gl_info().renderer),
+    covered and string.format("Rendering: %d frames drawn at %dx%d (%d covered fragments) in one call, less a one-frame call: drawing only, no read-back; %s.",
+                              frames, size[1], size[2], covered, sn.gl_info().renderer)
+            or "Rendering: not timed (the sweep was stopped by Ctrl-C or SIGTERM).",
   },
 }
 -- The answer in short: per model, the Pareto-optimal architectures from cheapest to most accurate.

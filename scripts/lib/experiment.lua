@@ -630,6 +630,11 @@ function E:sweep(runs, o)
   }
   self.sweeps[#self.sweeps + 1] = { runs = #runs, slice = #sweep:slice(), finished = finished, interrupted = interrupted }
   self.interrupted = self.interrupted or interrupted
+  if interrupted then  -- every table written from here on says so at its top
+    self.R.partial = string.format("**Partial results:** the sweep was stopped (Ctrl-C or SIGTERM) with %d of %d "
+                                   .. "runs finished; – marks the others. Run the same command to resume.",
+                                   finished, #sweep:slice())
+  end
   local by_id = {}
   for _, rec in ipairs(sweep:records()) do by_id[rec.id] = rec end
   return by_id, interrupted

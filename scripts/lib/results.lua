@@ -173,11 +173,13 @@ end
 
 -- R:table{ file = "table", title = "...", columns = {{key, header, format}...}, rows = {...},
 --          grids = {{title, rows, cols, value, thesis, format}...}, notes = {"..."} }
--- writes FILE.md (title, grids, the long table, notes) and FILE.csv (the long table).
+-- writes FILE.md (title, grids, the long table, notes) and FILE.csv (the long table). When
+-- R.partial is set (a stopped sweep), FILE.md says so under its title.
 function Results:table(t)
   local file = t.file or "table"
   local md = {}
   if t.title then md[#md + 1] = "## " .. t.title .. "\n" end
+  if self.partial then md[#md + 1] = self.partial .. "\n" end
   for _, g in ipairs(t.grids or {}) do md[#md + 1] = results.markdown_grid(g, t.rows) end
   md[#md + 1] = results.markdown(t.columns, t.rows)
   for _, n in ipairs(t.notes or {}) do md[#md + 1] = n .. "\n" end

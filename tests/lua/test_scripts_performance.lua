@@ -69,4 +69,16 @@ for _, cost in ipairs { { "train_s", "pareto_train" }, { "render_ns", "pareto_re
   end
 end
 C.rm(dir)
+
+-- Stopped after its first training group: it exits 130 at once (it timed every architecture's
+-- render first, 12 s more in --quick), and its tables say they are partial.
+dir = C.tmpdir("pareto_stopped")
+local code, out = C.run_interrupted("scripts/pareto.lua", { "--quick", "--out", dir })
+assert(code == 130, "a stopped pareto exits 130, got " .. tostring(code) .. ":\n" .. out)
+local md = C.read(dir .. "/table.md")
+assert(md:find("**Partial results:** the sweep was stopped (Ctrl-C or SIGTERM) with ", 1, true) and
+       md:find("Rendering: not timed", 1, true), md)
+local run = C.read(dir .. "/run.json")
+assert(not run:find('"render": %d'), "no render timing after the stop:\n" .. run)  -- timings.render, seconds
+C.rm(dir)
 print("performance scripts: ok")
