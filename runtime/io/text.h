@@ -7,6 +7,7 @@
 namespace sn::io {
 
 inline std::string number_text(double v) {
+  if (v != v) return "nan";  // printf gives "-nan" for Lua's 0/0
   char b[32];
   std::snprintf(b, sizeof b, "%g", v);
   return b;

@@ -72,7 +72,7 @@ int check_index(lua_State* L, int idx, int n, const std::string& what) {
 float check_weight(lua_State* L, int idx, const std::string& what) {
   if (lua_type(L, idx) != LUA_TNUMBER) throw Error(what + " must be a number, got " + type_name_at(L, idx));
   double v = lua_tonumber(L, idx);
-  if (!std::isfinite(v) || !std::isfinite(float(v))) throw Error(what + " must be a finite float, got " + std::to_string(v));
+  if (!std::isfinite(v) || !std::isfinite(float(v))) throw Error(what + " must be a finite float, got " + io::number_text(v));
   return float(v);
 }
 
@@ -299,7 +299,7 @@ int w_new(lua_State* L) {
   }
   s.outputs = o.int32("outputs", 3);
   for (double w : o.numbers("hidden")) {
-    if (w != std::floor(w)) throw Error("sn.mlp option 'hidden': widths must be integers, got " + std::to_string(w));
+    if (w != std::floor(w)) throw Error("sn.mlp option 'hidden': widths must be integers, got " + io::number_text(w));
     s.hidden.push_back(int(w));
   }
   if (o.has("encoding")) {

@@ -39,9 +39,12 @@ std::vector<float> rows_from_table(lua_State* L, int idx, int inputs, bool* nest
   std::vector<float> x;
   auto read_row = [&](int t, const std::string& what) {
     auto v = check_numbers(L, t, what.c_str(), inputs);
-    for (double d : v) {
-      if (!std::isfinite(d)) throw Error(what + ": values must be finite");
-      x.push_back(float(d));
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      // As float, the kernels' type: 1e39 would pass as a double and run as infinity.
+      if (!std::isfinite(float(v[i])))
+        throw Error(what + " input " + std::to_string(i + 1) + " is " + io::number_text(v[i]) +
+                    (std::isfinite(v[i]) ? ", beyond float's range (3.4e38)" : "") + ": values must be finite floats");
+      x.push_back(float(v[i]));
     }
   };
   if (!*nested) {

@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "io/text.h"
+
 namespace sn::nn {
 
 std::string Loss::describe() const {
@@ -44,11 +46,9 @@ Loss parse_loss(const std::string& name, double delta) {
   else if (name == "relative_l2") l.kind = LossKind::relative_l2;
   else if (name == "huber") l.kind = LossKind::huber;
   else throw std::invalid_argument("unknown loss '" + name + "' (valid: l2, l1, relative_l2, huber)");
-  if (!(delta > 0 && delta <= 1e6)) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%g", delta);
-    throw std::invalid_argument(std::string("huber delta must be in (0, 1e6], got ") + buf);
-  }
+  // A normal float at least: the kernels flush denormals to zero, where the loss would be 0.
+  if (!(delta >= 1e-30 && delta <= 1e6))
+    throw std::invalid_argument("huber delta must be in [1e-30, 1e6], got " + io::number_text(delta));
   l.delta = delta;
   return l;
 }

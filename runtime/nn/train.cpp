@@ -94,7 +94,10 @@ void validate(const TrainJob& job) {
   if (!(c.lr > 0 && std::isfinite(c.lr))) fail("adam lr must be > 0, got " + io::number_text(c.lr));
   if (!(c.beta1 >= 0 && c.beta1 < 1)) fail("adam beta1 must be in [0, 1), got " + io::number_text(c.beta1));
   if (!(c.beta2 >= 0 && c.beta2 < 1)) fail("adam beta2 must be in [0, 1), got " + io::number_text(c.beta2));
-  if (!(c.eps > 0 && std::isfinite(c.eps))) fail("adam eps must be > 0, got " + io::number_text(c.eps));
+  // A normal float: the kernels flush denormals to zero (and run in float), so a smaller eps was
+  // 0 there, and a parameter with no gradient went 0/0 at the first step.
+  if (!(c.eps >= double(std::numeric_limits<float>::min()) && c.eps <= double(std::numeric_limits<float>::max())))
+    fail("adam eps must be a normal float, at least 1.17549e-38, got " + io::number_text(c.eps));
   if (!(c.divergence.factor >= 1))
     fail("divergence_factor must be >= 1 (math.huge turns the rule off), got " + io::number_text(c.divergence.factor));
   if (c.tick && !(c.tick_seconds > 0 && c.tick_seconds <= 3600))
