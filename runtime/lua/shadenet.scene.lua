@@ -55,14 +55,23 @@ function Scene.render(scene, what, options)
       error("scene:render: 'backend', 'target' and 'nonfinite' are a network's (net:render); a lighting model is "
             .. "drawn by its shader into a new Image", 2)
     end
-    where.attributes = what:attributes()
-    local g = gbuffer_for_render(scene, where)
     local light = scene:light()
-    if options.light then
+    if options.light ~= nil then
+      if type(options.light) ~= "table" then
+        error("scene:render option 'light': { dir = {x, y, z}, color = {r, g, b} } expected, got " .. type(options.light), 2)
+      end
+      for k in pairs(options.light) do
+        if k ~= "dir" and k ~= "color" then
+          error("scene:render option 'light': unknown key '" .. tostring(k) .. "' (valid: color, dir)", 2)
+        end
+      end
       light = { dir = options.light.dir or light.dir, color = options.light.color or light.color }
     end
-    local img = sn.render_truth(g, what, light)
+    where.attributes = what:attributes()
+    local g = gbuffer_for_render(scene, where)
+    local ok, img = pcall(sn.render_truth, g, what, light)
     g:release()  -- its target goes back to the pool now, not at the next garbage collection
+    if not ok then error((tostring(img):gsub("^sn%.render_truth", "scene:render")), 2) end
     return img
   elseif kind == "Mlp" then
     local inputs = what:inputs()
