@@ -201,7 +201,10 @@ void push_strings(lua_State* L, const std::vector<std::string>& items) {
 std::vector<double> check_numbers(lua_State* L, int idx, const char* what, int n) {
   idx = absindex(L, idx);
   if (lua_type(L, idx) == LUA_TNUMBER && n <= 1) return {lua_tonumber(L, idx)};
-  if (!lua_istable(L, idx)) throw Error(std::string(what) + ": table of numbers expected, got " + type_name_at(L, idx));
+  if (!lua_istable(L, idx))
+    throw Error(std::string(what) + ": " +
+                (n == 1 ? "a number" : n <= 0 ? "a number or a table of numbers" : "a table of " + std::to_string(n) + " numbers") +
+                " expected, got " + type_name_at(L, idx));
   int len = int(lua_objlen(L, idx));
   if (n >= 0 && len != n)
     throw Error(std::string(what) + ": " + std::to_string(n) + " numbers expected, got " + std::to_string(len));
