@@ -1,7 +1,9 @@
 // sn.buffer{...}: typed GPU storage buffers. Indices are 1-based like every Lua array.
+#include <cmath>
 #include <cstring>
 
 #include "gl/buffer.h"
+#include "io/text.h"
 #include "lua/binding.h"
 #include "lua/module.h"
 
@@ -14,17 +16,24 @@ using gl::Buffer;
 
 Buffer& self(lua_State* L) { return check<Buffer>(L, 1, kType); }
 
+// One integer component, exactly: a value with a fraction or outside the type's range is an
+// error (3e9 wrapped to -2147483648 in an int32 buffer, 1.7 became 1).
+uint32_t integer_component(double v, bool is_signed, const std::string& what) {
+  const double lo = is_signed ? -2147483648.0 : 0.0, hi = is_signed ? 2147483647.0 : 4294967295.0;
+  if (!(v == std::floor(v) && v >= lo && v <= hi))
+    throw Error(what + ": " + io::number_text(v) + " is not an integer in " +
+                (is_signed ? "[-2147483648, 2147483647], the range of int32" : "[0, 4294967295], the range of uint32"));
+  return is_signed ? uint32_t(int32_t(v)) : uint32_t(v);
+}
+
 // Reads element `e` (0-based) from Lua value at idx into `out` (components() scalars).
 void to_components(lua_State* L, int idx, const gl::ElemInfo& info, uint32_t* out, const std::string& what) {
   auto put = [&](int c, double v) {
     if (info.is_float) {
       float f = float(v);
       std::memcpy(&out[c], &f, 4);
-    } else if (info.is_signed) {
-      out[c] = uint32_t(int32_t(v));
     } else {
-      if (v < 0) throw Error(what + ": negative value " + std::to_string(v) + " in an unsigned buffer");
-      out[c] = uint32_t(v);
+      out[c] = integer_component(v, info.is_signed, what);
     }
   };
   if (info.components == 1) {
@@ -94,7 +103,7 @@ int w_new(lua_State* L) {
   if (o.has("fill")) {
     double v = o.number("fill", 0);
     if (info.is_float) b->fill_float(float(v));
-    else b->fill_uint(info.is_signed ? uint32_t(int32_t(v)) : uint32_t(v));
+    else b->fill_uint(integer_component(v, info.is_signed, "sn.buffer option 'fill'"));
   }
   if (!data.empty()) b->upload(data.data(), 0, data.size());
   push(L, std::move(b), kType);
