@@ -43,15 +43,18 @@ struct FileError : std::runtime_error {
 // ("byteOffset": -1 became 0 and read normals as positions; "bufferView": -1 became an all-zero
 // accessor), and an optional index that is not an integer likewise. The raw JSON is at hand, so
 // it is read once more (SAX: nothing stored) and every property of these the loader uses must be
-// a non-negative integer where it appears.
-class IntegerCheck : public nlohmann::json::json_sax_t {
+// a non-negative integer where it appears. The same pass collects "extensionsRequired".
+class JsonCheck : public nlohmann::json::json_sax_t {
  public:
   bool null() override { return scalar("null"); }
   bool boolean(bool v) override { return scalar(v ? "true" : "false"); }
   bool number_integer(number_integer_t v) override { return v >= 0 ? fine() : scalar(std::to_string(v)); }
   bool number_unsigned(number_unsigned_t) override { return fine(); }
   bool number_float(number_float_t, const string_t& text) override { return scalar(text); }
-  bool string(string_t& v) override { return scalar("a string (\"" + v.substr(0, 40) + "\")"); }
+  bool string(string_t& v) override {
+    if (stack_.size() == 2 && !stack_[1].object && stack_[0].key == "extensionsRequired") required_.push_back(v);
+    return scalar("a string (\"" + v.substr(0, 40) + "\")");
+  }
   bool binary(binary_t&) override { return scalar("binary"); }
   bool start_object(std::size_t) override {
     if (!scalar("an object")) return false;
@@ -78,6 +81,8 @@ class IntegerCheck : public nlohmann::json::json_sax_t {
   bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override { return false; }
 
   const std::string& problem() const { return problem_; }
+  // The top-level "extensionsRequired" strings read before the end or the first problem.
+  const std::vector<std::string>& required() const { return required_; }
 
  private:
   struct Frame {
@@ -152,13 +157,25 @@ class IntegerCheck : public nlohmann::json::json_sax_t {
 
   std::vector<Frame> stack_;
   std::string problem_;
+  std::vector<std::string> required_;
 };
 
+// glTF 2.0 (section 3.12): a loader refuses a file that requires an extension it does not read.
+// Draco or meshopt compressed geometry loaded as nothing, or failed as "invalid bufferView".
+void check_required_extensions(const std::vector<std::string>& required, const std::string& path) {
+  for (const std::string& e : required)
+    if (e != "KHR_mesh_quantization")
+      throw FileError(path, "requires the glTF extension " + e +
+                            ", which shadenet does not read (of those a file may require, it reads KHR_mesh_quantization)");
+}
+
 // Throws naming the first property of `json` (the file's JSON text or a .glb's JSON chunk) that
-// glTF requires to be a non-negative integer and is not.
-void check_integers(const char* json, std::size_t size, const std::string& path) {
-  IntegerCheck check;
+// glTF requires to be a non-negative integer and is not, or an extension it requires that the
+// loader lacks. JSON that does not parse throws nothing here.
+void check_json(const char* json, std::size_t size, const std::string& path) {
+  JsonCheck check;
   nlohmann::json::sax_parse(json, json + size, &check, nlohmann::json::input_format_t::json, false);
+  check_required_extensions(check.required(), path);
   if (!check.problem().empty()) throw FileError(path, check.problem());
 }
 
@@ -695,19 +712,27 @@ Mesh load_mesh(const std::string& path) {
     ok = gltf.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(bytes.data()),
                                   unsigned(bytes.size()), base_dir);
   }
-  if (!ok)
+  // The JSON: a .glb's first chunk (header 12 bytes, chunk length and type 8), a .gltf whole. A
+  // file tinygltf refused is read for the extensions it requires only (a compressed file fails
+  // in tinygltf with a reason that does not name its extension).
+  auto json = [&]() -> std::pair<const char*, std::size_t> {
+    if (!binary) return {text.data(), text.size()};
+    uint32_t json_size = 0;
+    if (bytes.size() >= 20) std::memcpy(&json_size, bytes.data() + 12, 4);
+    if (bytes.size() < 20 || json_size > bytes.size() - 20) return {nullptr, 0};
+    return {reinterpret_cast<const char*>(bytes.data()) + 20, json_size};
+  };
+  const auto [json_text, json_size] = json();
+  if (!ok) {
+    if (json_text) {
+      JsonCheck scan;
+      nlohmann::json::sax_parse(json_text, json_text + json_size, &scan, nlohmann::json::input_format_t::json, false);
+      check_required_extensions(scan.required(), path);
+    }
     throw FileError(path, std::string("is not a valid ") + (binary ? "binary glTF" : "glTF") + " file (" +
                               (err.empty() ? "tinygltf gave no reason" : "tinygltf: " + short_reason(err)) + ")");
-  // The JSON tinygltf accepted: a .glb's first chunk (header 12 bytes, chunk length and type 8),
-  // whose bounds tinygltf has checked; a .gltf whole.
-  if (binary) {
-    uint32_t json_size = 0;
-    std::memcpy(&json_size, bytes.data() + 12, 4);
-    if (bytes.size() >= 20 && json_size <= bytes.size() - 20)
-      check_integers(reinterpret_cast<const char*>(bytes.data()) + 20, json_size, path);
-  } else {
-    check_integers(text.data(), text.size(), path);
   }
+  if (json_text) check_json(json_text, json_size, path);
   Mesh mesh = GltfLoader(model, path, warn).load();
   validate(mesh);
   return mesh;
