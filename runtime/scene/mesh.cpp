@@ -25,6 +25,7 @@
 #include "io/atomic_write.h"
 #include "io/limits.h"
 #include "io/read_file.h"
+#include "io/text.h"
 #include "scene/tangents.h"
 
 namespace sn::scene {
@@ -380,14 +381,17 @@ class AccessorReader {
   const std::string& path_;
 };
 
-glm::dmat4 node_transform(const tinygltf::Node& n) {
+// The node's local transform; `why` gets what is wrong with it ("" when nothing is).
+glm::dmat4 node_transform(const tinygltf::Node& n, std::string& why) {
   if (n.matrix.size() == 16) return glm::make_mat4(n.matrix.data());  // column-major, as in GLM
   glm::dmat4 t(1.0), r(1.0), s(1.0);
   if (n.translation.size() == 3) t[3] = glm::dvec4(n.translation[0], n.translation[1], n.translation[2], 1.0);
   if (n.rotation.size() == 4) {
-    // glTF stores (x, y, z, w); glm::dquat's constructor takes w first.
+    // glTF stores (x, y, z, w); glm::dquat's constructor takes w first. A unit quaternion, up to
+    // rounding; one of length 0 is no rotation at all (it was taken for the identity).
     glm::dquat q(n.rotation[3], n.rotation[0], n.rotation[1], n.rotation[2]);
-    if (glm::length(q) > 0) r = glm::mat4_cast(glm::normalize(q));
+    if (!(glm::length(q) > 1e-6)) why = "a rotation of length " + io::number_text(glm::length(q)) + ", not a unit quaternion";
+    else r = glm::mat4_cast(glm::normalize(q));
   }
   if (n.scale.size() == 3) s = glm::scale(glm::dmat4(1.0), glm::dvec3(n.scale[0], n.scale[1], n.scale[2]));
   return t * r * s;
@@ -481,7 +485,9 @@ class GltfLoader {
     if (!on_path_.insert(node).second)
       throw FileError(path_, "node " + std::to_string(node) + " is its own ancestor (a cycle in the node tree)");
     const tinygltf::Node& n = m_.nodes[size_t(node)];
-    glm::dmat4 world = parent * node_transform(n);
+    std::string why;
+    glm::dmat4 world = parent * node_transform(n, why);
+    if (!why.empty()) throw FileError(path_, "node " + std::to_string(node) + " has " + why);
     if (!finite(world)) throw FileError(path_, "node " + std::to_string(node) + " has a non-finite transform");
     if (n.mesh >= 0) add_mesh(n.mesh, world);
     for (int c : n.children) walk(c, world, depth + 1);
@@ -613,7 +619,10 @@ class GltfLoader {
     // The merged mesh carries one texture: the first base-colour texture met in the scene.
     if (texture_image_ < 0 && prim.material >= 0 && size_t(prim.material) < m_.materials.size()) {
       int tex = m_.materials[size_t(prim.material)].pbrMetallicRoughness.baseColorTexture.index;
-      if (tex >= 0 && size_t(tex) < m_.textures.size()) {
+      if (tex >= 0 && size_t(tex) >= m_.textures.size())  // it was ignored: the mesh came out untextured
+        throw FileError(path_, "material " + std::to_string(prim.material) + "'s base-colour texture is texture " +
+                                   std::to_string(tex) + ", but the file has " + std::to_string(m_.textures.size()));
+      if (tex >= 0) {
         int src = m_.textures[size_t(tex)].source;
         if (src >= 0 && size_t(src) < m_.images.size()) texture_image_ = src;
       }

@@ -542,6 +542,24 @@ TEST(Mesh, MalformedAccessorsIndicesAndNodesAreClearErrors) {
             std::string::npos)
       << e;
 
+  // A rotation of length 0 (it was taken for no rotation at all).
+  p = raw_fixture(d / "zero_quat.gltf", tri, view, acc, prim, R"([{"mesh": 0, "rotation": [0, 0, 0, 0]}])");
+  e = error_of([&] { load_mesh(p); });
+  EXPECT_NE(e.find("zero_quat.gltf': node 0 has a rotation of length 0, not a unit quaternion"), std::string::npos) << e;
+
+  // A base-colour texture that is not in the file (it was ignored: the mesh loaded untextured).
+  p = (d / "no_texture.gltf").string();
+  {
+    std::ofstream(p) << R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+      "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "material": 0}]}],
+      "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 5}}}],
+      "bufferViews": )" << view << R"(, "accessors": )" << acc
+                     << R"(, "buffers": [{"byteLength": 36, "uri": "data:application/octet-stream;base64,)" << base64(tri)
+                     << R"("}]})";
+  }
+  e = error_of([&] { load_mesh(p); });
+  EXPECT_NE(e.find("material 0's base-colour texture is texture 5, but the file has 0"), std::string::npos) << e;
+
   // A NaN position.
   auto nan_tri = float_bytes({0, 0, 0, std::nanf(""), 0, 0, 0, 1, 0});
   p = raw_fixture(d / "nan.gltf", nan_tri, view, acc, prim);
