@@ -320,7 +320,8 @@ std::vector<std::string> input_names_of(const std::vector<std::string>& cols, st
 
 std::shared_ptr<Dataset> load_csv(const std::string& path) {
   const std::string text = io::read_file(path, "dataset");
-  std::size_t at = 0, line_no = 0;
+  // A UTF-8 byte order mark (Excel writes one) is not part of the first column's name.
+  std::size_t at = text.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0, line_no = 0;
   std::vector<std::string_view> fields;
   // The next non-blank line split at commas, fields trimmed; false at the end of the file.
   auto next_line = [&]() {
@@ -376,8 +377,16 @@ std::shared_ptr<Dataset> load_csv(const std::string& path) {
       auto r = std::from_chars(f.data(), f.data() + f.size(), v);
       if (f.empty() || r.ptr != f.data() + f.size() || r.ec == std::errc::invalid_argument)
         throw std::runtime_error(where() + ": column '" + cols[k] + "': '" + std::string(fields[k]) + "' is not a number");
-      if (r.ec == std::errc::result_out_of_range)
-        throw std::runtime_error(where() + ": column '" + cols[k] + "': " + std::string(fields[k]) + " is outside float32's range");
+      if (r.ec == std::errc::result_out_of_range) {
+        // Below float's smallest value it rounds to 0 (or a denormal), as a cast would; above its
+        // largest it is an error.
+        double wide = 0;
+        std::from_chars(f.data(), f.data() + f.size(), wide);
+        if (!(std::fabs(wide) < 1.0))
+          throw std::runtime_error(where() + ": column '" + cols[k] + "': " + std::string(fields[k]) +
+                                   " is outside float32's range");
+        v = float(wide);
+      }
       if (!std::isfinite(v))
         throw std::runtime_error(where() + ": column '" + cols[k] + "' is " + (std::isnan(v) ? "NaN" : "infinite"));
       row[k] = v;

@@ -282,6 +282,18 @@ TEST(DatasetFile, CsvErrorsNameFileAndLine) {
             at + ":1: input 'normal' needs the columns normal_x..normal_z in order; column 2 is 'normal_z', expected 'normal_y'");
 }
 
+// What spreadsheets write: a UTF-8 byte order mark before the header (it became part of the first
+// column's name, which no input was then called), and a value too small for a float (refused as
+// "outside float32's range"), which rounds to 0 as a cast does.
+TEST(DatasetFile, CsvFromSpreadsheets) {
+  const std::string at = scratch("excel.csv");
+  write(at, "\xEF\xBB\xBFnormal_x,normal_y,normal_z,r,g,b,set\n1e-50,1,0,0.5,0.5,0.5,train\n0,0,1,0.1,0.2,0.3,val\n");
+  auto d = load_dataset(at);
+  ASSERT_EQ(d->input_names, std::vector<std::string>{"normal"});
+  EXPECT_EQ(d->train_x[0], 0.0f);
+  EXPECT_EQ(d->train_x[1], 1.0f);
+}
+
 TEST(DatasetFile, UnwritablePathLeavesNothingBehind) {
   const std::string blocker = scratch("blocker");
   write(blocker, "a file, so nothing can be written below it");
