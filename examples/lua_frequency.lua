@@ -15,8 +15,12 @@ sn.encoding.define {
   glsl = [[if (keep) { if (j < w) return x[j]; j -= w; }
   int c = j / (2 * n), k = (j / 2) % n;
   float t = x[c] * float(1 << k);
-  t -= 2.0 * floor(0.5 * t + 0.5);  // exact: sin(pi t) has period 2 in t
-  return (j & 1) == 0 ? sin(SN_ENC_PI * t) : cos(SN_ENC_PI * t);]],
+  // t = r + u with r an integer, |u| <= 1/2 (exact in float): sin(pi t) = (-1)^r sin(pi u),
+  // cos(pi t) = (-1)^r sin(pi (1/2 - |u|)), so their zeros are exact (pi is not a float:
+  // sin(pi * 1.0) was 8.7e-8, which training on a zero input made a weight change).
+  float r = floor(t + 0.5), u = t - r;
+  float sign = mod(r, 2.0) == 0.0 ? 1.0 : -1.0;
+  return sign * sin(SN_ENC_PI * ((j & 1) == 0 ? u : 0.5 - abs(u)));]],
   lua = function(x, n, keep)
     local out = {}
     if keep then for c = 1, #x do out[#out + 1] = x[c] end end

@@ -109,8 +109,12 @@ std::vector<EncodingDef> builtin_encodings() {
                   "if (keep) { if (j < w) return x[j]; j -= w; }\n"
                   "  int c = j / (2 * n), k = (j / 2) % n;\n"
                   "  float t = x[c] * float(1 << k);\n"
-                  "  t -= 2.0 * floor(0.5 * t + 0.5);  // exact: sin(pi t) has period 2 in t\n"
-                  "  return (j & 1) == 0 ? sin(SN_ENC_PI * t) : cos(SN_ENC_PI * t);",
+                  "  // t = r + u with r an integer, |u| <= 1/2 (exact in float): sin(pi t) = (-1)^r sin(pi u),\n"
+                  "  // cos(pi t) = (-1)^r sin(pi (1/2 - |u|)), so their zeros are exact (pi is not a float:\n"
+                  "  // sin(pi * 1.0) was 8.7e-8, which training on a zero input made a weight change).\n"
+                  "  float r = floor(t + 0.5), u = t - r;\n"
+                  "  float sign = mod(r, 2.0) == 0.0 ? 1.0 : -1.0;\n"
+                  "  return sign * sin(SN_ENC_PI * ((j & 1) == 0 ? u : 0.5 - abs(u)));",
                   [](int w, int n, bool keep) { return (keep ? w : 0) + 2 * n * w; },
                   [](const InputEncoding& e, const double* x, int j) {
                     const int k = past_input(e, j);

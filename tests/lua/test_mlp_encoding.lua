@@ -166,4 +166,27 @@ for k, enc in ipairs(cases) do
   assert(checked > 100 and rworst < 1e-5, ("%s render: %d pixels, worst %g"):format(tostring(shown), checked, rworst))
 end
 print("render matches the reference for every case")
+
+-- The frequency encoding's zeros are exact in the shader: sin(pi t) at integer t and cos(pi t)
+-- at half-integer t are 0, as the double twin gives (to 1e-16). They were 8.7e-8 and -4.4e-8
+-- (pi is not a float), which a network trained on such inputs turned into weight changes the
+-- cpu backend, training on the twin's values, did not make.
+local probe = sn.mlp { inputs = { "uv" }, hidden = { 8 }, outputs = 8, activation = "relu",
+                       output_activation = "linear", encoding = { uv = { "frequency", bands = 2, include_input = false } } }
+local identity = {}
+for i = 1, 8 do identity[i] = {} for j = 1, 8 do identity[i][j] = i == j and 1 or 0 end end
+probe.layers[1].weight, probe.layers[1].bias = identity, { 0, 0, 0, 0, 0, 0, 0, 0 }
+probe.layers[2].weight, probe.layers[2].bias = identity, { 0, 0, 0, 0, 0, 0, 0, 0 }
+-- u = 1 and 0.5, v = -1.5 and 0: features sin(pi u), cos(pi u), sin(2 pi u), cos(2 pi u), then v's.
+for _, x in ipairs { { 1, -1.5 }, { 0.5, 0 }, { -2, 0.25 } } do
+  local e, f = probe:encode(x), probe:forward(x)
+  for i = 1, 8 do
+    local want = math.max(e[i], 0)  -- relu of the twin's value
+    if math.abs(want) < 1e-12 then
+      assert(f[i] == 0, ("frequency feature %d at {%g, %g}: %.3g in the shader, %.3g in the twin"):format(i, x[1], x[2], f[i], e[i]))
+    else
+      assert(math.abs(f[i] - want) < 1e-6, ("feature %d at {%g, %g}: %g vs %g"):format(i, x[1], x[2], f[i], want))
+    end
+  end
+end
 print("ok")
