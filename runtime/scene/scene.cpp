@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "io/text.h"
+
 namespace sn::scene {
 
 namespace {
@@ -55,8 +57,17 @@ GBuffer Scene::gbuffer(int view, const std::vector<std::string>& attributes, int
 std::vector<Camera> framing_orbit(const Bounds& b, int count, double elevation, double fov_y,
                                   std::optional<double> distance) {
   check_fov(fov_y);  // before the distance that frames the mesh is computed from it
+  // Framed meshes must fit the float arithmetic of the shaders: a smaller one was framed as if
+  // its radius were 1e-6 (a blank picture), a larger one put the camera beyond float's range.
+  if (!distance && !(b.radius() >= 1e-6))
+    throw std::invalid_argument("the meshes are too small to frame: their bounding sphere's radius is " +
+                                io::number_text(b.radius()) + ", below 1e-6; scale them up, or give the views a distance");
   double r = std::max(b.radius(), 1e-6);
   double d = distance ? *distance : 1.1 * r / std::sin(0.5 * fov_y * 3.14159265358979323846 / 180.0);
+  if (!(glm::length(b.center()) + d + 2 * r <= 1e38))
+    throw std::invalid_argument("the meshes are too large to frame: the camera would stand " + io::number_text(d) +
+                                " from their centre, where float (the shaders' numbers, up to 3.4e38) runs out; "
+                                "scale them down");
   OrbitOptions o;
   o.count = count;
   o.elevation = elevation;
