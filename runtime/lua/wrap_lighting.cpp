@@ -308,7 +308,11 @@ int w_tostring(lua_State* L) {
 int w_eq(lua_State* L) {
   auto* a = static_cast<Box<LightingParams>*>(test_type(L, 1, kLightingType));
   auto* b = static_cast<Box<LightingParams>*>(test_type(L, 2, kLightingType));
-  lua_pushboolean(L, a && b && a->ptr && b->ptr && a->ptr->key() == b->ptr->key());
+  // The same name and parameters, and the same definition: a name defined again with other GLSL
+  // is another model (both printed alike and compared equal, though they shaded apart).
+  const bool same = a && b && a->ptr && b->ptr && a->ptr->key() == b->ptr->key() &&
+                    (a->ptr->model == b->ptr->model || a->ptr->spec().glsl_text() == b->ptr->spec().glsl_text());
+  lua_pushboolean(L, same);
   return 1;
 }
 

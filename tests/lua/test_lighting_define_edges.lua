@@ -103,4 +103,14 @@ end)
 fails("(the first: normal (", sn.dataset.sample, { target = nanny, n = 1000, seed = 1 })
 -- A finite model's datasets are unchanged by the check.
 assert(scene:dataset { target = glow, samples = 300 }:counts() > 0)
+
+-- 6. A name defined again with other GLSL is another model; again with the same GLSL (a script
+--    re-run in live mode), the same one.
+local function constant(k)
+  return sn.lighting.define { name = "edges_constant", params = {},
+                              glsl = ("vec3 shade(Surface s, Params p) { return vec3(%.1f); }"):format(k),
+                              twin = twin_of(k) }
+end
+local first, second, again = constant(0.2), constant(0.7), constant(0.7)
+assert(first ~= second and second == again and first == first, "equality follows the definition")
 print("ok")
