@@ -314,6 +314,19 @@ int w_new(lua_State* L) {
   s.omega = o.number("omega", 1.0);
   s.alpha = o.number("alpha", 1.0);
   s.output_activation = nn::parse_activation(o.string("output_activation", "linear"), nn::Position::output, "output_activation");
+  // A parameter no activation of the network reads is a mistake (omega with tanh was ignored).
+  for (auto p : {nn::ActivationParam::slope, nn::ActivationParam::omega, nn::ActivationParam::alpha}) {
+    const char* name = nn::activation_param_name(p);
+    if (o.has(name) && nn::activation_def(s.activation).param != p && nn::activation_def(s.output_activation).param != p) {
+      std::vector<std::string> readers;
+      for (const auto& a : nn::activation_names(nn::Position::hidden)) {
+        nn::Activation act;
+        if (nn::find_activation(a, &act) && nn::activation_def(act).param == p && activation_name(act) == a) readers.push_back(a);
+      }
+      throw Error(o.where(name) + ": neither activation of this network (" + nn::activation_name(s.activation) + ", " +
+                  nn::activation_name(s.output_activation) + ") reads it; " + name + " is the parameter of " + join(readers));
+    }
+  }
   s.color = shading::parse_color_space(o.string("color", "rgb"));
   const nn::Init init = nn::parse_init(o.string("init", "xavier"));
   const long long seed = o.integer("seed", 1);
