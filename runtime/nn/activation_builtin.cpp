@@ -60,10 +60,13 @@ std::vector<ActivationDef> builtin_activations() {
                   "1.0 - exp(-a)", [](double z, double) { return std::max(z, 0.0) + std::log1p(std::exp(-std::fabs(z))); },
                   [](double z, double) { return sigmoid(z); }));
   // (z + sqrt(z^2 + 4)) / 2 (Barron 2021, b = 4), as 2 / (sqrt(z^2 + 4) - z) for z < 0 (no
-  // cancellation); f' = a^2 / (a^2 + 1).
+  // cancellation); f' = a^2 / (a^2 + 1). z^2 overflows float past 1.8e19 (f was inf, f' NaN):
+  // z is clamped to 1e18 inside the square root, and f = z beyond it.
   v.push_back(def(Builtin::squareplus, "squareplus",
-                  "vec4 s = sqrt(z * z + 4.0); return mix(2.0 / (s - z), 0.5 * (z + s), greaterThanEqual(z, vec4(0.0)));",
-                  "return 0.5 + 0.5 * z / sqrt(z * z + 4.0);", "a * a / (a * a + 1.0)",
+                  "vec4 c = clamp(z, -1e18, 1e18);\n  vec4 s = sqrt(c * c + 4.0);\n"
+                  "  return mix(2.0 / (s - z), mix(0.5 * (z + s), z, greaterThan(z, vec4(1e18))), greaterThanEqual(z, vec4(0.0)));",
+                  "vec4 c = clamp(z, -1e18, 1e18); return 0.5 + 0.5 * c / sqrt(c * c + 4.0);",
+                  "min(a, vec4(1e18)) * min(a, vec4(1e18)) / (min(a, vec4(1e18)) * min(a, vec4(1e18)) + 1.0)",
                   [](double z, double) { return 0.5 * (z + std::sqrt(z * z + 4.0)); },
                   [](double z, double) { return 0.5 + 0.5 * z / std::sqrt(z * z + 4.0); }));
   // z for z > 0, alpha (e^z - 1) below (Clevert et al. 2016); f' = a + alpha below 0.

@@ -227,9 +227,10 @@ SN_INLINE void act_both(const V z, float p, V& a, V& g) {
     a = select(z > 0.0f, z, splat<V>(0.0f)) + vlog1p_unit(e);
     g = select(z > 0.0f, splat<V>(1.0f), e) / (1.0f + e);  // sigmoid(z)
   } else if constexpr (B == Builtin::squareplus) {
-    const V s = vsqrt<sqrt_isa<V>>(z * z + 4.0f);
-    a = select(z >= 0.0f, 0.5f * (z + s), 2.0f / (s - z));
-    g = 0.5f + 0.5f * z / s;
+    // z^2 overflows past 1.8e19: clamped to 1e18 inside the root, f = z beyond (as the GLSL).
+    const V c = clamp_symmetric(z, 1e18f), s = vsqrt<sqrt_isa<V>>(c * c + 4.0f);
+    a = select(z >= 0.0f, select(z > 1e18f, z, 0.5f * (z + s)), 2.0f / (s - z));
+    g = 0.5f + 0.5f * c / s;
   } else if constexpr (B == Builtin::elu) {
     const V e = vexp(select(z > 0.0f, splat<V>(0.0f), z));
     a = select(z > 0.0f, z, p * (e - 1.0f));
@@ -276,7 +277,10 @@ SN_INLINE V act_grad_a(const V& a, float p) {
   if constexpr (B == Builtin::sigmoid) return a * (1.0f - a);
   if constexpr (B == Builtin::relu) return select(a > 0.0f, splat<V>(1.0f), splat<V>(0.0f));
   if constexpr (B == Builtin::leaky_relu) return select(a > 0.0f, splat<V>(1.0f), splat<V>(p));
-  if constexpr (B == Builtin::squareplus) return a * a / (a * a + 1.0f);
+  if constexpr (B == Builtin::squareplus) {
+    const V c = clamp_symmetric(a, 1e18f);  // a >= 0; a^2 overflowed to inf / inf
+    return c * c / (c * c + 1.0f);
+  }
   if constexpr (B == Builtin::elu) return select(a > 0.0f, splat<V>(1.0f), a + p);
   if constexpr (B == Builtin::exponential) return a;
   return splat<V>(1.0f);

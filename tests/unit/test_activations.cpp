@@ -83,7 +83,7 @@ TEST(ActivationSimd, MatchesTheDoubleTwinsOnAFineGrid) {
   const std::string saved = cpu_kernel_name();
   std::vector<float> z;
   for (int i = -200000; i <= 200000; ++i) z.push_back(float(i) * 2.5e-4f);  // [-50, 50]
-  for (float v : {-1e4f, -300.f, -87.f, 80.f, 88.f, 300.f, 1e4f}) z.push_back(v);
+  for (float v : {-1e30f, -1e20f, -1e4f, -300.f, -87.f, 80.f, 88.f, 300.f, 1e4f, 1e19f, 1e20f, 1e30f}) z.push_back(v);
   std::vector<float> f(z.size()), df(z.size());
   for (const auto& k : cpu_kernels_available()) {
     use_cpu_kernel(k);
