@@ -363,6 +363,10 @@ shading::ColorSpace check_space(lua_State* L, int idx) {
 
 glm::dvec3 check_vec3(lua_State* L, int idx, const char* what) {
   auto v = check_numbers(L, idx, what, 3);
+  for (int c = 0; c < 3; ++c)  // HSV of a NaN red came out {0, 0, nan}, an infinite one decoded as is
+    if (!std::isfinite(v[c]))
+      throw Error(std::string(what) + ": component " + std::to_string(c + 1) + " is " + io::number_text(v[c]) +
+                  "; colours must be finite");
   return {v[0], v[1], v[2]};
 }
 
