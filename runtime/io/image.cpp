@@ -95,11 +95,16 @@ std::vector<unsigned char> encode_image(const Image& img, const std::string& nam
   }
   if (is_float) return image_codec().encode(img, nullptr, name);
   std::vector<unsigned char> bytes(img.pixels.size());
+  std::size_t nans = 0;
   for (size_t i = 0; i < bytes.size(); ++i) {
     float v = img.pixels[i];
+    nans += std::isnan(v);
     v = std::isnan(v) ? 0.f : std::clamp(v, 0.f, 1.f);  // +inf is as bright as it gets
     bytes[i] = (unsigned char)(v * 255.f + 0.5f);
   }
+  if (nans)  // 8 bits hold no NaN: stored as 0, said aloud
+    std::fprintf(stderr, "warning: %s: %zu NaN values stored as 0 (an 8-bit %s cannot hold NaN; .exr can)\n",
+                 name.c_str(), nans, ext.c_str() + 1);
   return image_codec().encode(img, &bytes, name);
 }
 
