@@ -7,6 +7,7 @@
 
 #include "lua/binding.h"
 #include "lua/module.h"
+#include "scene/gltf.h"
 #include "scene/mesh.h"
 #include "scene/procedural.h"
 

@@ -13,6 +13,7 @@
 #include "lua/module.h"
 #include "scene/gather.h"
 #include "scene/gbuffer.h"
+#include "scene/gltf.h"
 #include "scene/scene.h"
 #include "scene/transform.h"
 #include "shading/render_truth.h"

@@ -1,6 +1,7 @@
 // A triangle mesh on the CPU: what a glTF file or a procedural shape becomes before it is
 // drawn. One vertex list (position, normal, uv) and one uint32 index list, all primitives of a
-// file merged and already placed in world space by the file's node transforms.
+// file merged and already placed in world space by the file's node transforms. Files are read
+// and written by scene/gltf.h.
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -49,26 +50,6 @@ struct Mesh {
   // draw resets it so the next draw uploads again.
   mutable std::shared_ptr<GpuMesh> gpu;
 };
-
-// What a glTF scene may be: nodes nested at most this deep (the walk recurses; no real file
-// comes near), placed at most io::limits().node_placements times in all (a node under several
-// parents counts once per place), with at most mesh_vertices vertices and mesh_indices indices
-// after placement (io/limits.h; sn.limits{...} raises them).
-constexpr int kMaxNodeDepth = 256;
-
-// Loads a .gltf or .glb file (told apart by content, not extension): walks the default scene's
-// node tree, applies each node's transform (matrix or TRS) to positions and, through its
-// inverse transpose, to normals, and merges every triangle primitive (triangles, strips, fans;
-// uint8/16/32 or no indices). Throws "mesh file 'PATH': reason" for a missing, truncated or
-// malformed file, an accessor reaching outside its buffer, an index out of range, or a file
-// with no triangles. The base-colour texture is decoded when first read, and throws then if it
-// cannot be (scene/texture.h).
-Mesh load_mesh(const std::string& path);
-
-// Writes `m` as a binary glTF (.glb): positions (with min/max), normals, uvs when present,
-// uint32 indices and the base-colour texture as an embedded PNG. Written to a temporary file
-// and renamed, so a failure leaves nothing behind.
-void save_glb(const Mesh& m, const std::string& path);
 
 // Area-weighted vertex normals: each triangle adds its unnormalised face normal (length = twice
 // its area) to its three vertices. A vertex no triangle touches (or only degenerate ones) gets

@@ -9,6 +9,13 @@
 
 namespace sn::scene {
 
+bool is_finite(const glm::dmat4& m) {
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      if (!std::isfinite(m[c][r])) return false;
+  return true;
+}
+
 void check_transform(const glm::dmat4& m, const std::string& what) {
   for (int c = 0; c < 4; ++c)
     for (int r = 0; r < 4; ++r)

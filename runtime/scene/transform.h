@@ -8,6 +8,9 @@
 
 namespace sn::scene {
 
+// Whether every entry of m is a finite number.
+bool is_finite(const glm::dmat4& m);
+
 // Throws naming `what` unless m is finite, affine (last row 0 0 0 1) and invertible.
 void check_transform(const glm::dmat4& m, const std::string& what);
 

@@ -3,6 +3,7 @@
 #include <exception>
 
 #include "fuzz_input.h"
+#include "scene/gltf.h"
 #include "scene/mesh.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {

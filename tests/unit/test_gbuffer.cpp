@@ -12,6 +12,7 @@
 #include "data/dataset_cache.h"
 #include "scene/gather.h"
 #include "scene/gbuffer.h"
+#include "scene/gltf.h"
 #include "scene/procedural.h"
 #include "scene/scene.h"
 #include "shading/color.h"

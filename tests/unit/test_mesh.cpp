@@ -20,6 +20,7 @@
 #include "io/temp_dir.h"
 #include "scene/camera.h"
 #include "scene/gpu_mesh.h"
+#include "scene/gltf.h"
 #include "scene/mesh.h"
 #include "scene/procedural.h"
 

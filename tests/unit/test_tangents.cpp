@@ -11,6 +11,7 @@
 #include "gl/context.h"
 #include "scene/camera.h"
 #include "scene/gbuffer.h"
+#include "scene/gltf.h"
 #include "scene/mesh.h"
 #include "scene/procedural.h"
 #include "scene/tangents.h"

@@ -1,0 +1,812 @@
+#include "scene/gltf.h"
+
+// Debian's libtinygltf.so carries the implementation (built with its default options), so the
+// header is only declarations here: no TINYGLTF_IMPLEMENTATION, no option macros that would
+// change the classes' layout.
+#include <nlohmann/json.hpp>
+#include <tiny_gltf.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "io/atomic_write.h"
+#include "io/limits.h"
+#include "io/read_file.h"
+#include "io/text.h"
+#include "scene/tangents.h"
+#include "scene/transform.h"
+
+namespace sn::scene {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Every load error names the file first.
+struct FileError : std::runtime_error {
+  FileError(const std::string& path, const std::string& reason)
+      : std::runtime_error("mesh file '" + path + "': " + reason) {}
+};
+
+// tinygltf reads an optional unsigned property that is negative or not an integer as absent
+// ("byteOffset": -1 became 0 and read normals as positions; "bufferView": -1 became an all-zero
+// accessor), and an optional index that is not an integer likewise. The raw JSON is at hand, so
+// it is read once more (SAX: nothing stored) and every property of these the loader uses must be
+// a non-negative integer where it appears. The same pass collects "extensionsRequired".
+class JsonCheck : public nlohmann::json::json_sax_t {
+ public:
+  bool null() override { return scalar("null"); }
+  bool boolean(bool v) override { return scalar(v ? "true" : "false"); }
+  bool number_integer(number_integer_t v) override { return v >= 0 ? fine() : scalar(std::to_string(v)); }
+  bool number_unsigned(number_unsigned_t) override { return fine(); }
+  bool number_float(number_float_t, const string_t& text) override { return scalar(text); }
+  bool string(string_t& v) override {
+    if (stack_.size() == 2 && !stack_[1].object && stack_[0].key == "extensionsRequired") required_.push_back(v);
+    return scalar("a string (\"" + v.substr(0, 40) + "\")");
+  }
+  bool binary(binary_t&) override { return scalar("binary"); }
+  bool start_object(std::size_t) override {
+    if (!scalar("an object")) return false;
+    stack_.push_back({true, ""});
+    return true;
+  }
+  bool key(string_t& k) override {
+    stack_.back().key = k;
+    return true;
+  }
+  bool end_object() override {
+    stack_.pop_back();
+    return true;
+  }
+  bool start_array(std::size_t) override {
+    if (!scalar("an array")) return false;
+    stack_.push_back({false, "", -1});
+    return true;
+  }
+  bool end_array() override {
+    stack_.pop_back();
+    return true;
+  }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override { return false; }
+
+  const std::string& problem() const { return problem_; }
+  // The top-level "extensionsRequired" strings read before the end or the first problem.
+  const std::vector<std::string>& required() const { return required_; }
+
+ private:
+  struct Frame {
+    bool object;
+    std::string key;  // objects: the current key
+    long index = -1;  // arrays: the current element
+  };
+
+  // A value is about to be read at the current position: advance an array's index.
+  void advance() {
+    if (!stack_.empty() && !stack_.back().object) ++stack_.back().index;
+  }
+  // A non-negative integer: right wherever one is required.
+  bool fine() {
+    advance();
+    return true;
+  }
+  // A value that is not a non-negative integer: fine unless the glTF property here must be one.
+  bool scalar(const std::string& what) {
+    advance();
+    if (!must_be_index()) return true;
+    problem_ = where() + " is " + what + "; glTF requires a non-negative integer there";
+    return false;
+  }
+
+  // The path's names, arrays' elements as "*".
+  std::vector<std::string> names() const {
+    std::vector<std::string> out;
+    for (const Frame& f : stack_) out.push_back(f.object ? f.key : "*");
+    return out;
+  }
+  std::string where() const {
+    std::string out;
+    for (const Frame& f : stack_)
+      out += f.object ? (out.empty() ? "" : ".") + f.key : "[" + std::to_string(f.index) + "]";
+    return out;
+  }
+  bool must_be_index() const {
+    const std::vector<std::string> p = names();
+    auto is = [&](std::initializer_list<const char*> pattern) {
+      if (p.size() != pattern.size()) return false;
+      std::size_t i = 0;
+      for (const char* q : pattern) {
+        if (std::strcmp(q, "?") != 0 && p[i] != q) return false;  // "?": any name
+        ++i;
+      }
+      return true;
+    };
+    auto last_in = [&](std::initializer_list<const char*> keys) {
+      for (const char* k : keys)
+        if (p.back() == k) return true;
+      return false;
+    };
+    if (p.empty()) return false;
+    if (is({"scene"})) return true;
+    if (is({"accessors", "*", "?"})) return last_in({"bufferView", "byteOffset", "count", "componentType"});
+    if (is({"accessors", "*", "sparse", "?"})) return last_in({"count"});
+    if (is({"accessors", "*", "sparse", "indices", "?"}) || is({"accessors", "*", "sparse", "values", "?"}))
+      return last_in({"bufferView", "byteOffset", "componentType"});
+    if (is({"bufferViews", "*", "?"})) return last_in({"buffer", "byteOffset", "byteLength", "byteStride"});
+    if (is({"buffers", "*", "?"})) return last_in({"byteLength"});
+    if (is({"meshes", "*", "primitives", "*", "?"})) return last_in({"indices", "material", "mode"});
+    if (is({"meshes", "*", "primitives", "*", "attributes", "?"})) return true;
+    if (is({"meshes", "*", "primitives", "*", "targets", "*", "?"})) return true;
+    if (is({"nodes", "*", "?"})) return last_in({"mesh", "camera", "skin"});
+    if (is({"nodes", "*", "children", "*"}) || is({"scenes", "*", "nodes", "*"})) return true;
+    if (is({"textures", "*", "?"})) return last_in({"source", "sampler"});
+    if (is({"images", "*", "?"})) return last_in({"bufferView"});
+    if (is({"materials", "*", "pbrMetallicRoughness", "baseColorTexture", "?"})) return last_in({"index", "texCoord"});
+    return false;
+  }
+
+  std::vector<Frame> stack_;
+  std::string problem_;
+  std::vector<std::string> required_;
+};
+
+// glTF 2.0 (section 3.12): a loader refuses a file that requires an extension it does not read.
+// Draco or meshopt compressed geometry loaded as nothing, or failed as "invalid bufferView".
+void check_required_extensions(const std::vector<std::string>& required, const std::string& path) {
+  for (const std::string& e : required)
+    if (e != "KHR_mesh_quantization")
+      throw FileError(path, "requires the glTF extension " + e +
+                            ", which shadenet does not read (of those a file may require, it reads KHR_mesh_quantization)");
+}
+
+// Throws naming the first property of `json` (the file's JSON text or a .glb's JSON chunk) that
+// glTF requires to be a non-negative integer and is not, or an extension it requires that the
+// loader lacks. JSON that does not parse throws nothing here.
+void check_json(const char* json, std::size_t size, const std::string& path) {
+  JsonCheck check;
+  nlohmann::json::sax_parse(json, json + size, &check, nlohmann::json::input_format_t::json, false);
+  check_required_extensions(check.required(), path);
+  if (!check.problem().empty()) throw FileError(path, check.problem());
+}
+
+// tinygltf's reasons can quote kilobytes of the file (a cut base64 buffer); keep the start.
+std::string short_reason(std::string s) {
+  constexpr size_t kMax = 240;
+  if (s.size() > kMax) s = s.substr(0, kMax) + "...";
+  while (!s.empty() && (s.back() == '\n' || s.back() == '\r' || s.back() == ' ')) s.pop_back();
+  return s;
+}
+
+// tinygltf hands every image's encoded bytes (data: URI, external file or .glb buffer view) to
+// this callback; we keep them as they are and decode only the texture the mesh uses, with
+// OpenImageIO, instead of letting stb decode every image up front.
+bool keep_image_bytes(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
+                      const unsigned char* bytes, int size, void*) {
+  image->image.assign(bytes, bytes + std::max(size, 0));
+  image->as_is = true;
+  return true;
+}
+
+// tinygltf reads a .gltf's external buffers and images through these: the checks the file itself
+// gets (regular files only, the size limit, io/read_file.h), and nothing that opens a path to see
+// whether it exists (opening a FIFO waits for a writer), nor expands it (tinygltf's own expands ~).
+bool file_exists(const std::string& path, void*) {
+  std::error_code ec;
+  return fs::exists(path, ec);
+}
+std::string path_as_is(const std::string& path, void*) { return path; }
+bool read_whole_file(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
+  try {
+    const std::string bytes = io::read_file(path, "file");
+    out->assign(bytes.begin(), bytes.end());
+    return true;
+  } catch (const std::exception& e) {
+    if (err) *err += std::string(e.what()) + "\n";
+    return false;
+  }
+}
+bool no_writes(std::string* err, const std::string& path, const std::vector<unsigned char>&, void*) {
+  if (err) *err += "loading '" + path + "' does not write files\n";
+  return false;
+}
+
+// Reads accessors with every check a malformed file could need: indices of views and
+// buffers, byte ranges inside their buffers, component types the attribute may use.
+class AccessorReader {
+ public:
+  // An accessor without a buffer view is all zeros (before sparse values); cap its size so a
+  // corrupt count cannot ask for gigabytes.
+  static constexpr size_t kMaxZeroFilled = size_t(1) << 26;
+
+  AccessorReader(const tinygltf::Model& m, const std::string& path) : m_(m), path_(path) {}
+
+  // `count` x `components` values as doubles; integer components of normalised accessors are
+  // mapped to [0,1] / [-1,1] as the glTF specification says.
+  std::vector<double> read(int index, int components, const std::string& what, bool integer_only = false) const {
+    const tinygltf::Accessor& a = accessor(index, what);
+    int n = tinygltf::GetNumComponentsInType(uint32_t(a.type));
+    if (n != components)
+      throw FileError(path_, what + " (accessor " + std::to_string(index) + ") has " + std::to_string(n) +
+                                 " components, expected " + std::to_string(components));
+    if (integer_only && !is_unsigned_integer(a.componentType))
+      throw FileError(path_, what + " (accessor " + std::to_string(index) +
+                                 ") must be unsigned byte, short or int, got component type " +
+                                 std::to_string(a.componentType));
+    int csize = tinygltf::GetComponentSizeInBytes(uint32_t(a.componentType));
+    if (csize <= 0)
+      throw FileError(path_, what + " (accessor " + std::to_string(index) + ") has unknown component type " +
+                                 std::to_string(a.componentType));
+    // Check every range before allocating: `count` comes from the file.
+    const unsigned char* base = nullptr;
+    size_t stride = 0;
+    if (a.bufferView < -1)  // tinygltf's -1 is "absent" (zeros); anything lower is a broken file
+      throw FileError(path_, what + " (accessor " + std::to_string(index) + ") has bufferView " +
+                                 std::to_string(a.bufferView) + "; it must be a view's index or absent");
+    if (a.bufferView >= 0) {
+      const tinygltf::BufferView& bv = view(a.bufferView, what);
+      size_t elem = size_t(csize) * size_t(components);
+      stride = bv.byteStride ? bv.byteStride : elem;
+      if (stride < elem)
+        throw FileError(path_, what + ": buffer view " + std::to_string(a.bufferView) + " has byteStride " +
+                                   std::to_string(stride) + ", smaller than one element (" + std::to_string(elem) +
+                                   " bytes)");
+      base = view_bytes(bv, a.bufferView, a.byteOffset, stride, elem, a.count, what);
+    } else if (a.count > kMaxZeroFilled) {
+      throw FileError(path_, what + " (accessor " + std::to_string(index) + ") has no buffer view and " +
+                                 std::to_string(a.count) + " elements (at most " + std::to_string(kMaxZeroFilled) +
+                                 " are zero-filled)");
+    }
+    std::vector<double> out(a.count * size_t(components), 0.0);
+    if (base) {
+      for (size_t i = 0; i < a.count; ++i)
+        for (int c = 0; c < components; ++c)
+          out[i * components + c] = component(base + i * stride + size_t(c) * csize, a.componentType, a.normalized);
+    }
+    if (a.sparse.isSparse) apply_sparse(a, components, csize, out, what);
+    return out;
+  }
+
+  const tinygltf::Accessor& accessor(int index, const std::string& what) const {
+    if (index < 0 || size_t(index) >= m_.accessors.size())
+      throw FileError(path_, what + " refers to accessor " + std::to_string(index) + ", but the file has " +
+                                 std::to_string(m_.accessors.size()));
+    return m_.accessors[size_t(index)];
+  }
+
+ private:
+  static bool is_unsigned_integer(int t) {
+    return t == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE || t == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ||
+           t == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+  }
+
+  const tinygltf::BufferView& view(int index, const std::string& what) const {
+    if (index < 0 || size_t(index) >= m_.bufferViews.size())
+      throw FileError(path_, what + " refers to buffer view " + std::to_string(index) + ", but the file has " +
+                                 std::to_string(m_.bufferViews.size()));
+    return m_.bufferViews[size_t(index)];
+  }
+
+  // Start of `count` elements of `elem` bytes every `stride` bytes at `offset` into view `bv`,
+  // after checking the whole range lies inside the view and the view inside its buffer.
+  const unsigned char* view_bytes(const tinygltf::BufferView& bv, int bv_index, size_t offset, size_t stride,
+                                  size_t elem, size_t count, const std::string& what) const {
+    if (bv.buffer < 0 || size_t(bv.buffer) >= m_.buffers.size())
+      throw FileError(path_, what + ": buffer view " + std::to_string(bv_index) + " refers to buffer " +
+                                 std::to_string(bv.buffer) + ", but the file has " + std::to_string(m_.buffers.size()));
+    const auto& data = m_.buffers[size_t(bv.buffer)].data;
+    if (bv.byteOffset > data.size() || bv.byteLength > data.size() - bv.byteOffset)
+      throw FileError(path_, what + ": buffer view " + std::to_string(bv_index) + " (bytes " +
+                                 std::to_string(bv.byteOffset) + ".." + std::to_string(bv.byteOffset + bv.byteLength) +
+                                 ") reaches past the end of buffer " + std::to_string(bv.buffer) + " (" +
+                                 std::to_string(data.size()) + " bytes)");
+    // count is untrusted: compare before multiplying so a huge count cannot wrap around.
+    // offset is untrusted too (a -1 in the file arrives as 2^64 - 1): no sum of it may wrap.
+    if (offset > bv.byteLength)
+      throw FileError(path_, what + ": byte offset " + std::to_string(offset) + " lies past the end of buffer view " +
+                                 std::to_string(bv_index) + " (" + std::to_string(bv.byteLength) + " bytes)");
+    if (count > 0 && (count - 1 > bv.byteLength / stride || elem > bv.byteLength - offset ||
+                      (count - 1) * stride > bv.byteLength - offset - elem))
+      throw FileError(path_, what + ": " + std::to_string(count) + " elements at byte offset " +
+                                 std::to_string(offset) + " reach past the end of buffer view " +
+                                 std::to_string(bv_index) + " (" + std::to_string(bv.byteLength) + " bytes)");
+    return data.data() + bv.byteOffset + offset;
+  }
+
+  static double component(const unsigned char* p, int type, bool normalized) {
+    switch (type) {
+      case TINYGLTF_COMPONENT_TYPE_FLOAT: { float v; std::memcpy(&v, p, 4); return v; }
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return normalized ? p[0] / 255.0 : p[0];
+      case TINYGLTF_COMPONENT_TYPE_BYTE: {
+        double v = double(int8_t(p[0]));
+        return normalized ? std::max(v / 127.0, -1.0) : v;
+      }
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+        uint16_t v; std::memcpy(&v, p, 2);
+        return normalized ? v / 65535.0 : v;
+      }
+      case TINYGLTF_COMPONENT_TYPE_SHORT: {
+        int16_t v; std::memcpy(&v, p, 2);
+        return normalized ? std::max(v / 32767.0, -1.0) : v;
+      }
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
+        uint32_t v; std::memcpy(&v, p, 4);
+        return normalized ? v / 4294967295.0 : v;
+      }
+      default: return std::nan("");
+    }
+  }
+
+  void apply_sparse(const tinygltf::Accessor& a, int components, int csize, std::vector<double>& out,
+                    const std::string& what) const {
+    const auto& s = a.sparse;
+    std::string w = what + " (sparse)";
+    if (s.count < 0 || size_t(s.count) > a.count)
+      throw FileError(path_, w + ": " + std::to_string(s.count) + " sparse values for " + std::to_string(a.count) +
+                                 " elements");
+    int isize = tinygltf::GetComponentSizeInBytes(uint32_t(s.indices.componentType));
+    if (!is_unsigned_integer(s.indices.componentType))
+      throw FileError(path_, w + ": sparse indices must be unsigned integers");
+    if (s.indices.byteOffset < 0 || s.values.byteOffset < 0)
+      throw FileError(path_, w + ": a negative byteOffset");
+    const auto& iv = view(s.indices.bufferView, w);
+    const auto& vv = view(s.values.bufferView, w);
+    size_t elem = size_t(csize) * components;
+    const unsigned char* ip = view_bytes(iv, s.indices.bufferView, size_t(s.indices.byteOffset),
+                                         size_t(isize), size_t(isize), size_t(s.count), w);
+    const unsigned char* vp = view_bytes(vv, s.values.bufferView, size_t(s.values.byteOffset), elem,
+                                         elem, size_t(s.count), w);
+    for (int k = 0; k < s.count; ++k) {
+      double target = component(ip + size_t(k) * isize, s.indices.componentType, false);
+      if (!(target >= 0 && target < double(a.count)))
+        throw FileError(path_, w + ": sparse index " + std::to_string((long long)target) + " outside 0.." +
+                                   std::to_string(a.count - 1));
+      for (int c = 0; c < components; ++c)
+        out[size_t(target) * components + c] = component(vp + size_t(k) * elem + size_t(c) * csize, a.componentType,
+                                                         a.normalized);
+    }
+  }
+
+  const tinygltf::Model& m_;
+  const std::string& path_;
+};
+
+// The node's local transform; `why` gets what is wrong with it ("" when nothing is).
+glm::dmat4 node_transform(const tinygltf::Node& n, std::string& why) {
+  if (n.matrix.size() == 16) return glm::make_mat4(n.matrix.data());  // column-major, as in GLM
+  glm::dmat4 t(1.0), r(1.0), s(1.0);
+  if (n.translation.size() == 3) t[3] = glm::dvec4(n.translation[0], n.translation[1], n.translation[2], 1.0);
+  if (n.rotation.size() == 4) {
+    // glTF stores (x, y, z, w); glm::dquat's constructor takes w first. A unit quaternion, up to
+    // rounding; one of length 0 is no rotation at all (it was taken for the identity).
+    glm::dquat q(n.rotation[3], n.rotation[0], n.rotation[1], n.rotation[2]);
+    if (!(glm::length(q) > 1e-6)) why = "a rotation of length " + io::number_text(glm::length(q)) + ", not a unit quaternion";
+    else r = glm::mat4_cast(glm::normalize(q));
+  }
+  if (n.scale.size() == 3) s = glm::scale(glm::dmat4(1.0), glm::dvec3(n.scale[0], n.scale[1], n.scale[2]));
+  return t * r * s;
+}
+
+// Turns one primitive's index list (or 0..count-1) into triangles per its mode.
+std::vector<uint32_t> triangles_of(int mode, const std::vector<uint32_t>& in) {
+  std::vector<uint32_t> out;
+  if (mode == TINYGLTF_MODE_TRIANGLES || mode == -1) {
+    out.assign(in.begin(), in.begin() + (in.size() / 3) * 3);
+  } else if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+    for (size_t i = 2; i < in.size(); ++i) {
+      // every other triangle of a strip is wound the other way round
+      if (i % 2 == 0) out.insert(out.end(), {in[i - 2], in[i - 1], in[i]});
+      else out.insert(out.end(), {in[i - 1], in[i - 2], in[i]});
+    }
+  } else if (mode == TINYGLTF_MODE_TRIANGLE_FAN) {
+    for (size_t i = 2; i < in.size(); ++i) out.insert(out.end(), {in[0], in[i - 1], in[i]});
+  }
+  return out;
+}
+
+class GltfLoader {
+ public:
+  GltfLoader(const tinygltf::Model& m, const std::string& path, const std::string& warnings)
+      : m_(m), path_(path), warnings_(warnings), reader_(m, path) {}
+
+  Mesh load() {
+    mesh_.name = path_;
+    std::vector<int> roots;
+    int scene = m_.defaultScene >= 0 ? m_.defaultScene : (m_.scenes.empty() ? -1 : 0);
+    if (scene >= int(m_.scenes.size()))
+      throw FileError(path_, "default scene " + std::to_string(scene) + " does not exist (the file has " +
+                                 std::to_string(m_.scenes.size()) + ")");
+    if (scene >= 0) {
+      roots = m_.scenes[size_t(scene)].nodes;
+    } else {
+      // No scene: every node nobody lists as a child is a root.
+      std::set<int> children;
+      for (const auto& n : m_.nodes) children.insert(n.children.begin(), n.children.end());
+      for (int i = 0; i < int(m_.nodes.size()); ++i)
+        if (!children.count(i)) roots.push_back(i);
+      if (m_.nodes.empty())
+        for (int i = 0; i < int(m_.meshes.size()); ++i) add_mesh(i, glm::dmat4(1.0));
+    }
+    for (int r : roots) walk(r, glm::dmat4(1.0));
+
+    if (mesh_.indices.empty())
+      throw FileError(path_, "has no triangles (" + std::to_string(m_.meshes.size()) + " meshes, " +
+                                 std::to_string(primitives_seen_) + " primitives in the default scene" +
+                                 (placements_hidden_ ? ", " + std::to_string(placements_hidden_) +
+                                                           " mesh placements hidden by a node scaled to zero"
+                                                     : std::string()) +
+                                 "; points and lines are not drawn)");
+    mesh_.has_normals = true;
+    mesh_.has_uvs = primitives_with_uvs_ == primitives_used_;
+    if (!mesh_.has_uvs) std::fill(mesh_.uvs.begin(), mesh_.uvs.end(), glm::vec2(0));
+    // The file's tangents are used when every primitive has them (a degenerate one is replaced by
+    // the generated frame); otherwise all are generated alike when drawn (tangents.h).
+    if (primitives_with_tangents_ == primitives_used_) {
+      std::vector<glm::vec4> generated = uv_tangents(mesh_);
+      for (std::size_t i = 0; i < file_tangents_.size(); ++i)
+        if (file_tangents_[i].w == 0.0f) file_tangents_[i] = generated[i];
+      mesh_.tangents = std::move(file_tangents_);
+      mesh_.tangent_source = "file";
+    }
+    mesh_.bounds = compute_bounds(mesh_.positions);
+    if (texture_image_ >= 0) mesh_.base_color = texture(texture_image_);
+    return std::move(mesh_);
+  }
+
+ private:
+  void walk(int node, const glm::dmat4& parent, int depth = 1) {
+    if (node < 0 || size_t(node) >= m_.nodes.size())
+      throw FileError(path_, "refers to node " + std::to_string(node) + ", but the file has " +
+                                 std::to_string(m_.nodes.size()));
+    // Bounded before anything is added: a chain 30,000 nodes deep overflowed the stack, one node
+    // listed 200,000 times grew the mesh to 23 GB.
+    if (depth > kMaxNodeDepth)
+      throw FileError(path_, "nests nodes more than " + std::to_string(kMaxNodeDepth) + " deep (the limit, scene/mesh.h)");
+    if (++node_visits_ > limits_.node_placements)
+      throw FileError(path_, "places nodes more than " + std::to_string(limits_.node_placements) +
+                                 " times (a node listed many times?)" + io::raise_hint("node_placements"));
+    if (!on_path_.insert(node).second)
+      throw FileError(path_, "node " + std::to_string(node) + " is its own ancestor (a cycle in the node tree)");
+    const tinygltf::Node& n = m_.nodes[size_t(node)];
+    std::string why;
+    glm::dmat4 world = parent * node_transform(n, why);
+    if (!why.empty()) throw FileError(path_, "node " + std::to_string(node) + " has " + why);
+    if (!is_finite(world)) throw FileError(path_, "node " + std::to_string(node) + " has a non-finite transform");
+    if (n.mesh >= 0) add_mesh(n.mesh, world);
+    for (int c : n.children) walk(c, world, depth + 1);
+    on_path_.erase(node);
+  }
+
+  void add_mesh(int index, const glm::dmat4& world) {
+    if (size_t(index) >= m_.meshes.size())
+      throw FileError(path_, "refers to mesh " + std::to_string(index) + ", but the file has " +
+                                 std::to_string(m_.meshes.size()));
+    glm::dmat3 linear(world);
+    double det = glm::determinant(linear);
+    // A node scaled to zero hides its mesh; nothing of it would cover a pixel.
+    if (!(std::abs(det) > 1e-300)) {
+      ++placements_hidden_;
+      return;
+    }
+    glm::dmat3 normal_matrix = glm::transpose(glm::inverse(linear));
+    const auto& prims = m_.meshes[size_t(index)].primitives;
+    for (size_t p = 0; p < prims.size(); ++p)
+      add_primitive(prims[p], "mesh " + std::to_string(index) + " primitive " + std::to_string(p), world,
+                    normal_matrix, det < 0);
+  }
+
+  void add_primitive(const tinygltf::Primitive& prim, const std::string& what, const glm::dmat4& world,
+                     const glm::dmat3& normal_matrix, bool mirrored) {
+    ++primitives_seen_;
+    int mode = prim.mode;
+    if (mode != -1 && mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
+        mode != TINYGLTF_MODE_TRIANGLE_FAN)
+      return;  // points and lines cover no area
+    auto pos_it = prim.attributes.find("POSITION");
+    if (pos_it == prim.attributes.end()) throw FileError(path_, what + " has no POSITION attribute");
+    std::vector<double> pos = reader_.read(pos_it->second, 3, what + " POSITION");
+    size_t count = pos.size() / 3;
+    if (count == 0) return;
+
+    std::vector<double> nrm, uv;
+    if (auto it = prim.attributes.find("NORMAL"); it != prim.attributes.end()) {
+      nrm = reader_.read(it->second, 3, what + " NORMAL");
+      if (nrm.size() != pos.size())
+        throw FileError(path_, what + ": NORMAL has " + std::to_string(nrm.size() / 3) + " elements, POSITION " +
+                                   std::to_string(count));
+    }
+    std::vector<double> tan;
+    if (auto it = prim.attributes.find("TANGENT"); it != prim.attributes.end()) {
+      tan = reader_.read(it->second, 4, what + " TANGENT");
+      if (tan.size() != count * 4)
+        throw FileError(path_, what + ": TANGENT has " + std::to_string(tan.size() / 4) + " elements, POSITION " +
+                                   std::to_string(count));
+    }
+    if (auto it = prim.attributes.find("TEXCOORD_0"); it != prim.attributes.end()) {
+      uv = reader_.read(it->second, 2, what + " TEXCOORD_0");
+      if (uv.size() != count * 2)
+        throw FileError(path_, what + ": TEXCOORD_0 has " + std::to_string(uv.size() / 2) + " elements, POSITION " +
+                                   std::to_string(count));
+    }
+
+    std::vector<uint32_t> local;
+    if (prim.indices >= 0) {
+      std::vector<double> idx = reader_.read(prim.indices, 1, what + " indices", true);
+      local.resize(idx.size());
+      for (size_t i = 0; i < idx.size(); ++i) {
+        if (idx[i] >= double(count))
+          throw FileError(path_, what + ": index " + std::to_string((unsigned long long)idx[i]) + " at position " +
+                                     std::to_string(i) + " is outside the " + std::to_string(count) + " vertices");
+        local[i] = uint32_t(idx[i]);
+      }
+    } else {
+      local.resize(count);
+      for (size_t i = 0; i < count; ++i) local[i] = uint32_t(i);
+    }
+    std::vector<uint32_t> tris = triangles_of(mode, local);
+    if (tris.empty()) return;
+    ++primitives_used_;
+    if (mirrored)
+      for (size_t t = 0; t < tris.size(); t += 3) std::swap(tris[t + 1], tris[t + 2]);
+
+    size_t base = mesh_.positions.size();
+    if (base + count > limits_.mesh_vertices)
+      throw FileError(path_, "has more than " + std::to_string(limits_.mesh_vertices) + " vertices (at " + what +
+                                 ", after its nodes' placements)" + io::raise_hint("mesh_vertices"));
+    if (mesh_.indices.size() + tris.size() > limits_.mesh_indices)
+      throw FileError(path_, "has more than " + std::to_string(limits_.mesh_indices) + " indices (at " + what +
+                                 ", after its nodes' placements)" + io::raise_hint("mesh_indices"));
+    if (base + count > size_t(UINT32_MAX)) throw FileError(path_, "has more than 2^32 vertices");
+    std::vector<glm::vec3> world_pos(count);
+    for (size_t i = 0; i < count; ++i) {
+      glm::dvec4 w = world * glm::dvec4(pos[3 * i], pos[3 * i + 1], pos[3 * i + 2], 1.0);
+      if (!std::isfinite(w.x) || !std::isfinite(w.y) || !std::isfinite(w.z))
+        throw FileError(path_, what + ": POSITION " + std::to_string(i) + " is not a finite number");
+      world_pos[i] = glm::vec3(w);
+    }
+    // Normals the file lacks, or gives as zero / non-finite, come from the geometry.
+    std::vector<glm::vec3> computed;
+    auto fallback = [&](size_t i) {
+      if (computed.empty()) computed = area_weighted_normals(world_pos, tris);
+      mesh_.normals_computed = true;
+      return computed[i];
+    };
+    for (size_t i = 0; i < count; ++i) {
+      glm::vec3 n;
+      if (!nrm.empty()) {
+        glm::dvec3 d = normal_matrix * glm::dvec3(nrm[3 * i], nrm[3 * i + 1], nrm[3 * i + 2]);
+        double len = glm::length(d);
+        n = (std::isfinite(len) && len > 1e-12) ? glm::vec3(d / len) : fallback(i);
+      } else {
+        n = fallback(i);
+      }
+      mesh_.positions.push_back(world_pos[i]);
+      mesh_.normals.push_back(n);
+      // Tangents move with the surface (the linear part, not the inverse transpose), are made
+      // perpendicular to the normal again, and a mirror flips their handedness.
+      glm::vec4 t(0.0f);  // w = 0: none from the file
+      if (!tan.empty()) {
+        glm::dvec3 d = glm::dmat3(world) * glm::dvec3(tan[4 * i], tan[4 * i + 1], tan[4 * i + 2]);
+        d -= glm::dvec3(n) * glm::dot(glm::dvec3(n), d);
+        double len = glm::length(d);
+        if (std::isfinite(len) && len > 1e-12)
+          t = glm::vec4(glm::vec3(d / len), float((tan[4 * i + 3] < 0 ? -1.0 : 1.0) * (mirrored ? -1.0 : 1.0)));
+      }
+      file_tangents_.push_back(t);
+      mesh_.uvs.push_back(uv.empty() ? glm::vec2(0) : glm::vec2(float(uv[2 * i]), float(uv[2 * i + 1])));
+    }
+    if (!uv.empty()) ++primitives_with_uvs_;
+    if (!tan.empty()) ++primitives_with_tangents_;
+    for (uint32_t i : tris) mesh_.indices.push_back(uint32_t(base) + i);
+
+    // The merged mesh carries one texture: the first base-colour texture met in the scene.
+    if (texture_image_ < 0 && prim.material >= 0 && size_t(prim.material) < m_.materials.size()) {
+      int tex = m_.materials[size_t(prim.material)].pbrMetallicRoughness.baseColorTexture.index;
+      if (tex >= 0 && size_t(tex) >= m_.textures.size())  // it was ignored: the mesh came out untextured
+        throw FileError(path_, "material " + std::to_string(prim.material) + "'s base-colour texture is texture " +
+                                   std::to_string(tex) + ", but the file has " + std::to_string(m_.textures.size()));
+      if (tex >= 0) {
+        int src = m_.textures[size_t(tex)].source;
+        if (src >= 0 && size_t(src) < m_.images.size()) texture_image_ = src;
+      }
+    }
+  }
+
+  // Its bytes, decoded when first read (scene/texture.h).
+  Texture texture(int index) {
+    const tinygltf::Image& img = m_.images[size_t(index)];
+    std::string what = "mesh file '" + path_ + "': base-colour texture (image " + std::to_string(index) +
+                       (img.uri.empty() || img.uri.rfind("data:", 0) == 0 ? std::string() : ", '" + img.uri + "'") + ")";
+    if (img.image.empty()) {
+      // tinygltf says why in a warning that names the image's file (it goes on without it).
+      std::string why;
+      std::istringstream lines(warnings_);
+      for (std::string line; std::getline(lines, line);)
+        if (!img.uri.empty() && line.find(img.uri) != std::string::npos) why += (why.empty() ? "" : "; ") + line;
+      return Texture::unreadable(what + " could not be read" + (why.empty() ? " (it has no data)" : ": " + short_reason(why)));
+    }
+    return Texture(img.image, what);
+  }
+
+  const tinygltf::Model& m_;
+  const std::string& path_;
+  const std::string& warnings_;  // tinygltf's, one per line
+  AccessorReader reader_;
+  Mesh mesh_;
+  std::set<int> on_path_;
+  int texture_image_ = -1;
+  int placements_hidden_ = 0;  // meshes placed by a node whose transform is singular (scaled to zero)
+  int primitives_seen_ = 0, primitives_used_ = 0, primitives_with_uvs_ = 0, primitives_with_tangents_ = 0;
+  std::vector<glm::vec4> file_tangents_;
+  std::size_t node_visits_ = 0;
+  const io::Limits limits_ = io::limits();
+};
+
+// PNG bytes of `img` (8 bits per channel, values clamped to [0,1]) for embedding in a .glb.
+std::vector<unsigned char> encode_png(const io::Image& img, const std::string& what) {
+  try {
+    return io::encode_image(img, "texture.png");
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(what + ": cannot encode the texture as PNG (" + e.what() + ")");
+  }
+}
+
+// Appends `bytes` to the buffer (4-byte aligned, as accessors need) and adds a view onto them.
+int add_view(tinygltf::Model& m, const void* bytes, size_t size, int target) {
+  auto& data = m.buffers[0].data;
+  data.resize((data.size() + 3) & ~size_t(3), 0);
+  tinygltf::BufferView v;
+  v.buffer = 0;
+  v.byteOffset = data.size();
+  v.byteLength = size;
+  v.target = target;
+  const auto* p = static_cast<const unsigned char*>(bytes);
+  data.insert(data.end(), p, p + size);
+  m.bufferViews.push_back(v);
+  return int(m.bufferViews.size()) - 1;
+}
+
+int add_accessor(tinygltf::Model& m, int view, int component_type, int type, size_t count) {
+  tinygltf::Accessor a;
+  a.bufferView = view;
+  a.byteOffset = 0;
+  a.componentType = component_type;
+  a.type = type;
+  a.count = count;
+  m.accessors.push_back(a);
+  return int(m.accessors.size()) - 1;
+}
+
+}  // namespace
+
+Mesh load_mesh(const std::string& path) {
+  // Regular files only, at most 1 GiB (io/read_file.h): /dev/zero used to be read until memory ran out.
+  const std::string text = io::read_file(path, "mesh file");
+  std::vector<unsigned char> bytes(text.begin(), text.end());
+  if (bytes.empty()) throw FileError(path, "is empty");
+  tinygltf::TinyGLTF gltf;
+  gltf.SetImageLoader(keep_image_bytes, nullptr);
+  gltf.SetFsCallbacks({file_exists, path_as_is, read_whole_file, no_writes, nullptr});
+  tinygltf::Model model;
+  std::string err, warn;
+  bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+  std::string base_dir = fs::path(path).parent_path().string();
+  bool ok;
+  if (binary) {
+    ok = gltf.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), unsigned(bytes.size()), base_dir);
+  } else {
+    // A .gltf is JSON; anything else (an image, random bytes) is not a mesh.
+    size_t i = 0;
+    while (i < bytes.size() && std::isspace(bytes[i])) ++i;
+    if (i == bytes.size() || bytes[i] != '{')
+      throw FileError(path, "is neither a glTF JSON file (.gltf, starts with '{') nor a binary glTF (.glb, starts "
+                            "with 'glTF')");
+    ok = gltf.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(bytes.data()),
+                                  unsigned(bytes.size()), base_dir);
+  }
+  // The JSON: a .glb's first chunk (header 12 bytes, chunk length and type 8), a .gltf whole. A
+  // file tinygltf refused is read for the extensions it requires only (a compressed file fails
+  // in tinygltf with a reason that does not name its extension).
+  auto json = [&]() -> std::pair<const char*, std::size_t> {
+    if (!binary) return {text.data(), text.size()};
+    uint32_t json_size = 0;
+    if (bytes.size() >= 20) std::memcpy(&json_size, bytes.data() + 12, 4);
+    if (bytes.size() < 20 || json_size > bytes.size() - 20) return {nullptr, 0};
+    return {reinterpret_cast<const char*>(bytes.data()) + 20, json_size};
+  };
+  const auto [json_text, json_size] = json();
+  if (!ok) {
+    if (json_text) {
+      JsonCheck scan;
+      nlohmann::json::sax_parse(json_text, json_text + json_size, &scan, nlohmann::json::input_format_t::json, false);
+      check_required_extensions(scan.required(), path);
+    }
+    throw FileError(path, std::string("is not a valid ") + (binary ? "binary glTF" : "glTF") + " file (" +
+                              (err.empty() ? "tinygltf gave no reason" : "tinygltf: " + short_reason(err)) + ")");
+  }
+  if (json_text) check_json(json_text, json_size, path);
+  Mesh mesh = GltfLoader(model, path, warn).load();
+  validate(mesh);
+  return mesh;
+}
+
+void save_glb(const Mesh& m, const std::string& path) {
+  validate(m);
+  if (m.indices.empty()) throw std::runtime_error("cannot save mesh '" + m.name + "' to '" + path + "': it has no triangles");
+  tinygltf::Model model;
+  model.asset.version = "2.0";
+  model.asset.generator = "shadenet";
+  model.buffers.resize(1);
+
+  tinygltf::Primitive prim;
+  prim.mode = TINYGLTF_MODE_TRIANGLES;
+  size_t n = m.positions.size();
+  int pv = add_view(model, m.positions.data(), n * sizeof(glm::vec3), TINYGLTF_TARGET_ARRAY_BUFFER);
+  int pa = add_accessor(model, pv, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, n);
+  Bounds b = compute_bounds(m.positions);  // the stored bounds may be stale after an edit
+  model.accessors[size_t(pa)].minValues = {b.min.x, b.min.y, b.min.z};
+  model.accessors[size_t(pa)].maxValues = {b.max.x, b.max.y, b.max.z};
+  prim.attributes["POSITION"] = pa;
+  if (m.has_normals) {
+    int nv = add_view(model, m.normals.data(), n * sizeof(glm::vec3), TINYGLTF_TARGET_ARRAY_BUFFER);
+    prim.attributes["NORMAL"] = add_accessor(model, nv, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, n);
+  }
+  if (!m.tangents.empty()) {
+    int tv = add_view(model, m.tangents.data(), n * sizeof(glm::vec4), TINYGLTF_TARGET_ARRAY_BUFFER);
+    prim.attributes["TANGENT"] = add_accessor(model, tv, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC4, n);
+  }
+  if (m.has_uvs) {
+    int uv = add_view(model, m.uvs.data(), n * sizeof(glm::vec2), TINYGLTF_TARGET_ARRAY_BUFFER);
+    prim.attributes["TEXCOORD_0"] = add_accessor(model, uv, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC2, n);
+  }
+  int iv = add_view(model, m.indices.data(), m.indices.size() * 4, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+  prim.indices =
+      add_accessor(model, iv, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR, m.indices.size());
+
+  if (m.base_color) {
+    std::vector<unsigned char> png = encode_png(*m.base_color, "cannot save mesh to '" + path + "'");
+    tinygltf::Image image;
+    image.mimeType = "image/png";
+    image.bufferView = add_view(model, png.data(), png.size(), 0);
+    model.images.push_back(image);
+    tinygltf::Texture tex;
+    tex.source = 0;
+    model.textures.push_back(tex);
+    tinygltf::Material mat;
+    mat.pbrMetallicRoughness.baseColorTexture.index = 0;
+    mat.pbrMetallicRoughness.metallicFactor = 0.0;
+    model.materials.push_back(mat);
+    prim.material = 0;
+  }
+  model.buffers[0].data.resize((model.buffers[0].data.size() + 3) & ~size_t(3), 0);
+
+  tinygltf::Mesh mesh;
+  mesh.primitives.push_back(prim);
+  model.meshes.push_back(mesh);
+  tinygltf::Node node;
+  node.mesh = 0;
+  model.nodes.push_back(node);
+  tinygltf::Scene scene;
+  scene.nodes = {0};
+  model.scenes.push_back(scene);
+  model.defaultScene = 0;
+
+  std::ostringstream glb;
+  tinygltf::TinyGLTF gltf;
+  if (!gltf.WriteGltfSceneToStream(&model, glb, false, true))
+    throw std::runtime_error("cannot save mesh to '" + path + "': tinygltf could not serialise it");
+  std::string bytes = glb.str();
+
+  io::write_file_atomic(path, bytes, "mesh");
+}
+
+}  // namespace sn::scene
