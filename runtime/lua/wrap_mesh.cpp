@@ -34,9 +34,7 @@ void push_vec3(lua_State* L, const glm::dvec3& v) {
 int w_load(lua_State* L) {
   std::string path = check_string(L, 1, "sn.mesh.load path");
   Mesh m = scene::load_mesh(path);
-  if (m.normals_computed)
-    fprintf(stderr, "note: mesh file '%s' has no normals (or some are zero); computed area-weighted vertex normals\n",
-            path.c_str());
+  for (const std::string& note : m.notes) fprintf(stderr, "note: mesh file '%s' %s\n", path.c_str(), note.c_str());
   push_mesh(L, std::move(m));
   return 1;
 }

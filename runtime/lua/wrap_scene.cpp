@@ -31,8 +31,8 @@ std::shared_ptr<scene::Mesh> mesh_at(lua_State* L, int idx, LuaScene& s) {
   if (lua_type(L, idx) == LUA_TSTRING) {
     std::string path = lua_tostring(L, idx);
     auto m = std::make_shared<scene::Mesh>(scene::load_mesh(path));
-    if (m->normals_computed) {
-      std::string note = "mesh file '" + path + "' has no normals (or some are zero); computed area-weighted vertex normals";
+    for (const std::string& n : m->notes) {
+      std::string note = "mesh file '" + path + "' " + n;
       fprintf(stderr, "note: %s\n", note.c_str());
       s.notes.push_back(note);
     }

@@ -459,6 +459,8 @@ class GltfLoader {
     }
     mesh_.bounds = compute_bounds(mesh_.positions);
     if (texture_image_ >= 0) mesh_.base_color = texture(texture_image_);
+    if (mesh_.normals_computed)
+      mesh_.notes.insert(mesh_.notes.begin(), "has no normals (or some are zero); computed area-weighted vertex normals");
     return std::move(mesh_);
   }
 
@@ -553,6 +555,10 @@ class GltfLoader {
       for (size_t i = 0; i < count; ++i) local[i] = uint32_t(i);
     }
     std::vector<uint32_t> tris = triangles_of(mode, local);
+    if ((mode == TINYGLTF_MODE_TRIANGLES || mode == -1) && local.size() % 3)
+      mesh_.notes.push_back("has " + what + " with " + std::to_string(local.size()) +
+                            " indices, not a multiple of 3: the last " + std::to_string(local.size() % 3) +
+                            " (no whole triangle) left out");
     if (tris.empty()) return;
     ++primitives_used_;
     if (mirrored)

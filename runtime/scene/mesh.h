@@ -40,6 +40,9 @@ struct Mesh {
   // The file had no normals, so they were computed (area-weighted vertex normals); callers
   // tell the user, since flat-shaded files come out smooth.
   bool normals_computed = false;
+  // What loading the file changed or left out, each a sentence the bindings print as
+  // "note: mesh file 'PATH' <note>" (computed normals, indices that make no whole triangle).
+  std::vector<std::string> notes;
   Texture base_color;  // the material's base-colour texture, as stored (sRGB); decoded on first read
   Bounds bounds;
 

@@ -543,6 +543,22 @@ TEST(Mesh, MalformedAccessorsIndicesAndNodesAreClearErrors) {
             std::string::npos)
       << e;
 
+  // Four indices in a triangle list: the whole triangle loads, the stray index is a note (it was
+  // dropped without a word).
+  {
+    std::vector<unsigned char> bytes = tri;
+    for (uint16_t i : {0, 1, 2, 1}) bytes.insert(bytes.end(), {static_cast<unsigned char>(i), 0});
+    p = raw_fixture(d / "stray.gltf", bytes,
+                    R"([{"buffer": 0, "byteOffset": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 8}])",
+                    R"([{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"},
+                        {"bufferView": 1, "componentType": 5123, "count": 4, "type": "SCALAR"}])",
+                    R"({"attributes": {"POSITION": 0}, "indices": 1})");
+    Mesh stray = load_mesh(p);
+    EXPECT_EQ(stray.triangle_count(), 1u);
+    ASSERT_EQ(stray.notes.size(), 2u);  // computed normals, then the stray index
+    EXPECT_EQ(stray.notes[1], "has mesh 0 primitive 0 with 4 indices, not a multiple of 3: the last 1 (no whole triangle) left out");
+  }
+
   // A rotation of length 0 (it was taken for no rotation at all).
   p = raw_fixture(d / "zero_quat.gltf", tri, view, acc, prim, R"([{"mesh": 0, "rotation": [0, 0, 0, 0]}])");
   e = error_of([&] { load_mesh(p); });
