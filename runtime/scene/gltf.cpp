@@ -472,7 +472,7 @@ class GltfLoader {
     // Bounded before anything is added: a chain 30,000 nodes deep overflowed the stack, one node
     // listed 200,000 times grew the mesh to 23 GB.
     if (depth > kMaxNodeDepth)
-      throw FileError(path_, "nests nodes more than " + std::to_string(kMaxNodeDepth) + " deep (the limit, scene/mesh.h)");
+      throw FileError(path_, "nests nodes more than " + std::to_string(kMaxNodeDepth) + " deep (the limit, scene/gltf.h)");
     if (++node_visits_ > limits_.node_placements)
       throw FileError(path_, "places nodes more than " + std::to_string(limits_.node_placements) +
                                  " times (a node listed many times?)" + io::raise_hint("node_placements"));

@@ -26,7 +26,7 @@ local function repeated(times)
 end
 
 local cases = {
-  { "deep.gltf", chain(30000), "nests nodes more than 256 deep (the limit, scene/mesh.h)" },
+  { "deep.gltf", chain(30000), "nests nodes more than 256 deep (the limit, scene/gltf.h)" },
   { "repeated.gltf", repeated(200000),
     "places nodes more than 65536 times (a node listed many times?) (sn.limits{ node_placements = ... } raises it)" },
 }
