@@ -16,6 +16,15 @@ function Buffer.ffi(buf, ctype)
   return ffi.gc(ffi.cast(ctype, buf:pointer()), function() return buf end)
 end
 
+-- os.exit(code) closes the Lua state first, as the end of a script does, so finalizers run and
+-- sn.fs.tempdir folders go (an interrupted sweep's os.exit(130) left them in $TMPDIR);
+-- os.exit(code, false) exits at once.
+local exit = os.exit
+os.exit = function(code, close)
+  if close == nil then close = true end
+  return exit(code, close)
+end
+
 require "shadenet.live"  -- sn.keep, sn.live.*, sn.record
 require "shadenet.scene"  -- scene:render
 require "shadenet.vec3"  -- sn.vec3 (for lighting twins)
