@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -121,6 +122,24 @@ static void same_size(const Image& a, const Image& b) {
     throw std::invalid_argument("images differ in size: " + std::to_string(a.width) + "x" + std::to_string(a.height) +
                                 "x" + std::to_string(a.channels) + " vs " + std::to_string(b.width) + "x" +
                                 std::to_string(b.height) + "x" + std::to_string(b.channels));
+}
+
+void check_finite(const Image& img, int channels, const std::string& what) {
+  // A pass over every float in integer bit tests (which vectorize) first; only when it finds one
+  // does the scan by channel name it (or find it in a channel not compared).
+  uint32_t bad = 0;
+  for (const float f : img.pixels) {
+    uint32_t u;
+    std::memcpy(&u, &f, sizeof u);
+    bad |= uint32_t((u & 0x7f800000u) == 0x7f800000u);
+  }
+  if (!bad) return;
+  for (int c = 0; c < channels; ++c)
+    for (int i = 0; i < img.width * img.height; ++i)
+      if (!std::isfinite(img.pixels[std::size_t(i) * img.channels + c]))
+        throw std::invalid_argument(what + ": pixel (" + std::to_string(i % img.width + 1) + ", " +
+                                    std::to_string(i / img.width + 1) + ") channel " + std::to_string(c + 1) +
+                                    " is not a finite number");
 }
 
 Image difference(const Image& a, const Image& b) {

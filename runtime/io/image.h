@@ -33,10 +33,13 @@ void save_image(const Image& img, const std::string& path);
 // The file save_image writes, in memory: the format from `name`'s extension (8-bit ones clamped).
 std::vector<unsigned char> encode_image(const Image& img, const std::string& name);
 
+// Throws "WHAT: pixel (x, y) channel c is not a finite number" for the first NaN or infinity in
+// channels [0, channels), scanning by channel.
+void check_finite(const Image& img, int channels, const std::string& what);
 // |a - b| per channel (sizes must match).
 Image difference(const Image& a, const Image& b);
 // Mean squared error over channels [0, channels) (all when -1) of the pixels where `mask` (if
-// given, channel `mask_channel`) is > 0.5.
+// given, channel `mask_channel`) is > 0.5. NaN where a compared pixel is not finite.
 double mse(const Image& a, const Image& b, int channels = -1, const Image* mask = nullptr, int mask_channel = 3);
 
 }  // namespace sn::io

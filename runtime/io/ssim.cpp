@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -130,25 +129,6 @@ __attribute__((target("avx512f,avx2,fma"))) double unit_sum_avx512(const Unit& u
   return unit_sum<d8>(u, D, b, h);
 }
 
-// Non-finite pixels are errors. A pass over every float in integer bit tests (which vectorize)
-// first; only when it finds one does the scan by channel name it (or find it in a channel not
-// compared).
-void check_finite(const Image& img, int channels) {
-  uint32_t bad = 0;
-  for (const float f : img.pixels) {
-    uint32_t u;
-    std::memcpy(&u, &f, sizeof u);
-    bad |= uint32_t((u & 0x7f800000u) == 0x7f800000u);
-  }
-  if (!bad) return;
-  for (int c = 0; c < channels; ++c)
-    for (int i = 0; i < img.width * img.height; ++i)
-      if (!std::isfinite(img.pixels[std::size_t(i) * img.channels + c]))
-        throw std::invalid_argument("ssim: pixel (" + std::to_string(i % img.width + 1) + ", " +
-                                    std::to_string(i / img.width + 1) + ") channel " + std::to_string(c + 1) +
-                                    " is not a finite number");
-}
-
 void check_same_size(int w, int h, int channels, const Image& b) {
   if (b.width != w || b.height != h || b.channels != channels)
     throw std::invalid_argument("ssim: images differ in size: " + std::to_string(w) + "x" + std::to_string(h) + "x" +
@@ -212,7 +192,7 @@ SsimReference ssim_reference(const Image& a, int channels, const Image* mask, in
         ++count;
       }
   if (box.x1 < 0) throw std::invalid_argument("ssim: the mask leaves no pixel at least 5 pixels inside the border");
-  check_finite(a, channels);
+  check_finite(a, channels, "ssim");
   D->box = box, D->count = count;
 
   // The box in bands of rows, each filtered on its own (its horizontal pass also covers the
@@ -248,7 +228,7 @@ SsimReference ssim_reference(const Image& a, int channels, const Image* mask, in
 double ssim(const SsimReference& reference, const Image& b) {
   const Data& D = reference.data();
   check_same_size(D.w, D.h, D.image_channels, b);
-  check_finite(b, D.channels);
+  check_finite(b, D.channels, "ssim");
   std::vector<double> sums(D.units.size());
   parallel_for(int(D.units.size()), default_threads(), [&](int i) {
     const Unit& u = D.units[std::size_t(i)];

@@ -1,4 +1,6 @@
 // sn.image.*: float images in memory, PNG/EXR files through OpenImageIO, differences and MSE.
+#include <cmath>
+
 #include "io/image.h"
 #include "io/ssim.h"
 #include "lua/binding.h"
@@ -94,7 +96,14 @@ Compared compared(lua_State* L, const char* what) {
 // sn.image.mse(a, b [, options]) -> mean squared error
 int w_mse(lua_State* L) {
   Compared c = compared(L, "sn.image.mse");
-  lua_pushnumber(L, io::mse(check<Image>(L, 1, kType), check<Image>(L, 2, kType), c.channels, c.mask, c.mask_channel));
+  const Image &a = check<Image>(L, 1, kType), &b = check<Image>(L, 2, kType);
+  const double e = io::mse(a, b, c.channels, c.mask, c.mask_channel);
+  if (std::isnan(e)) {  // an error naming the pixel, as sn.image.ssim's, not a NaN to carry on with
+    const int channels = c.channels < 1 || c.channels > a.channels ? a.channels : c.channels;
+    io::check_finite(a, channels, "sn.image.mse: image 1");
+    io::check_finite(b, channels, "sn.image.mse: image 2");
+  }
+  lua_pushnumber(L, e);
   return 1;
 }
 

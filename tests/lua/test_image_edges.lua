@@ -24,6 +24,18 @@ for _, case in ipairs { { { mask = a, mask_channel = 0 }, "mask channel 0 outsid
   local ok, err = pcall(sn.image.mse, a, a, case[1])
   assert(not ok and err:find(case[2], 1, true), tostring(err))
 end
+-- A NaN compared is an error naming it, in sn.image.mse as in sn.image.ssim, not a NaN to carry
+-- on with; outside the channels or the mask compared it does not count.
+local g = sn.image.new { width = 16, height = 16, channels = 4, fill = 0.5 }
+local n = sn.image.new { width = 16, height = 16, channels = 4, fill = 0.5 }
+n:set(3, 2, { 0.5, 0 / 0, 0.5, 1 })
+for f, text in pairs { [sn.image.mse] = "sn.image.mse: image 2", [sn.image.ssim] = "ssim" } do
+  local ok, err = pcall(f, g, n)
+  assert(not ok and err:find(text .. ": pixel (3, 2) channel 2 is not a finite number", 1, true), tostring(err))
+end
+assert(sn.image.mse(g, n, { channels = 1 }) == 0, "channel 2 not compared")
+n:set(3, 2, { 0.5, 0 / 0, 0.5, 0 })
+assert(sn.image.mse(g, n, { mask = n }) == 0, "the pixel outside the mask")
 local dir = C.tmpdir("image_edges")
 local img = sn.image.new { width = 2, height = 1 }
 img:set(1, 1, { 1 / 0, 0 / 0, -1 / 0, 1 })
