@@ -172,6 +172,13 @@ long long check_integer(lua_State* L, int idx, const char* what) {
   return (long long)v;
 }
 
+uint64_t check_seed(double v, const std::string& what, double max) {
+  if (!(v >= 0 && v <= max && v == std::floor(v)))
+    throw Error(what + " must be a whole number in 0.." + (max == kSeedMax ? "2^53" : std::to_string(uint64_t(max))) +
+                ", got " + (v == std::floor(v) && std::abs(v) < 0x1p63 ? std::to_string((long long)v) : io::number_text(v)));
+  return uint64_t(v);
+}
+
 int check_int32(lua_State* L, int idx, const char* what) {
   long long v = check_integer(L, idx, what);
   // Symmetric, so that callers may add or subtract 1 (1-based indices) without overflow.
@@ -198,6 +205,35 @@ void push_strings(lua_State* L, const std::vector<std::string>& items) {
   }
 }
 
+int check_list(lua_State* L, int idx, const std::string& what, const std::string& hint) {
+  idx = absindex(L, idx);
+  if (!lua_istable(L, idx)) throw Error(what + ": a list expected, got " + type_name_at(L, idx));
+  const int n = int(lua_objlen(L, idx));  // a border: t[n] is not nil, t[n + 1] is
+  int count = 0;
+  lua_pushnil(L);
+  while (lua_next(L, idx)) {
+    const double k = lua_type(L, -2) == LUA_TNUMBER ? lua_tonumber(L, -2) : 0;
+    if (k >= 1 && k <= n && k == std::floor(k)) ++count;
+    else {
+      const int t = lua_type(L, -2);
+      std::string key = t == LUA_TSTRING ? "'" : "[";
+      key.append(t == LUA_TSTRING ? lua_tostring(L, -2) : t == LUA_TNUMBER ? io::number_text(k) : luaL_typename(L, -2));
+      key.append(t == LUA_TSTRING ? "'" : "]");
+      if (t == LUA_TNUMBER && k > n && k == std::floor(k)) key += " after a nil at [" + std::to_string(n + 1) + "]";
+      lua_pop(L, 2);
+      throw Error(what + ": a list expected, got a table with the key " + key + (hint.empty() ? "" : " (" + hint + ")"));
+    }
+    lua_pop(L, 1);
+  }
+  for (int i = 1; count < n && i <= n; ++i) {  // a nil inside 1..n: the list has a hole
+    lua_rawgeti(L, idx, i);
+    const bool hole = lua_isnil(L, -1);
+    lua_pop(L, 1);
+    if (hole) throw Error(what + ": a list expected, got a nil at [" + std::to_string(i) + "] before [" + std::to_string(n) + "]");
+  }
+  return n;
+}
+
 std::vector<double> check_numbers(lua_State* L, int idx, const char* what, int n) {
   idx = absindex(L, idx);
   if (lua_type(L, idx) == LUA_TNUMBER && n <= 1) return {lua_tonumber(L, idx)};
@@ -205,7 +241,7 @@ std::vector<double> check_numbers(lua_State* L, int idx, const char* what, int n
     throw Error(std::string(what) + ": " +
                 (n == 1 ? "a number" : n <= 0 ? "a number or a table of numbers" : "a table of " + std::to_string(n) + " numbers") +
                 " expected, got " + type_name_at(L, idx));
-  int len = int(lua_objlen(L, idx));
+  int len = check_list(L, idx, what);
   if (n >= 0 && len != n)
     throw Error(std::string(what) + ": " + std::to_string(n) + " numbers expected, got " + std::to_string(len));
   std::vector<double> v(len);
@@ -296,6 +332,12 @@ int Options::int32(const char* key, int def) const {
 long long Options::integer(const char* key, long long def) const {
   int i = push(key);
   long long v = lua_isnil(L_, i) ? def : check_integer(L_, i, where(key).c_str());
+  lua_pop(L_, 1);
+  return v;
+}
+uint64_t Options::seed(const char* key, uint64_t def, double max) const {
+  const int i = push(key);
+  const uint64_t v = lua_isnil(L_, i) ? def : check_seed(check_number(L_, i, where(key).c_str()), where(key), max);
   lua_pop(L_, 1);
   return v;
 }

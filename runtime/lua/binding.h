@@ -132,6 +132,14 @@ double check_number(lua_State* L, int idx, const char* what);
 long long check_integer(lua_State* L, int idx, const char* what);  // within +-2^53
 int check_int32(lua_State* L, int idx, const char* what);           // within +-(2^31 - 1)
 std::string check_string(lua_State* L, int idx, const char* what);
+// A random seed: a whole number in 0..max (2^53, where Lua numbers stop being whole; the
+// shuffle's seeds are 32-bit). One rule for every seed of the API, none wrapped.
+constexpr double kSeedMax = 9007199254740992.0, kSeed32Max = 4294967295.0;
+uint64_t check_seed(double v, const std::string& what, double max = kSeedMax);
+// The length n of the Lua list ({a, b, c}) at idx, a table: a key outside 1..n (a named option
+// among the elements, an element after a nil) is an error naming it, "WHAT: a list expected
+// ...", with `hint` in brackets after it. lua_objlen alone would drop such elements unseen.
+int check_list(lua_State* L, int idx, const std::string& what, const std::string& hint = "");
 // A Lua array of numbers ({1,2,3}); `n` = required length or -1.
 std::vector<double> check_numbers(lua_State* L, int idx, const char* what, int n = -1);
 // Picks `value` from `valid`; throws "unknown WHAT 'value' (valid: a, b, c)".
@@ -157,6 +165,7 @@ class Options {
   std::string string(const char* key) const;
   int choice(const char* key, std::initializer_list<const char*> valid, int def) const;
   std::vector<double> numbers(const char* key, int n = -1) const;
+  uint64_t seed(const char* key, uint64_t def, double max = kSeedMax) const;  // check_seed
   // Pushes the raw value (nil when absent) and returns its stack index (absolute).
   int push(const char* key) const;
   lua_State* state() const { return L_; }

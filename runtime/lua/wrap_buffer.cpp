@@ -65,12 +65,12 @@ void push_components(lua_State* L, const gl::ElemInfo& info, const uint32_t* in)
 }
 
 // Reads a Lua array of elements into packed components.
-std::vector<uint32_t> table_to_components(lua_State* L, int idx, const gl::ElemInfo& info) {
-  int n = int(lua_objlen(L, idx));
+std::vector<uint32_t> table_to_components(lua_State* L, int idx, const gl::ElemInfo& info, const char* what) {
+  const int n = check_list(L, idx, what);
   std::vector<uint32_t> data(size_t(n) * info.components);
   for (int i = 1; i <= n; ++i) {
     lua_rawgeti(L, idx, i);
-    to_components(L, -1, info, &data[size_t(i - 1) * info.components], "element " + std::to_string(i));
+    to_components(L, -1, info, &data[size_t(i - 1) * info.components], std::string(what) + " element " + std::to_string(i));
     lua_pop(L, 1);
   }
   return data;
@@ -92,7 +92,7 @@ int w_new(lua_State* L) {
   if (o.has("data")) {
     int i = o.push("data");
     if (!lua_istable(L, i)) throw Error("sn.buffer option 'data': table expected, got " + type_name_at(L, i));
-    data = table_to_components(L, i, info);
+    data = table_to_components(L, i, info, "sn.buffer option 'data'");
     lua_pop(L, 1);
   }
   long long n = o.integer("size", (long long)(data.size() / info.components));
@@ -146,7 +146,7 @@ int w_upload(lua_State* L) {
   if (!lua_istable(L, 2)) throw Error("buffer:upload: table expected, got " + type_name_at(L, 2));
   size_t first = lua_isnoneornil(L, 3) ? 0 : check_index(L, 3, b);
   const auto& info = gl::elem_info(b.type());
-  auto data = table_to_components(L, 2, info);
+  auto data = table_to_components(L, 2, info, "buffer:upload");
   if (first * info.components + data.size() > b.components())
     throw Error("buffer:upload: " + std::to_string(data.size() / info.components) + " elements from index " +
                 std::to_string(first + 1) + " overrun the buffer's " + std::to_string(b.count()));

@@ -31,7 +31,7 @@ std::vector<float> read_rows(lua_State* L, int idx, int* width, const char* key)
     if (out.size() % std::size_t(*width))
       throw Error(what + ": " + std::to_string(out.size()) + " floats are not whole rows of " + std::to_string(*width));
   } else if (lua_istable(L, idx)) {
-    int rows = int(lua_objlen(L, idx));
+    const int rows = check_list(L, idx, what);
     for (int r = 1; r <= rows; ++r) {
       lua_rawgeti(L, idx, r);
       auto v = check_numbers(L, -1, (what + " row " + std::to_string(r)).c_str());
@@ -74,12 +74,13 @@ int w_new(lua_State* L) {
   if (rows >= (std::size_t(1) << 31)) throw Error("sn.dataset: more than 2^31 rows");
   const double split = o.number("split", 0.8);
   if (!(split > 0 && split <= 1)) throw Error("sn.dataset option 'split' must be in (0, 1], got " + std::to_string(split));
-  const long long seed = o.integer("seed", 1);
+  const uint32_t seed = uint32_t(o.seed("seed", 1, kSeed32Max));  // the split's permutation is 32-bit
   d->color = shading::parse_color_space(o.string("color", "rgb"));
   int names = o.push("input_names");
   if (!lua_isnil(L, names)) {
     if (!lua_istable(L, names)) throw Error("sn.dataset option 'input_names': table of strings expected");
-    for (int i = 1; i <= int(lua_objlen(L, names)); ++i) {
+    const int n = check_list(L, names, "sn.dataset option 'input_names'");
+    for (int i = 1; i <= n; ++i) {
       lua_rawgeti(L, names, i);
       d->input_names.push_back(check_string(L, -1, "sn.dataset option 'input_names'"));
       lua_pop(L, 1);
@@ -89,7 +90,7 @@ int w_new(lua_State* L) {
 
   // A seeded random split: rows in the order of a permutation, the first `split` of them train.
   const std::size_t train = std::size_t(std::llround(split * double(rows)));
-  nn::EpochShuffle order(uint32_t(seed), 0xffffffffu, uint32_t(rows));
+  nn::EpochShuffle order(seed, 0xffffffffu, uint32_t(rows));
   for (std::size_t k = 0; k < rows; ++k) {
     const std::size_t r = order(uint32_t(k));
     const bool t = k < train;
@@ -205,11 +206,7 @@ int w_concat(lua_State* L) {
   const char* fn = "sn.dataset.concat";
   if (!lua_istable(L, 1))
     throw Error(std::string(fn) + ": a list of Datasets expected ({a, b, ...}), got " + type_name_at(L, 1));
-  const int n = int(lua_objlen(L, 1));
-  int keys = 0;
-  lua_pushnil(L);
-  while (lua_next(L, 1)) ++keys, lua_pop(L, 1);
-  if (keys != n) throw Error(std::string(fn) + ": a list {a, b, ...} expected; the table has keys besides 1.." + std::to_string(n));
+  const int n = check_list(L, 1, fn, "{a, b, ...}");
   if (n == 0) throw Error(std::string(fn) + ": the list is empty; give at least one Dataset");
   std::vector<std::shared_ptr<Dataset>> held;
   std::vector<const Dataset*> parts;
@@ -239,10 +236,9 @@ int w_subset(lua_State* L) {
   }
   if (o.has("fraction")) r.fraction = o.number("fraction");
   if (o.has("seed")) {
-    const long long s = o.integer("seed");
-    if (s < 0) throw Error(o.where("seed") + " must be a non-negative integer, got " + std::to_string(s));
+    const uint64_t s = o.seed("seed", 1);
     if (!r.count && !r.fraction) throw Error(o.where("seed") + " chooses the rows of count or fraction; give one of them");
-    r.seed = uint64_t(s);
+    r.seed = s;
   }
   if (o.has("where")) {
     const int wi = o.push("where");
@@ -283,9 +279,8 @@ int w_split(lua_State* L) {
   }
   Options o(L, 2, "dataset:split", {"split", "seed"});
   const double split = o.number("split", 0.8);
-  const long long seed = o.integer("seed", 1);
-  if (seed < 0) throw Error(o.where("seed") + " must be a non-negative integer, got " + std::to_string(seed));
-  push(L, named("dataset:split", [&] { return data::resplit(d, split, uint64_t(seed)); }), kType);
+  const uint64_t seed = o.seed("seed", 1);
+  push(L, named("dataset:split", [&] { return data::resplit(d, split, seed); }), kType);
   return 1;
 }
 

@@ -66,7 +66,7 @@ int w_sample(lua_State* L) {
   int li = o.push("light");
   r.light = check_light(L, li, "sn.dataset.sample option 'light'");
   lua_pop(L, 1);
-  r.seed = uint64_t(whole_number(o, "seed", 1, 0, 0x1p53, "Lua numbers are whole up to 2^53"));
+  r.seed = o.seed("seed", 1);
   r.split = o.number("split", 0.8);
   try {
     r.color = shading::parse_color_space(o.string("color", "rgb"));

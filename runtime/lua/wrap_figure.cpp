@@ -70,7 +70,7 @@ int w_grid(lua_State* L) {
   std::vector<io::Panel> panels;
   int t = o.push("panels");
   if (!lua_istable(L, t)) throw Error("sn.image.grid option 'panels': a list of images expected, got " + type_name_at(L, t));
-  int n = int(lua_objlen(L, t));
+  const int n = check_list(L, t, "sn.image.grid option 'panels'");
   if (n == 0) throw Error("sn.image.grid option 'panels': the list is empty");
   for (int i = 1; i <= n; ++i) {
     lua_rawgeti(L, t, i);
@@ -100,7 +100,8 @@ int w_grid(lua_State* L) {
     int k = o.push(key);
     if (!lua_isnil(L, k)) {
       if (!lua_istable(L, k)) throw Error(o.where(key) + ": a list of strings expected, got " + type_name_at(L, k));
-      for (int i = 1; i <= int(lua_objlen(L, k)); ++i) {
+      const int n = check_list(L, k, o.where(key));
+      for (int i = 1; i <= n; ++i) {
         lua_rawgeti(L, k, i);
         out.push_back(check_string(L, -1, o.where(key).c_str()));
         lua_pop(L, 1);

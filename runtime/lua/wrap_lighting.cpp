@@ -73,22 +73,8 @@ std::vector<Light> check_lights(lua_State* L, int idx, const char* fn) {
   if (!lua_istable(L, idx)) throw Error(list + ", got " + type_name_at(L, idx));
   // A named key (a single light, or a misspelt option) would otherwise be skipped, and an empty
   // list compares nothing: both passed as a perfect match.
-  idx = absindex(L, idx);
-  const int n = int(lua_objlen(L, idx));
-  lua_pushnil(L);
-  while (lua_next(L, idx)) {
-    const bool listed = lua_type(L, -2) == LUA_TNUMBER && lua_tonumber(L, -2) == std::floor(lua_tonumber(L, -2)) &&
-                        lua_tonumber(L, -2) >= 1 && lua_tonumber(L, -2) <= n;
-    if (!listed) {
-      const int t = lua_type(L, -2);
-      const std::string key = t == LUA_TSTRING   ? "'" + std::string(lua_tostring(L, -2)) + "'"
-                              : t == LUA_TNUMBER ? "[" + io::number_text(lua_tonumber(L, -2)) + "]"
-                                                 : "[" + std::string(luaL_typename(L, -2)) + "]";
-      lua_pop(L, 2);
-      throw Error(list + ", got a table with the key " + key + " (a single light goes in braces: { {dir = ...} })");
-    }
-    lua_pop(L, 1);
-  }
+  const int n = check_list(L, idx, std::string(fn) + ": argument " + std::to_string(idx),
+                           "a list of lights: { {dir = ..., color = ...}, ... }; a single light goes in braces too");
   if (n == 0) throw Error(list + ", got an empty list: there would be nothing to compare");
   std::vector<Light> lights;
   for (int i = 1; i <= n; ++i) {

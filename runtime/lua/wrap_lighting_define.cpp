@@ -178,7 +178,8 @@ int w_define(lua_State* L) {
   if (o.has("attributes")) {
     int ai = o.push("attributes");
     if (!lua_istable(L, ai)) throw Error(who + ": 'attributes' must be a list of names");
-    for (int i = 1; i <= int(lua_objlen(L, ai)); ++i) {
+    const int n = check_list(L, ai, who + " 'attributes'");
+    for (int i = 1; i <= n; ++i) {
       lua_rawgeti(L, ai, i);
       m.attributes.push_back(check_string(L, -1, (who + " attribute").c_str()));
       lua_pop(L, 1);

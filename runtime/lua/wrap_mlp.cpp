@@ -80,7 +80,7 @@ float check_weight(lua_State* L, int idx, const std::string& what) {
 void read_vector(lua_State* L, int idx, int n, float* out, const std::string& what) {
   idx = absindex(L, idx);
   if (!lua_istable(L, idx)) throw Error(what + ": table of " + std::to_string(n) + " numbers expected, got " + type_name_at(L, idx));
-  int len = int(lua_objlen(L, idx));
+  const int len = check_list(L, idx, what);
   if (len != n) throw Error(what + ": " + std::to_string(n) + " numbers expected, got " + std::to_string(len));
   for (int i = 0; i < n; ++i) {
     lua_rawgeti(L, idx, i + 1);
@@ -102,7 +102,7 @@ void read_matrix(lua_State* L, int idx, Mlp& net, int l, const std::string& what
   const int in = net.spec.width(l), out = net.spec.width(l + 1);
   idx = absindex(L, idx);
   if (!lua_istable(L, idx)) throw Error(what + ": table of " + std::to_string(out) + " rows expected, got " + type_name_at(L, idx));
-  int len = int(lua_objlen(L, idx));
+  const int len = check_list(L, idx, what);
   if (len != out)
     throw Error(what + ": " + std::to_string(out) + " rows of " + std::to_string(in) + " expected, got " + std::to_string(len) + " rows");
   std::vector<float> w(std::size_t(in) * out);
@@ -274,7 +274,8 @@ int w_new(lua_State* L) {
   auto read_names = [&](const char* key) {
     const int at = o.push(key);
     if (!lua_istable(L, at)) throw Error(o.where(key) + ": table of strings expected, got " + type_name_at(L, at));
-    for (int i = 1; i <= int(lua_objlen(L, at)); ++i) {
+    const int n = check_list(L, at, o.where(key));
+    for (int i = 1; i <= n; ++i) {
       lua_rawgeti(L, at, i);
       groups.names.push_back(check_string(L, -1, o.where(key).c_str()));
       groups.widths.push_back(input_width(groups.names.back()));
@@ -329,13 +330,13 @@ int w_new(lua_State* L) {
   }
   s.color = shading::parse_color_space(o.string("color", "rgb"));
   const nn::Init init = nn::parse_init(o.string("init", "xavier"));
-  const long long seed = o.integer("seed", 1);
+  const uint64_t seed = o.seed("seed", 1);
   try {
     s.validate();
   } catch (const std::invalid_argument& e) {
     throw Error(std::string("sn.mlp: ") + e.what());
   }
-  auto net = std::make_shared<Mlp>(s, init, uint64_t(seed));
+  auto net = std::make_shared<Mlp>(s, init, seed);
   net->input_names = groups.names;
   push(L, std::move(net), kType);
   return 1;
@@ -481,7 +482,7 @@ int w_encode(lua_State* L) {
     one(2, "net:encode sample");
     return 1;
   }
-  const int n = int(lua_objlen(L, 2));
+  const int n = check_list(L, 2, "net:encode");
   lua_createtable(L, n, 0);
   for (int r = 1; r <= n; ++r) {
     lua_rawgeti(L, 2, r);
@@ -592,7 +593,7 @@ std::vector<std::shared_ptr<nn::Mlp>> check_mlp_list(lua_State* L, int idx, cons
   if (test_type(L, idx, kType)) {
     nets.push_back(check_shared<nn::Mlp>(L, idx, kType));
   } else if (lua_istable(L, idx)) {
-    const int n = int(lua_objlen(L, idx));
+    const int n = check_list(L, idx, where);
     for (int i = 1; i <= n; ++i) {
       lua_rawgeti(L, idx, i);
       if (!test_type(L, -1, kType))

@@ -31,7 +31,7 @@ using nn::Mlp;
 
 // One sample (a table of numbers) or many (a table of such tables) -> rows x inputs floats.
 std::vector<float> rows_from_table(lua_State* L, int idx, int inputs, bool* nested) {
-  const int n = int(lua_objlen(L, idx));
+  const int n = check_list(L, idx, "net:forward");
   if (n == 0) throw Error("net:forward: the table holds no samples");
   lua_rawgeti(L, idx, 1);
   *nested = lua_istable(L, -1);
@@ -284,7 +284,8 @@ int w_render_errors(lua_State* L) {
   const int vi = o.push("views");  // stays on the stack: its G-buffers and images stay alive
   if (!lua_istable(L, vi)) throw Error(o.where("views") + ": a table of { gbuffer = G, truth = Image } expected");
   std::vector<nn::TruthView> views;
-  for (int k = 1; k <= int(lua_objlen(L, vi)); ++k) {
+  const int nviews = check_list(L, vi, o.where("views"));
+  for (int k = 1; k <= nviews; ++k) {
     lua_rawgeti(L, vi, k);
     const std::string where = o.where("views") + " element " + std::to_string(k);
     if (!lua_istable(L, -1)) throw Error(where + ": { gbuffer = G, truth = Image } expected, got " + type_name_at(L, -1));

@@ -49,7 +49,8 @@ std::shared_ptr<scene::Mesh> mesh_at(lua_State* L, int idx, LuaScene& s) {
 std::vector<std::string> string_list(lua_State* L, int idx, const std::string& what) {
   if (!lua_istable(L, idx)) throw Error(what + ": list of names expected, got " + type_name_at(L, idx));
   std::vector<std::string> v;
-  for (int i = 1; i <= int(lua_objlen(L, idx)); ++i) {
+  const int n = check_list(L, idx, what);
+  for (int i = 1; i <= n; ++i) {
     lua_rawgeti(L, idx, i);
     v.push_back(check_string(L, -1, (what + " element " + std::to_string(i)).c_str()));
     lua_pop(L, 1);
@@ -73,8 +74,8 @@ std::vector<scene::Camera> read_ring(lua_State* L, int idx, const std::string& w
 std::vector<scene::Camera> read_views(lua_State* L, int idx, const scene::Bounds& b) {
   if (lua_isnil(L, idx)) return scene::framing_orbit(b);
   if (!lua_istable(L, idx)) throw Error("sn.scene option 'views': a list of cameras and view rings, or one ring expected");
-  const int n = int(lua_objlen(L, idx));
-  if (n == 0) return read_ring(L, idx, "sn.scene option 'views'", b);
+  if (lua_objlen(L, idx) == 0) return read_ring(L, idx, "sn.scene option 'views'", b);
+  const int n = check_list(L, idx, "sn.scene option 'views'", "cameras and rings, each in braces: { {count = 8}, camera }");
   std::vector<scene::Camera> cams;
   for (int i = 1; i <= n; ++i) {
     lua_rawgeti(L, idx, i);
@@ -102,8 +103,7 @@ glm::dmat4 read_transform(lua_State* L, int idx, const std::string& what, const 
   const std::string expected = ": a 4x4 transform (4 rows of 4 numbers, or 16 numbers row by row) or "
                                "{ rotate = {degrees, x, y, z}, scale = ..., translate = {x, y, z}, about = {x, y, z} } expected";
   if (!lua_istable(L, idx)) throw Error(what + expected + ", got " + type_name_at(L, idx));
-  const int n = int(lua_objlen(L, idx));
-  if (n == 0) {
+  if (lua_objlen(L, idx) == 0) {
     Options o(L, idx, what.c_str(), {"rotate", "scale", "translate", "about"});
     scene::TransformTerms t;
     if (o.has("rotate")) {
@@ -128,6 +128,7 @@ glm::dmat4 read_transform(lua_State* L, int idx, const std::string& what, const 
       throw Error(e.what());
     }
   }
+  const int n = check_list(L, idx, what);
   std::vector<double> v;
   if (n == 16) {
     v = check_numbers(L, idx, what.c_str(), 16);
@@ -155,7 +156,7 @@ glm::dmat4 read_transform(lua_State* L, int idx, const std::string& what, const 
 
 // meshes = { "a.glb", Mesh, { mesh = "b.glb", transform = ... }, ... }
 void read_meshes(lua_State* L, int idx, LuaScene& s) {
-  const int n = lua_istable(L, idx) ? int(lua_objlen(L, idx)) : 0;
+  const int n = lua_istable(L, idx) ? check_list(L, idx, "sn.scene option 'meshes'") : 0;
   if (n == 0) throw Error("sn.scene option 'meshes': a non-empty list of meshes or { mesh = ..., transform = ... } expected");
   for (int i = 1; i <= n; ++i) {
     lua_rawgeti(L, idx, i);
@@ -194,7 +195,7 @@ int w_new(lua_State* L) {
     int mi = o.push("mesh");
     if (lua_isnil(L, mi)) throw Error("sn.scene option 'mesh' is required (a path, a Mesh, or a list of them)");
     if (lua_istable(L, mi)) {
-      int n = int(lua_objlen(L, mi));
+      const int n = check_list(L, mi, "sn.scene option 'mesh'");
       if (n == 0) throw Error("sn.scene option 'mesh': the list is empty");
       for (int i = 1; i <= n; ++i) {
         lua_rawgeti(L, mi, i);
@@ -208,7 +209,7 @@ int w_new(lua_State* L) {
   }
   if (o.has("poses")) {
     int pi = o.push("poses");
-    const int n = lua_istable(L, pi) ? int(lua_objlen(L, pi)) : 0;
+    const int n = lua_istable(L, pi) ? check_list(L, pi, "sn.scene option 'poses'") : 0;
     if (n == 0) throw Error("sn.scene option 'poses': a non-empty list of transforms expected");
     const glm::dvec3 centre = s->scene.placed_bounds().center();
     s->scene.poses.clear();
@@ -325,9 +326,7 @@ int w_dataset(lua_State* L) {
   if (o.has("views")) r.views = indices("views", s.scene.views.size(), "view");
   if (o.has("poses")) r.poses = indices("poses", s.scene.poses.size(), "pose");
   r.split = o.number("split", 0.8);
-  long long seed = o.integer("seed", 1);
-  if (seed < 0) throw Error(o.where("seed") + " must be >= 0");
-  r.seed = uint64_t(seed);
+  r.seed = o.seed("seed", 1);
   int si = o.push("samples");
   if (lua_type(L, si) == LUA_TSTRING) {
     if (std::string(lua_tostring(L, si)) != "all")

@@ -128,20 +128,15 @@ int w_train(lua_State* L) {
   c.epochs = o.int32("epochs", c.epochs);
   c.batch = o.int32("batch", c.batch);
   // The shuffle seed: one for every net, or a table with each net's own.
-  auto as_seed = [](double v, const std::string& what) {
-    if (!(v >= 0 && v <= 4294967295.0 && v == std::floor(v)))
-      throw Error(what + " must be an integer in 0..4294967295, got " + io::number_text(v));
-    return uint32_t(v);
-  };
   if (lua_istable(L, o.push("seed"))) {
     const std::vector<double> seeds = o.numbers("seed");
     if (seeds.size() != job.nets.size())
       throw Error("sn.train option 'seed': one seed per net, got " + std::to_string(seeds.size()) + " for " +
                   std::to_string(job.nets.size()) + " nets");
     for (std::size_t i = 0; i < seeds.size(); ++i)
-      c.seeds.push_back(as_seed(seeds[i], "sn.train option 'seed' entry " + std::to_string(i + 1)));
+      c.seeds.push_back(uint32_t(check_seed(seeds[i], "sn.train option 'seed' entry " + std::to_string(i + 1), kSeed32Max)));
   } else {
-    c.seed = as_seed(double(o.integer("seed", c.seed)), "sn.train option 'seed'");
+    c.seed = uint32_t(o.seed("seed", c.seed, kSeed32Max));
   }
   lua_pop(L, 1);
   int adam = o.push("adam");

@@ -46,7 +46,7 @@ local uv = sn.scene { mesh = "meshes/cloth.glb", size = { 32, 32 } }:dataset { t
 fails("sn.dataset.concat: dataset 3 has 5 inputs, dataset 1 has 6", sn.dataset.concat, { a, b, uv })
 fails("sn.dataset.concat: the list is empty", sn.dataset.concat, {})
 fails("sn.dataset.concat: item 2 is a number, Dataset expected", sn.dataset.concat, { a, 3 })
-fails("sn.dataset.concat: a list {a, b, ...} expected", sn.dataset.concat, { a, b, seed = 1 })
+fails("sn.dataset.concat: a list expected, got a table with the key 'seed'", sn.dataset.concat, { a, b, seed = 1 })
 fails("sn.dataset.concat: a list of Datasets expected ({a, b, ...}), got Dataset", sn.dataset.concat, a)
 
 -- subset: the first rows without a seed, a seeded choice with one; each set in proportion.

@@ -58,7 +58,7 @@ end
 expect.fails(function() sn.train { nets = { make(1), make(2) }, data = data, seed = { 1 } } end,
   "sn.train option 'seed': one seed per net, got 1 for 2 nets")
 expect.fails(function() sn.train { nets = { make(1) }, data = data, seed = { -1 } } end,
-  "sn.train option 'seed' entry 1 must be an integer in 0..4294967295, got -1")
+  "sn.train option 'seed' entry 1 must be a whole number in 0..4294967295, got -1")
 expect.fails(function() sn.train { nets = { make(1) }, data = data, seed = 1.5 } end, "sn.train option 'seed'")
 -- The networks: one, or a table of them (the reader sn.render_errors shares).
 expect.fails(function() sn.train { nets = { make(1), 5 }, data = data } end,
