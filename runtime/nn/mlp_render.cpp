@@ -113,7 +113,12 @@ void draw_mlp(const std::shared_ptr<const Mlp>& net, const scene::GBuffer& g, gl
     glBindTextureUnit(GLuint(a), g.target->color_texture(g.attachment(attributes[a])));
     units.push_back(double(a));
   }
-  prog->set_uniform("u_attr", units);
+  // The compiler trims the array past its last element read (an input whose encoding reads none
+  // of it: spherical harmonics of degree 1 are the constant alone), or drops it whole.
+  if (const gl::UniformInfo* u = prog->uniform("u_attr")) {
+    units.resize(std::min(units.size(), std::size_t(u->size)));
+    prog->set_uniform("u_attr", units);
+  }
   if (!net->conditions.empty() && prog->uniform("u_condition"))
     prog->set_uniform("u_condition", std::vector<double>(inputs.conditions.begin(), inputs.conditions.end()));
   gl::Buffer& params = params_of(net);
