@@ -297,8 +297,18 @@ JobResult train(const TrainJob& job) {
     net.best_epoch = r.best_epoch;
     net.trained_steps += uint64_t(r.steps);
     if (net.input_names.empty()) net.input_names = job.data->input_names;
-    if (net.conditions.empty() && net.input_names == job.data->input_names)
-      for (const auto& c : job.data->conditions) net.conditions.push_back({c.name, c.min, c.max, 0.5 * (c.min + c.max)});
+    // The conditions span the range of the data last trained on (a retraining on another range
+    // moves them); a value set before stays where it still lies inside, else the middle.
+    if (net.input_names == job.data->input_names) {
+      std::vector<Condition> now;
+      for (const auto& c : job.data->conditions) {
+        double value = 0.5 * (c.min + c.max);
+        for (const auto& old : net.conditions)
+          if (old.name == c.name && old.value >= c.min && old.value <= c.max) value = old.value;
+        now.push_back({c.name, c.min, c.max, value});
+      }
+      net.conditions = now;
+    }
     if (job.keep == Keep::best && r.best_epoch > 0) net.params = r.best_params;
     net.touch();
   }

@@ -99,4 +99,18 @@ assert(#bc == 1 and bc[1].name == "roughness" and bc[1].min == 0.1 and bc[1].max
        "loaded condition")
 assert(sn.image.mse(back:render(g), at7) == 0, "the loaded network renders the same")
 os.remove("out/conditioned.snmlp")
+
+-- Trained again on another range, the conditions follow it (they kept the first range, and
+-- values the network was last trained on were refused): a value still inside stays, one outside
+-- goes to the middle.
+net:set_input("roughness", 0.3)
+sn.train { nets = { net }, data = scene:dataset { target = gold, vary = { roughness = { 0.1, 0.5 } }, inputs = inputs, samples = 400 },
+           epochs = 1, batch = 8 }
+local nc = net:conditions()[1]
+assert(nc.min == 0.1 and nc.max == 0.5 and nc.value == 0.3, ("retrained: [%g, %g] at %g"):format(nc.min, nc.max, nc.value))
+sn.train { nets = { net }, data = scene:dataset { target = gold, vary = { roughness = { 0.4, 0.9 } }, inputs = inputs, samples = 400 },
+           epochs = 1, batch = 8 }
+nc = net:conditions()[1]
+assert(nc.min == 0.4 and nc.max == 0.9 and math.abs(nc.value - 0.65) < 1e-12, ("[%g, %g] at %g"):format(nc.min, nc.max, nc.value))
+net:set_input("roughness", 0.85)
 print("ok")
