@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -17,13 +18,15 @@ namespace sn::nn {
 namespace {
 
 // The error of one render, clamped here, against its truth (`reference`: the truth's part of
-// the SSIM, prepared once per view). A NaN pixel (clamping keeps NaN) makes both NaN: the pair
-// cannot be scored, its `nonfinite` count says why, and the other pairs still are.
+// the SSIM, prepared once per view). A NaN or infinite pixel makes both NaN: the pair cannot be
+// scored, its `nonfinite` count says why, and the other pairs still are. (Clamping would score
+// an infinity as 1, and an overflow that gives the cpu kernels an infinity may give the
+// fragment shader NaN: one network, two scores.)
 RenderError score(io::Image&& mine, const io::Image& truth, const io::SsimReference& reference, std::size_t nonfinite) {
+  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+  if (nonfinite) return {nan, nan, nonfinite};
   const io::Image shown = io::clamp_colors(std::move(mine));
-  const double mse = io::mse(truth, shown, 3, &truth);
-  if (std::isnan(mse)) return {mse, mse, nonfinite};
-  return {mse, io::ssim(reference, shown), nonfinite};
+  return {io::mse(truth, shown, 3, &truth), io::ssim(reference, shown), nonfinite};
 }
 
 }  // namespace
