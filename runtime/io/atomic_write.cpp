@@ -18,6 +18,15 @@ namespace fs = std::filesystem;
 
 std::string head(const std::string& path, const std::string& what) { return "cannot write " + what + " '" + path + "': "; }
 
+// The file a write to `path` means: a symbolic link's target (renamed over, the link would become
+// a file of its own and the file it points to keep the old bytes).
+std::string through_links(const std::string& path) {
+  std::error_code ec;
+  if (!fs::is_symlink(path, ec)) return path;
+  const fs::path real = fs::weakly_canonical(path, ec);
+  return ec ? path : real.string();
+}
+
 // Writes `bytes` to a temporary file beside `path` (its folders created), fsync'd when `sync`;
 // returns its name. On failure nothing is left and the error names `path`.
 std::string write_temporary(const std::string& path, const std::string& bytes, const std::string& what, bool sync) {
@@ -67,24 +76,28 @@ void rename_over(const std::string& tmp, const std::string& path, const std::str
 
 }  // namespace
 
-void write_file_atomic(const std::string& path, const std::string& bytes, const std::string& what) {
+void write_file_atomic(const std::string& link, const std::string& bytes, const std::string& what) {
+  const std::string path = through_links(link);
   rename_over(write_temporary(path, bytes, what, true), path, what);
 }
 
 void write_files_atomic(const std::vector<std::pair<std::string, std::string>>& files, const std::string& what,
                         const std::function<void()>& before_renames) {
+  std::vector<std::string> targets;  // the paths, through links
   std::set<std::string> paths;
-  for (const auto& f : files)
-    if (!paths.insert(f.first).second) throw std::invalid_argument(head(f.first, what) + "the path is listed twice");
+  for (const auto& f : files) {
+    targets.push_back(through_links(f.first));
+    if (!paths.insert(targets.back()).second) throw std::invalid_argument(head(f.first, what) + "the path is listed twice");
+  }
   std::vector<std::string> temps;
   const auto remove_temps = [&] {
     for (const auto& t : temps) ::unlink(t.c_str());
   };
   try {
-    for (const auto& [path, bytes] : files) temps.push_back(write_temporary(path, bytes, what, false));
+    for (std::size_t i = 0; i < files.size(); ++i) temps.push_back(write_temporary(targets[i], files[i].second, what, false));
     // One flush per folder's file system (a folder stands for its file system; most calls have one).
     std::set<std::string> folders;
-    for (const auto& [path, bytes] : files) {
+    for (const auto& path : targets) {
       const std::string folder = fs::path(path).parent_path().string();
       if (!folders.insert(folder.empty() ? "." : folder).second) continue;
       const int fd = ::open(folder.empty() ? "." : folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
@@ -102,7 +115,7 @@ void write_files_atomic(const std::vector<std::pair<std::string, std::string>>& 
   }
   for (std::size_t i = 0; i < files.size(); ++i) {
     try {
-      rename_over(temps[i], files[i].first, what);
+      rename_over(temps[i], targets[i], what);
     } catch (...) {
       for (std::size_t j = i + 1; j < temps.size(); ++j) ::unlink(temps[j].c_str());
       throw;

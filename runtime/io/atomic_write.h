@@ -1,7 +1,8 @@
 // Writing a whole file so that it is never half-written: the bytes go to a temporary file beside
 // the target, every write, the flush, fsync and close are checked, then the temporary is renamed
-// over the target. On any failure the old file is untouched, the temporary is removed and the
-// error names the path and the cause ("No space left on device", ...).
+// over the target (a symbolic link's target: the link stays). On any failure the old file is
+// untouched, the temporary is removed and the error names the path and the cause ("No space
+// left on device", ...).
 #pragma once
 #include <functional>
 #include <string>

@@ -13,6 +13,19 @@ inline std::string number_text(double v) {
   return b;
 }
 
+// v as number_text writes it, with more digits where those would read as `apart`: a value just
+// outside a range must not print as its bound (0.8000001 against 0.8).
+inline std::string number_text(double v, double apart) {
+  char b[32], c[32];
+  for (int digits = 6; digits < 17; ++digits) {
+    std::snprintf(b, sizeof b, "%.*g", digits, v);
+    std::snprintf(c, sizeof c, "%.*g", digits, apart);
+    if (v == apart || std::string(b) != c) return v == v ? b : "nan";
+  }
+  std::snprintf(b, sizeof b, "%.17g", v);
+  return b;
+}
+
 // Every bit of the value: two keys are equal only when the doubles are.
 inline std::string exact_text(double v) {
   char b[40];

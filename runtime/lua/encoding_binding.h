@@ -16,10 +16,6 @@ struct InputGroups {
   int offset(std::size_t i) const;
   int total() const;
 };
-// The width of an input by name: a G-buffer attribute's (3, or 2 for "uv"), else 1 (a
-// lighting-model parameter a dataset varies per row).
-int input_width(const std::string& name);
-
 // The encodings table at `idx` (keys: input names; values: an encoding name, or a table with
 // the name first and its options) for a network with inputs `groups`. Identity entries are
 // dropped; the rest come back in column order, checked (nn::check). `what` names the option in

@@ -1,6 +1,7 @@
 // sn.dataset{...} and the "Dataset" type: training and validation rows for sn.train. Scenes
 // make datasets from rendered samples (scene:dataset); this one is for scripts and tests that
 // have their rows as Lua tables or buffers.
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -73,7 +74,7 @@ int w_new(lua_State* L) {
                 std::to_string(y.size() / std::size_t(d->outputs)));
   if (rows >= (std::size_t(1) << 31)) throw Error("sn.dataset: more than 2^31 rows");
   const double split = o.number("split", 0.8);
-  if (!(split > 0 && split <= 1)) throw Error("sn.dataset option 'split' must be in (0, 1], got " + std::to_string(split));
+  if (!(split > 0 && split <= 1)) throw Error("sn.dataset option 'split' must be in (0, 1], got " + io::number_text(split));
   const uint32_t seed = uint32_t(o.seed("seed", 1, kSeed32Max));  // the split's permutation is 32-bit
   d->color = shading::parse_color_space(o.string("color", "rgb"));
   int names = o.push("input_names");
@@ -89,7 +90,10 @@ int w_new(lua_State* L) {
   lua_pop(L, 1);
 
   // A seeded random split: rows in the order of a permutation, the first `split` of them train.
-  const std::size_t train = std::size_t(std::llround(split * double(rows)));
+  // At least one row of each set where there are two rows and the split is below 1 (2 rows at
+  // 0.8 rounded to no validation row, and sn.train refused the dataset).
+  const std::size_t most = split < 1 && rows >= 2 ? rows - 1 : rows;
+  const std::size_t train = std::clamp<std::size_t>(std::size_t(std::llround(split * double(rows))), 1, std::max<std::size_t>(most, 1));
   nn::EpochShuffle order(seed, 0xffffffffu, uint32_t(rows));
   for (std::size_t k = 0; k < rows; ++k) {
     const std::size_t r = order(uint32_t(k));

@@ -22,12 +22,6 @@ int InputGroups::offset(std::size_t i) const {
 
 int InputGroups::total() const { return offset(widths.size()); }
 
-int input_width(const std::string& name) {
-  const auto& attrs = scene::gbuffer_attribute_names();
-  if (std::find(attrs.begin(), attrs.end(), name) != attrs.end()) return scene::attribute_width(name);
-  return 1;
-}
-
 namespace {
 
 // The options an encoding takes, for messages: "bands, include_input".

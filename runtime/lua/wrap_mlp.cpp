@@ -278,7 +278,7 @@ int w_new(lua_State* L) {
     for (int i = 1; i <= n; ++i) {
       lua_rawgeti(L, at, i);
       groups.names.push_back(check_string(L, -1, o.where(key).c_str()));
-      groups.widths.push_back(input_width(groups.names.back()));
+      groups.widths.push_back(nn::input_width(groups.names.back()));
       lua_pop(L, 1);
     }
     lua_pop(L, 1);
@@ -297,6 +297,15 @@ int w_new(lua_State* L) {
   } else {
     s.inputs = o.int32("inputs");
     if (o.has("input_names")) read_names("input_names");
+    // Checked here, not at the first render or training, which named the G-buffer's widths.
+    if (!groups.names.empty() && groups.total() != s.inputs) {
+      std::vector<std::string> widths;
+      for (std::size_t i = 0; i < groups.names.size(); ++i)
+        widths.push_back(groups.names[i] + " " + std::to_string(groups.widths[i]));
+      throw Error("sn.mlp: input_names {" + join(groups.names) + "} describe " + std::to_string(groups.total()) +
+                  " input columns (" + join(widths) + "; a name that is not a G-buffer attribute is a condition, 1), inputs = " +
+                  std::to_string(s.inputs));
+    }
   }
   s.outputs = o.int32("outputs", 3);
   for (double w : o.numbers("hidden")) {
@@ -304,9 +313,6 @@ int w_new(lua_State* L) {
     s.hidden.push_back(int(w));
   }
   if (o.has("encoding")) {
-    if (!named && !groups.names.empty() && groups.total() != s.inputs)
-      throw Error("sn.mlp: input_names {" + join(groups.names) + "} describe " + std::to_string(groups.total()) +
-                  " input columns, inputs = " + std::to_string(s.inputs) + "; encodings need them to agree");
     s.encodings = check_encodings(L, o.push("encoding"), groups, o.where("encoding"));
     lua_pop(L, 1);
   }
@@ -394,9 +400,7 @@ int w_set_input(lua_State* L) {
   double v = check_number(L, 3, "net:set_input value");
   for (auto& c : net.conditions) {
     if (c.name != name) continue;
-    if (!(v >= c.min && v <= c.max))
-      throw Error("net:set_input: '" + name + "' = " + io::number_text(v) + " lies outside the range the network was "
-                  "trained on, [" + io::number_text(c.min) + ", " + io::number_text(c.max) + "]");
+    if (std::string why = nn::condition_value_problem(c, v); !why.empty()) throw Error("net:set_input: " + why);
     c.value = v;
     return 0;
   }

@@ -224,9 +224,8 @@ int w_render(lua_State* L) {
         std::string name = lua_type(L, -2) == LUA_TSTRING ? lua_tostring(L, -2) : "?";
         double v = check_number(L, -1, (o.where("values") + " '" + name + "'").c_str());
         const nn::Condition* c = net->condition(name);
-        if (c && !(v >= c->min && v <= c->max))
-          throw Error(o.where("values") + ": '" + name + "' = " + io::number_text(v) + " lies outside the range the "
-                      "network was trained on, [" + io::number_text(c->min) + ", " + io::number_text(c->max) + "]");
+        if (c)
+          if (std::string why = nn::condition_value_problem(*c, v); !why.empty()) throw Error(o.where("values") + ": " + why);
         ro.values[name] = v;
         lua_pop(L, 1);
       }

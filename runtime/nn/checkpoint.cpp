@@ -233,6 +233,8 @@ Mlp load_checkpoint(const std::string& path) {
   net.best_epoch = int(r.get<uint32_t>("best snapshot"));
   if (net.best_epoch > 0) {
     net.best_val_mse = r.get<double>("best snapshot");
+    if (!(net.best_val_mse >= 0 && std::isfinite(net.best_val_mse)))
+      throw std::runtime_error(path + ": checkpoint refused: its best validation MSE is " + io::number_text(net.best_val_mse));
     net.best_params.resize(count);
     for (auto& v : net.best_params) v = r.get<float>("best snapshot");
     if (std::string bad = first_nonfinite(s, net.best_params); !bad.empty())
@@ -316,9 +318,6 @@ Mlp load_checkpoint(const std::string& path) {
   } catch (const std::invalid_argument& e) {
     throw std::runtime_error(path + ": bad network spec in checkpoint: " + e.what());
   }
-  if (count != s.param_count())
-    throw std::runtime_error(path + ": checkpoint has " + std::to_string(count) + " parameters, its spec " +
-                             s.describe() + " needs " + std::to_string(s.param_count()));
   // Activations by name; a user's one must be defined, as the checkpoint recorded it.
   auto resolve = [&](const std::string& name, Position where, const char* option) {
     const auto glsl = defs.find(name + " glsl"), grad = defs.find(name + " grad");
@@ -345,6 +344,11 @@ Mlp load_checkpoint(const std::string& path) {
   } catch (const std::invalid_argument& e) {
     throw std::runtime_error(path + ": bad network spec in checkpoint: " + e.what());
   }
+  if (count != s.param_count())  // with the spec complete: its description names the real activations
+    throw std::runtime_error(path + ": checkpoint has " + std::to_string(count) + " parameters, its spec " +
+                             s.describe() + " needs " + std::to_string(s.param_count()));
+  if (std::string why = input_names_problem(net); !why.empty())
+    throw std::runtime_error(path + ": checkpoint refused: its " + why);
   return net;
 }
 

@@ -59,4 +59,15 @@ struct Mlp {
   const float* biases(int l) const { return params.data() + spec.bias_offset(l); }
 };
 
+// The width of an input by name: a G-buffer attribute's (3, or 2 for "uv"), else 1 (a
+// lighting-model parameter a dataset varies per row: a condition).
+int input_width(const std::string& name);
+// Why condition c cannot take the value v (empty when it can): it must lie in the range the
+// network was trained on.
+std::string condition_value_problem(const Condition& c, double v);
+// Why the network's input names and conditions cannot be what it reads (empty when they can):
+// the names' widths must add up to its inputs, no name twice; a condition names an input that
+// is not a G-buffer attribute, once, and its value lies in its range.
+std::string input_names_problem(const Mlp& net);
+
 }  // namespace sn::nn

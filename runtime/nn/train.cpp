@@ -103,7 +103,9 @@ void validate(const TrainJob& job) {
   if (c.tick && !(c.tick_seconds > 0 && c.tick_seconds <= 3600))
     fail("tick_seconds must be in (0, 3600], got " + io::number_text(c.tick_seconds));
   if (d.train_count() < 1) fail("the dataset has no training rows");
-  if (d.val_count() < 1) fail("the dataset has no validation rows (split must leave some, e.g. split = 0.8)");
+  if (d.val_count() < 1)
+    fail("the dataset has no validation rows (all " + to_string(d.train_count()) +
+         " train): make it with a split below 1, or give it some with dataset:split{ split = 0.8 }");
   if (!c.seeds.empty() && c.seeds.size() != job.nets.size())
     fail("seeds: one per net, got " + to_string(c.seeds.size()) + " for " + to_string(job.nets.size()) + " nets");
   if (std::size_t(c.batch) > d.train_count())

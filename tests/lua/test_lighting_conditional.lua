@@ -113,4 +113,6 @@ sn.train { nets = { net }, data = scene:dataset { target = gold, vary = { roughn
 nc = net:conditions()[1]
 assert(nc.min == 0.4 and nc.max == 0.9 and math.abs(nc.value - 0.65) < 1e-12, ("[%g, %g] at %g"):format(nc.min, nc.max, nc.value))
 net:set_input("roughness", 0.85)
+-- Just outside: the message shows the digits that make it so, not a value that reads as the bound.
+fails(function() net:set_input("roughness", 0.9000001) end, "'roughness' = 0.9000001 lies outside the range the network was trained on, [0.4, 0.9]")
 print("ok")

@@ -94,4 +94,19 @@ held = nil
 collectgarbage()
 collectgarbage()
 assert(w[1][1] == w11 and row[1] == r1 and #w == 3, "views of a collected-looking net still read it")
+-- Input names that cannot describe the inputs are refused by sn.mlp itself, not at the first
+-- render or training; a dataset of 2 rows split 0.8 (no validation row) by sn.dataset.
+local expect = require "expect"
+expect.fails(function() sn.mlp { inputs = 6, hidden = { 4 }, input_names = { "normal", "view", "uv" } } end,
+             "sn.mlp: input_names {normal, view, uv} describe 8 input columns (normal 3, view 3, uv 2;")
+expect.fails(function() sn.mlp { inputs = 6, hidden = { 4 }, input_names = { "foo", "bar" } } end, "describe 2 input columns")
+assert(sn.mlp { inputs = 7, hidden = { 4 }, input_names = { "normal", "view", "roughness" } }, "a condition is 1 column")
+local two = sn.dataset { x = { { 1 }, { 2 } }, y = { { 1 }, { 2 } } }
+assert(select(1, two:counts()) == 1 and select(2, two:counts()) == 1, "2 rows at 0.8: one of each")
+local tiny = sn.dataset { x = { { 1 }, { 2 }, { 3 } }, y = { { 1 }, { 2 }, { 3 } }, split = 0.1 }
+assert(select(1, tiny:counts()) == 1 and select(2, tiny:counts()) == 2, "3 rows at 0.1: one to train on")
+expect.fails(function() sn.dataset { x = { { 1 }, { 2 } }, y = { { 1 }, { 2 } }, split = 0 } end, "must be in (0, 1], got 0")
+local all = sn.dataset { x = { { 1 }, { 2 } }, y = { { 1 }, { 2 } }, split = 1 }
+expect.fails(function() sn.train { nets = { sn.mlp { inputs = 1, hidden = { 2 }, outputs = 1 } }, data = all, epochs = 1, batch = 1 } end,
+             "the dataset has no validation rows (all 2 train): make it with a split below 1")
 print("test_mlp ok")

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <cmath>
 #include <cstring>
 #include <iterator>
@@ -295,6 +296,77 @@ TEST(Checkpoint, FailedSaveLeavesTheOldFile) {
   net.params[0] = 42.0f;
   save_checkpoint(net, path.string());
   EXPECT_EQ(load_checkpoint(path.string()).params[0], 42.0f);
+}
+
+
+// A checkpoint whose input names or conditions cannot be what the network reads is refused at
+// load, as non-finite numbers are (a valid checksum says only that the bytes are as written):
+// names whose widths miss the inputs, a condition twice, one named like a G-buffer attribute,
+// one whose value lies outside its range, a best MSE that is not a number.
+TEST(Checkpoint, InconsistentNamesAndConditionsAreRefused) {
+  MlpSpec s;
+  s.inputs = 7;
+  s.hidden = {4};
+  s.outputs = 3;
+  const Mlp good = [&] {
+    Mlp n(s, Init::xavier, 1);
+    n.input_names = {"normal", "view", "roughness"};
+    n.conditions = {{"roughness", 0.1, 0.8, 0.3}};
+    return n;
+  }();
+  const auto path = scratch("conditions.snmlp");
+  save_checkpoint(good, path.string());
+  EXPECT_EQ(load_checkpoint(path.string()).conditions[0].value, 0.3);
+  const auto refused = [&](const std::function<void(Mlp&)>& edit, const std::string& why) {
+    Mlp bad = good;
+    edit(bad);
+    save_checkpoint(bad, path.string());
+    const std::string err = load_error(path);
+    EXPECT_NE(err.find(path.string() + ": checkpoint refused: its " + why), std::string::npos) << err;
+  };
+  refused([](Mlp& n) { n.input_names = {"normal", "view", "uv"}; n.conditions.clear(); },
+          "input names {normal, view, uv} describe 8 input columns, the network takes 7");
+  refused([](Mlp& n) { n.input_names = {"normal", "normal", "roughness"}; }, "input 'normal' is listed twice");
+  refused([](Mlp& n) { n.conditions[0].value = 5; },
+          "condition 'roughness' = 5 lies outside the range the network was trained on, [0.1, 0.8]");
+  refused([](Mlp& n) { n.conditions[0].value = 0.8000001; }, "condition 'roughness' = 0.8000001 lies outside");
+  refused([](Mlp& n) { n.conditions.push_back(n.conditions[0]); }, "condition 'roughness' is listed twice");
+  refused([](Mlp& n) { n.conditions.push_back({"normal", 0, 1, 0.5}); }, "condition 'normal' is a G-buffer attribute");
+  refused([](Mlp& n) { n.best_params = n.params, n.best_epoch = 2, n.best_val_mse = -5; }, "best validation MSE is -5");
+}
+
+// The parameter count's error describes the network the file holds, its activations included
+// (they were a placeholder's, tanh, when the count was checked).
+TEST(Checkpoint, ParameterCountErrorNamesTheRealNetwork) {
+  MlpSpec s;
+  s.inputs = 6;
+  s.hidden = {4};
+  s.outputs = 3;
+  s.activation = Activation::relu;
+  Mlp net(s, Init::he, 1);
+  const auto path = scratch("count.snmlp");
+  save_checkpoint(net, path.string());
+  std::string bytes = read_all(path);
+  // The count (a uint64) stands just before the parameters: one fewer, and the last one dropped.
+  uint64_t count = net.params.size();
+  std::string first(8 + 4, '\0');
+  std::memcpy(first.data(), &count, 8);
+  std::memcpy(first.data() + 8, net.params.data(), 4);
+  const std::size_t at = bytes.find(first);
+  ASSERT_NE(at, std::string::npos);
+  --count;
+  std::memcpy(bytes.data() + at, &count, 8);
+  bytes.erase(at + 8 + 4 * count, 4);
+  uint32_t size;  // the header's payload size, after the magic and the version
+  std::memcpy(&size, bytes.data() + 12, 4);
+  size -= 4;
+  std::memcpy(bytes.data() + 12, &size, 4);
+  const uint64_t sum = io::fnv1a(bytes.substr(24));
+  std::memcpy(bytes.data() + 16, &sum, 8);
+  write_all(path, bytes);
+  const std::string err = load_error(path);
+  EXPECT_NE(err.find("checkpoint has 42 parameters, its spec " + s.describe() + " needs 43"), std::string::npos) << err;
+  EXPECT_NE(s.describe().find("relu"), std::string::npos);
 }
 
 }  // namespace
