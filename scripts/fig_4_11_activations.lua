@@ -65,7 +65,7 @@ for _, a in ipairs(acts) do
   series[#series + 1] = { name = a.label, x = x, y = y, dash = a.output_activation and 3 or (not thesis_four and 2 or nil) }
   local ids = {}
   for seed = 1, seeds do ids[seed] = string.format("%s-s%02d", a.id, seed) end
-  local best = exp.median_of(records, ids, "best_val_mse")
+  local best, found, diverged = exp.median_of(records, ids, "best_val_mse")
   -- Dead units: per hidden layer, the mean over seeds; the row shows the mean over layers and
   -- the worst layer.
   local per_layer = {}
@@ -83,9 +83,9 @@ for _, a in ipairs(acts) do
     local rec = records[id]
     stuck[seed] = rec and rec.result.stuck_outputs and tostring(rec.result.stuck_outputs) or "-"
   end
-  local final = y[epochs]
+  local final = stats.finite(y[epochs]) and y[epochs] or nil  -- no seed reached the last epoch: no number
   rows[#rows + 1] = exp.with_unseen({
-    activation = a.label, best_val_mse = best, final_val_mse = final,
+    activation = a.label, best_val_mse = best, final_val_mse = final, runs = found, diverged = diverged,
     vs_zeros = best and best / base.zeros or nil, vs_constant = best and best / base.constant or nil,
     stalled = best and (best > 0.9 * base.constant and "yes" or "no") or nil,
     dead_mean = stats.mean(per_layer), dead_max = stats.max(per_layer), dead_per_layer = table.concat(layer_text, " "),
@@ -112,6 +112,7 @@ E.R:table {
     { key = "dead_max", header = "dead units (worst layer)", format = "%.2f" },
     { key = "dead_per_layer", header = "dead units per hidden layer", align = "left" },
     { key = "stuck_outputs", header = "stuck output channels, per seed", align = "left" },
+    { key = "runs", header = "runs" }, { key = "diverged", header = "diverged" },
   }, "final_val_mse"),
   rows = rows,
   notes = {

@@ -641,14 +641,16 @@ function E:sweep(runs, o)
 end
 
 -- Median of `field` over the records of `ids`; also the number of runs found and of those
--- without a finite value (diverged).
+-- without a finite value (diverged). A run that diverged before its first validation has no
+-- value at all (nil): it counts as diverged too, never as a run that is not there.
 function exp.median_of(records, ids, field)
   local vals, found = {}, 0
   for _, id in ipairs(ids) do
     local rec = records[id]
     if rec then
       found = found + 1
-      vals[#vals + 1] = rec.result[field]
+      local v = rec.result[field]
+      vals[#vals + 1] = v == nil and 0 / 0 or v
     end
   end
   local m, bad = stats.median(vals)

@@ -53,6 +53,12 @@ for _, name in ipairs { "sine (w0 = 1)", "softplus", "squareplus", "ELU", "GELU 
 end
 -- eight exponential layers overflow at once: the row records the divergence, no number
 assert(act.exponential and not C.finite(act.exponential.best_val_mse), "exponential diverges")
+-- It diverges before its first validation (no best_val_mse in its record): still a run, and a
+-- diverged one; its final MSE is no number, not "nan".
+assert(act.exponential.runs == 1 and act.exponential.diverged == 1,
+       "the diverged run is counted: runs " .. tostring(act.exponential.runs) .. ", diverged " .. tostring(act.exponential.diverged))
+assert(act.tanh.runs == 1 and act.tanh.diverged == 0, "tanh: one run, not diverged")
+assert(not C.read(dir .. "/table.md"):find("nan", 1, true), "no 'nan' in the table:\n" .. C.read(dir .. "/table.md"))
 assert(act["GELU (tanh form)"].stalled == "no", "GELU learns")
 assert(act.tanh.dead_per_layer and #act.tanh.dead_per_layer:gsub("[^ ]", "") == 7, "8 hidden layers of dead-unit fractions")
 assert(act.tanh.stalled == "no", "tanh learns")

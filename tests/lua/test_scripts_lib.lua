@@ -81,6 +81,13 @@ assert(stats.median({ 3, 1, 2 }) == 2 and stats.median({ 4, 1, 3, 2 }) == 2.5, "
 local m, left = stats.median({ 1, 0 / 0, 3 })
 assert(m == 2 and left == 1, "median skips and counts non-finite values")
 assert(stats.median({}) == nil, "median of nothing")
+-- exp.median_of: a run that diverged before any validation has no value; it is a run, diverged.
+local exp = require "lib.experiment"
+local recs = { a = { result = { best_val_mse = 1 } }, b = { result = { diverged = { epoch = 1 } } },
+               c = { result = { best_val_mse = 3 } } }
+local med, found, bad = exp.median_of(recs, { "a", "b", "c", "missing" }, "best_val_mse")
+assert(med == 2 and found == 3 and bad == 1, string.format("median_of: %s, runs %s, diverged %s", tostring(med),
+                                                             tostring(found), tostring(bad)))
 
 -- ---- sweep: shards, resume ----
 local runs = {}
