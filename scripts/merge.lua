@@ -32,8 +32,20 @@ while i <= #arg do
 end
 if #dirs == 0 then error("merge.lua: no shard folders given\n" .. usage, 0) end
 
--- Which experiment, in which mode: every shard must agree.
+-- The options that choose the experiment's data (--data, --ggx) as a shard's run.json records
+-- them; a run.json from before `options` was recorded has them on its command line (absent
+-- there: the defaults). nil when neither tells.
+local defaults = { data = "poses", ggx = "thesis" }
+local function recorded(info, key)
+  if type(info.options) == "table" and info.options[key] then return info.options[key] end
+  if type(info.command) ~= "string" then return nil end
+  return info.command:match("%-%-" .. key .. "=(%S+)") or info.command:match("%-%-" .. key .. "%s+(%S+)")
+         or defaults[key]
+end
+
+-- Which experiment, in which mode, on which data: every shard must agree.
 local name, quick, backend
+local options, first_with = {}, {}
 for _, d in ipairs(dirs) do
   if sn.fs.exists(d) ~= "folder" then error("merge.lua: '" .. d .. "' is not a folder", 0) end
   local info = results.read_json(d .. "/run.json")
@@ -47,6 +59,19 @@ for _, d in ipairs(dirs) do
   if quick ~= nil and info.quick ~= quick then
     error("merge.lua: " .. d .. " was run " .. (info.quick and "with" or "without") .. " --quick, " .. dirs[1] ..
           " was not: their runs are different experiments", 0)
+  end
+  for _, key in ipairs { "data", "ggx" } do
+    local v = recorded(info, key)
+    if not v then
+      error(string.format("merge.lua: %s/run.json records neither options nor a command line: which --%s its runs "
+                          .. "used is unknown; merge by hand (copy the run files together and run the experiment "
+                          .. "with the shards' options)", d, key), 0)
+    end
+    if options[key] and options[key] ~= v then
+      error(string.format("merge.lua: %s was run with --%s %s, %s with --%s %s: their runs are different experiments",
+                          first_with[key], key, options[key], d, key, v), 0)
+    end
+    options[key], first_with[key] = v, first_with[key] or d
   end
   name, quick = info.experiment, info.quick
   backend = backend or (info.backend and info.backend.requested)
@@ -96,6 +121,10 @@ print(string.format("merge.lua: %d run files from %d folders into %s/runs (%d al
 -- The experiment itself writes the merged table: nothing is left to train.
 arg = { [0] = script, [-1] = arg[-1], "--out", out }
 if quick then arg[#arg + 1] = "--quick" end
+for _, key in ipairs { "data", "ggx" } do
+  arg[#arg + 1] = "--" .. key
+  arg[#arg + 1] = options[key]
+end
 if backend then
   arg[#arg + 1] = "--backend"
   arg[#arg + 1] = backend

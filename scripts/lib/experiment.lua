@@ -611,10 +611,18 @@ function E:sweep(runs, o)
   local sweep = Sweep.new { dir = self.dir, runs = runs, shard = self.opts.shard, label = o.label or self.name }
   if exp.report_only then
     -- scripts/merge.lua: report what the shards ran, train nothing.
-    local missing = #sweep:pending()
+    local pending = sweep:pending()
+    local missing, other = #pending, 0
+    for _, r in ipairs(pending) do
+      if sn.fs.exists(sweep:file(r)) then other = other + 1 end
+    end
     if missing > 0 then
-      io.stderr:write(string.format("%s: %d of %d runs are in none of the merged folders; the table shows – for them\n",
-                                    self.name, missing, #runs))
+      io.stderr:write(string.format("%s: %d of %d runs are not among the merged run files%s; the table shows – for them\n",
+                                    self.name, missing, #runs,
+                                    other > 0 and string.format(" (%d of them are there with another configuration: "
+                                                                .. "run with other options or by another version of "
+                                                                .. "the script)", other)
+                                      or " (a shard that is missing, unfinished or stopped?)"))
     end
     local by_id = {}
     for _, rec in ipairs(sweep:records()) do by_id[rec.id] = rec end
@@ -845,6 +853,8 @@ function E:finish(o)
     experiment = self.name,
     command = "shadenet scripts/" .. self.name .. ".lua " .. table.concat(self.args, " "),
     quick = self.quick,
+    -- what chose the data (scripts/merge.lua re-runs the experiment with them)
+    options = { data = self.data_choice, ggx = self.ggx_choice },
     shard = self.opts.shard,
     backend = { requested = self.backend, used = backend_used, device = device },
     environment = env,

@@ -2,6 +2,8 @@
 -- a resumed run = an uninterrupted one, Ctrl-C keeps finished runs and the re-run completes them.
 local C = require "script_check"
 local thesis = require "lib.thesis"
+local results = require "lib.results"
+local json = require "lib.json"
 
 local script = "scripts/table_4_1_phong.lua"
 local root = C.tmpdir("t41")
@@ -45,10 +47,42 @@ C.ok(script, { "--quick", "--shard", "1/2", "--out", S1 })
 C.ok(script, { "--quick", "--out", S2 }, { SLURM_ARRAY_TASK_ID = "1", SLURM_ARRAY_TASK_COUNT = "2", SLURM_ARRAY_TASK_MIN = "0" })
 assert(#C.csv(S1 .. "/table.csv") == 36, "a shard's table lists every cell")
 local out = C.ok("scripts/merge.lua", { S1, S2, "--out", M })
+local code
 assert(out:find("72 run files from 2 folders"), "merge copies both shards' runs:\n" .. out)
 assert(C.read(M .. "/table.csv") == C.read(A .. "/table.csv"), "shard + merge = unsharded table")
 local ra, rm = C.run_results(A), C.run_results(M)
 for id, r in pairs(ra) do assert(rm[id] == r, "run " .. id .. " differs after merging") end
+
+-- Shards run with --data and --ggx merge into the table those options give: merge.lua re-runs
+-- the experiment with the options the shards' run.json records (Table 4.3: 8 quick runs).
+local W = root .. "/widths"
+local wopts = { "--quick", "--data", "cloth", "--ggx", "gold" }
+local function with(list, more) local t = { unpack(list) } for _, a in ipairs(more) do t[#t + 1] = a end return t end
+C.ok("scripts/table_4_3_widths.lua", with(wopts, { "--out", W .. "/whole" }))
+C.ok("scripts/table_4_3_widths.lua", with(wopts, { "--shard", "1/2", "--out", W .. "/s1" }))
+C.ok("scripts/table_4_3_widths.lua", with(wopts, { "--shard", "2/2", "--out", W .. "/s2" }))
+out = C.ok("scripts/merge.lua", { W .. "/s1", W .. "/s2", "--out", W .. "/merged" })
+assert(not out:find("not among the merged"), "every run is merged:\n" .. out)
+assert(C.read(W .. "/merged/table.csv") == C.read(W .. "/whole/table.csv"), "--data cloth --ggx gold: shard + merge = unsharded")
+assert(C.read(W .. "/merged/table.md"):find("(--data cloth, the thesis' data); GGX: the gold metal (--ggx gold", 1, true),
+       "the merged table names the shards' data")
+-- A run.json from before the options were recorded: its command line tells.
+for _, s in ipairs { "s1", "s2" } do
+  local f = W .. "/" .. s .. "/run.json"
+  local info = C.json(f)
+  info.options = nil
+  results.write_file(f, json.encode(info))
+end
+C.ok("scripts/merge.lua", { W .. "/s1", W .. "/s2", "--out", W .. "/merged_old" })
+assert(C.read(W .. "/merged_old/table.csv") == C.read(W .. "/whole/table.csv"), "options read from the command line")
+-- Shards run with different options are refused.
+local f2 = W .. "/s2/run.json"
+local info2 = C.json(f2)
+info2.options = { data = "cloth", ggx = "thesis" }
+results.write_file(f2, json.encode(info2))
+code, out = C.run("scripts/merge.lua", { W .. "/s1", W .. "/s2", "--out", W .. "/mixed" })
+assert(code ~= 0 and out:find("s1 was run with %-%-ggx gold, [^\n]*s2 with %-%-ggx thesis: their runs are different experiments"),
+       "mixed options refused:\n" .. out)
 
 -- Resumed: half the runs already there.
 local R = root .. "/resumed"
