@@ -74,7 +74,10 @@ for _, d in ipairs(dirs) do
     options[key], first_with[key] = v, first_with[key] or d
   end
   name, quick = info.experiment, info.quick
-  backend = backend or (info.backend and info.backend.requested)
+  -- The backend the shards asked for, when they agree (each shard trained its runs on it);
+  -- otherwise auto, which takes every run whatever trained it.
+  local asked = info.backend and info.backend.requested or "auto"
+  backend = (backend == nil or backend == asked) and asked or "auto"
 end
 local script = "scripts/" .. name .. ".lua"
 if arg[0] then script = (arg[0]:match("^(.*)/[^/]*$") or ".") .. "/" .. name .. ".lua" end

@@ -608,7 +608,29 @@ end
 -- and any merged in), interrupted
 function E:sweep(runs, o)
   o = o or {}
-  local sweep = Sweep.new { dir = self.dir, runs = runs, shard = self.opts.shard, label = o.label or self.name }
+  -- A finished run is reused when it was trained on the backend asked for: --backend auto (the
+  -- default) takes any; --backend cpu or gl trains again the runs another backend trained.
+  local function wanted(run) return run.config.backend or self.backend end
+  local sweep = Sweep.new { dir = self.dir, runs = runs, shard = self.opts.shard, label = o.label or self.name,
+                            accept = function(rec, run)
+                              local want, got = wanted(run), type(rec.result) == "table" and rec.result.backend
+                              return want == "auto" or not got or got == want
+                            end }
+  local refused = {}
+  for _, r in ipairs(sweep:slice()) do
+    local rec = not sweep:record(r) and sweep:record(r, true)
+    if rec then
+      local k = rec.result.backend .. " -> " .. wanted(r)
+      refused[k] = (refused[k] or 0) + 1
+    end
+  end
+  for k, n in pairs(refused) do
+    local got, want = k:match("^(.-) %-> (.*)$")
+    io.stderr:write(string.format("%s: %d finished runs in %s/runs were trained on the %s backend; --backend %s %s\n",
+                                  self.name, n, self.dir, got, want,
+                                  exp.report_only and "leaves them out (merge: the shards asked for different backends?)"
+                                    or "trains them again (--backend auto reuses them)"))
+  end
   if exp.report_only then
     -- scripts/merge.lua: report what the shards ran, train nothing.
     local pending = sweep:pending()
@@ -626,6 +648,7 @@ function E:sweep(runs, o)
     end
     local by_id = {}
     for _, rec in ipairs(sweep:records()) do by_id[rec.id] = rec end
+    self:note_used(by_id)
     self.sweeps[#self.sweeps + 1] = { runs = #runs, finished = #runs - missing, merged = true }
     return by_id, false
   end
@@ -645,7 +668,30 @@ function E:sweep(runs, o)
   end
   local by_id = {}
   for _, rec in ipairs(sweep:records()) do by_id[rec.id] = rec end
+  self:note_used(by_id)
   return by_id, interrupted
+end
+
+-- Remembers the backends and devices of the records a sweep returned, for run.json.
+function E:note_used(by_id)
+  self.used = self.used or { backend = {}, device = {}, ids = {} }
+  for id, rec in pairs(by_id) do
+    if self.used.ids[id] then goto next end
+    self.used.ids[id] = true
+    for _, k in ipairs { "backend", "device" } do
+      local v = tostring(rec.result[k] or "unknown")
+      self.used[k][v] = (self.used[k][v] or 0) + 1
+    end
+    ::next::
+  end
+end
+
+-- "cpu", or "cpu, gl" when the records were trained on both; nil with no record.
+local function used_text(counts, sep)
+  local names = {}
+  for k in pairs(counts or {}) do names[#names + 1] = k end
+  table.sort(names)
+  return #names > 0 and table.concat(names, sep) or nil
 end
 
 -- Median of `field` over the records of `ids`; also the number of runs found and of those
@@ -843,11 +889,11 @@ function E:finish(o)
   o = o or {}
   local total = sn.clock() - self.t0
   self.timings.total = total
-  local backend_used, device
-  for _, rec in pairs(o.records or {}) do
-    backend_used, device = rec.result.backend, rec.result.device
-    break
-  end
+  -- The backends and devices of every record the tables used (all of them when they differ,
+  -- with how many runs each trained); `o.records` for records a script found another way.
+  if o.records then self:note_used(o.records) end
+  local used = self.used or {}
+  local backend_used, device = used_text(used.backend, ", "), used_text(used.device, "; ")
   local env = results.environment()
   local info = {
     experiment = self.name,
@@ -856,7 +902,8 @@ function E:finish(o)
     -- what chose the data (scripts/merge.lua re-runs the experiment with them)
     options = { data = self.data_choice, ggx = self.ggx_choice },
     shard = self.opts.shard,
-    backend = { requested = self.backend, used = backend_used, device = device },
+    backend = { requested = self.backend, used = backend_used, device = device, runs_per_backend = used.backend,
+                runs_per_device = used.device },
     environment = env,
     datasets = self.data_log,
     baselines = self.baseline_log,

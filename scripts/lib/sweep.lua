@@ -12,7 +12,9 @@ local Sweep = {}
 Sweep.__index = Sweep
 
 -- sweep.new{ dir = results folder, runs = { {id = "L4-W6-s3", config = {...}}, ... },
---            shard = {index, count} | nil, label = "table_4_1_phong" }
+--            shard = {index, count} | nil, label = "table_4_1_phong",
+--            accept = function(record, run) -> false when a finished record may not be reused
+--                     (lib.experiment: trained on another backend than --backend asks for) }
 function Sweep.new(o)
   assert(o.dir and o.runs, "sweep.new: dir and runs are required")
   local ids = {}
@@ -26,7 +28,7 @@ function Sweep.new(o)
     r.config_text = json.encode(r.config or {})
   end
   local self = setmetatable({ dir = o.dir, runs_dir = o.dir .. "/runs", runs = o.runs, shard = o.shard,
-                              label = o.label or "sweep" }, Sweep)
+                              label = o.label or "sweep", accept = o.accept }, Sweep)
   sn.fs.mkdir(self.runs_dir)
   results.clean_temps(self.runs_dir)
   return self
@@ -44,9 +46,10 @@ end
 
 function Sweep:file(run) return self.runs_dir .. "/" .. run.id .. ".json" end
 
--- The finished record of `run`, or nil when it has not run with this configuration. A run file
--- that cannot be read is reported and treated as not finished (it will be trained again).
-function Sweep:record(run)
+-- The finished record of `run`, or nil when it has not run with this configuration (or `accept`
+-- refuses it; `any` = true skips that test). A run file that cannot be read is reported and
+-- treated as not finished (it will be trained again).
+function Sweep:record(run, any)
   local text = results.read_file(self:file(run))
   if not text then return nil end
   local ok, rec = pcall(json.decode, text, self:file(run))
@@ -63,6 +66,7 @@ function Sweep:record(run)
       return nil
     end
   end
+  if self.accept and not any and not self.accept(rec, run) then return nil end
   return rec
 end
 

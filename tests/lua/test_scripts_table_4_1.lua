@@ -66,6 +66,21 @@ assert(not out:find("not among the merged"), "every run is merged:\n" .. out)
 assert(C.read(W .. "/merged/table.csv") == C.read(W .. "/whole/table.csv"), "--data cloth --ggx gold: shard + merge = unsharded")
 assert(C.read(W .. "/merged/table.md"):find("(--data cloth, the thesis' data); GGX: the gold metal (--ggx gold", 1, true),
        "the merged table names the shards' data")
+-- --backend decides which finished runs are reused: runs the cpu trained are trained again for
+-- --backend gl (said once, with their number), auto takes both, and run.json names every
+-- backend its records were trained on.
+local B = W .. "/backends"
+C.copy_runs(W .. "/whole", B, function() return true end)
+out = C.ok("scripts/table_4_3_widths.lua", with(wopts, { "--backend", "gl", "--shard", "1/2", "--out", B }))
+assert(out:find("4 finished runs in [^\n]* were trained on the cpu backend; %-%-backend gl trains them again"),
+       "reused runs of another backend are trained again, and it says so:\n" .. out)
+local binfo = C.json(B .. "/run.json")
+assert(binfo.backend.used == "gl" and binfo.backend.runs_per_backend.gl == 4, "the shard used its 4 gl runs")
+C.ok("scripts/table_4_3_widths.lua", with(wopts, { "--out", B }))
+binfo = C.json(B .. "/run.json")
+assert(binfo.backend.used == "cpu, gl" and binfo.backend.runs_per_backend.cpu == 4 and binfo.backend.runs_per_backend.gl == 4,
+       "--backend auto reuses both, and run.json names both: " .. json.encode(binfo.backend))
+
 -- A run.json from before the options were recorded: its command line tells.
 for _, s in ipairs { "s1", "s2" } do
   local f = W .. "/" .. s .. "/run.json"
