@@ -68,13 +68,7 @@ for _, a in ipairs(acts) do
   local best, found, diverged = exp.median_of(records, ids, "best_val_mse")
   -- Dead units: per hidden layer, the mean over seeds; the row shows the mean over layers and
   -- the worst layer.
-  local per_layer = {}
-  for _, id in ipairs(ids) do
-    local rec = records[id]
-    if rec then
-      for l, f in ipairs(rec.result.dead_units or {}) do per_layer[l] = (per_layer[l] or 0) + f / seeds end
-    end
-  end
+  local per_layer = exp.dead_units_per_layer(records, ids)
   local layer_text = {}
   for l, f in ipairs(per_layer) do layer_text[l] = string.format("%.2f", f) end
   -- Output channels stuck at one value (a ReLU output pinned at 0), per seed.

@@ -711,6 +711,21 @@ function exp.median_of(records, ids, field)
   return m, found, bad or 0
 end
 
+-- Dead units per hidden layer (the fraction of its units), the mean over the records of `ids`
+-- that are there and hold them: a shard's or a stopped sweep's table has fewer than all seeds.
+function exp.dead_units_per_layer(records, ids)
+  local per_layer, n = {}, 0
+  for _, id in ipairs(ids) do
+    local rec = records[id]
+    if rec and type(rec.result.dead_units) == "table" then
+      n = n + 1
+      for l, f in ipairs(rec.result.dead_units) do per_layer[l] = (per_layer[l] or 0) + f end
+    end
+  end
+  for l in ipairs(per_layer) do per_layer[l] = per_layer[l] / n end
+  return per_layer
+end
+
 -- ---- outputs --------------------------------------------------------------------------------
 
 -- E:plot("plots/NAME.png", spec for lib.plot.lines) -> path; the CSV lands beside it.

@@ -86,6 +86,10 @@ local exp = require "lib.experiment"
 local recs = { a = { result = { best_val_mse = 1 } }, b = { result = { diverged = { epoch = 1 } } },
                c = { result = { best_val_mse = 3 } } }
 local med, found, bad = exp.median_of(recs, { "a", "b", "c", "missing" }, "best_val_mse")
+-- Dead units: the mean over the records found (2 of 3 seeds here), not over every seed.
+local dead = exp.dead_units_per_layer({ s1 = { result = { dead_units = { 0.5, 0.25 } } },
+                                        s2 = { result = { dead_units = { 0.25, 0 } } } }, { "s1", "s2", "s3" })
+assert(dead[1] == 0.375 and dead[2] == 0.125, "dead units over the records found: " .. table.concat(dead, " "))
 assert(med == 2 and found == 3 and bad == 1, string.format("median_of: %s, runs %s, diverged %s", tostring(med),
                                                              tostring(found), tostring(bad)))
 
