@@ -37,7 +37,7 @@ end
 local styles = { lines = "lines lw 2", linespoints = "linespoints lw 2 pt %d ps 0.8", points = "points pt %d ps 1.0" }
 
 -- plot.lines{ path = "DIR/plots/NAME.png", title, xlabel, ylabel, logx, logy, width, height,
---             key = "top right", series = { {name, x = {...}, y = {...}, style = "lines",
+--             key = "outside right top" (gnuplot's `set key` words), series = { {name, x = {...}, y = {...}, style = "lines",
 --             color = "#rrggbb", dash = 2, point = 6, labels = {...}}, ... } } -> path of the PNG
 -- Non-finite y values are dropped (gnuplot cannot draw them) and counted in the returned
 -- second value, so a diverged curve shows as a gap, never as a silent zero. With
@@ -66,10 +66,14 @@ function plot.lines(p)
   results.write_file(csv_path, table.concat(lines, "\n") .. "\n")
 
   local g = {
-    string.format("set terminal pngcairo size %d,%d font 'DejaVu Sans,10' enhanced", p.width or 800, p.height or 520),
+    -- noenhanced: titles, labels and series names are plain text ("my_sweep", "L*a*b*", "x^2"),
+    -- never gnuplot's markup for sub- and superscripts.
+    string.format("set terminal pngcairo size %d,%d font 'DejaVu Sans,10' noenhanced", p.width or 800, p.height or 520),
     "set output " .. q(png_name .. ".tmp.png"),
     "set datafile separator ','",
-    "set key " .. (p.key or "top right") .. " box opaque",
+    -- The key goes outside the plot area by default: inside, its opaque box hid the points
+    -- under it (the thesis' value at the top right of Table 4.2's plot).
+    "set key " .. (p.key or "outside right top") .. " box opaque",
     "set grid xtics ytics lc rgb '#dddddd'",
     "set border lw 1",
     "set title " .. q(p.title or ""),

@@ -176,6 +176,34 @@ local img = sn.image.load(png)
 local w, h = img:size()
 assert(w == 800 and h == 520, "plot size")
 assert(results.read_file(tmp .. "/plots/c.csv") == "series,x,y,label\na,1,0.1,\na,3,0.01,\n", "plot data beside it")
+-- The key never hides data: a red point near the top right corner, where an inside key sat, is
+-- drawn beside the key's own red sample (two discs, not one).
+local function red_pixels(path)
+  local im = sn.image.load(path)
+  local iw, ih = im:size()
+  local n = 0
+  for y = 1, ih do
+    for x = 1, iw do
+      local px = im:get(x, y)
+      if px[1] > 0.9 and px[2] < 0.2 and px[3] < 0.2 then n = n + 1 end
+    end
+  end
+  return n
+end
+local ks = {}
+for k = 1, 4 do ks[k] = { name = "a long series name number " .. k, x = { 0, 1 }, y = { 1, 2 } } end
+ks[5] = { name = "corner", x = { 9.6 }, y = { 9.6 }, style = "points", color = "#ff0000" }
+local one = red_pixels(plot.lines { path = tmp .. "/plots/one.png", xrange = { 0, 10 }, yrange = { 0, 10 },
+                                    series = { { name = "corner", x = { 20 }, y = { 20 }, style = "points", color = "#ff0000" } } })
+local keyed = red_pixels(plot.lines { path = tmp .. "/plots/key.png", series = ks, xrange = { 0, 10 }, yrange = { 0, 10 } })
+assert(one > 10 and keyed >= 2 * one - 2, string.format("the key hides the point under it: %d red pixels, one disc %d", keyed, one))
+-- Titles, labels and names are plain text, not gnuplot's markup: "my_{}sweep^{}" drawn as
+-- markup is "mysweep" (an empty subscript and superscript).
+local function titled(t, name)
+  return sn.image.load(plot.lines { path = tmp .. "/plots/" .. name .. ".png", title = t,
+                                    series = { { name = "x", x = { 1, 2 }, y = { 1, 2 } } } })
+end
+assert(sn.image.mse(titled("mysweep", "t1"), titled("my_{}sweep^{}", "t2")) > 0, "gnuplot markup in a title is drawn as text")
 
 os.execute("rm -rf '" .. tmp .. "'")
 print("scripts lib: ok")

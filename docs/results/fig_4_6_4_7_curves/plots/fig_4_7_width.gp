@@ -1,7 +1,7 @@
-set terminal pngcairo size 800,520 font 'DejaVu Sans,10' enhanced
+set terminal pngcairo size 800,520 font 'DejaVu Sans,10' noenhanced
 set output "fig_4_7_width.png.tmp.png"
 set datafile separator ','
-set key top right box opaque
+set key outside right top box opaque
 set grid xtics ytics lc rgb '#dddddd'
 set border lw 1
 set title "Figure 4.7 — GGX, 8 hidden layers, lr 0.00003: validation MSE by width (median of 3 seeds)"

@@ -1,7 +1,7 @@
-set terminal pngcairo size 900,600 font 'DejaVu Sans,10' enhanced
+set terminal pngcairo size 900,600 font 'DejaVu Sans,10' noenhanced
 set output "pareto_render_ggx.png.tmp.png"
 set datafile separator ','
-set key top right box opaque
+set key outside right top box opaque
 set grid xtics ytics lc rgb '#dddddd'
 set border lw 1
 set title "GGX: median min. validation MSE against rendering cost (ns per fragment) (labels: layers x width)"

@@ -1,7 +1,7 @@
-set terminal pngcairo size 800,520 font 'DejaVu Sans,10' enhanced
+set terminal pngcairo size 800,520 font 'DejaVu Sans,10' noenhanced
 set output "mse_vs_width.png.tmp.png"
 set datafile separator ','
-set key top right box opaque
+set key outside right top box opaque
 set grid xtics ytics lc rgb '#dddddd'
 set border lw 1
 set title "Table 4.1 — Phong: median minimum validation MSE by hidden layers and width"

@@ -1,4 +1,4 @@
-set terminal pngcairo size 1100,520 font 'DejaVu Sans,10' enhanced
+set terminal pngcairo size 1100,520 font 'DejaVu Sans,10' noenhanced
 set output "fig_4_11_activations.png.tmp.png"
 set datafile separator ','
 set key outside right top box opaque
