@@ -75,7 +75,13 @@ local function csv_cell(v)
   return s
 end
 
-local function md_cell(s) return (tostring(s):gsub("|", "\\|")) end
+-- A table cell as literal Markdown text: "CIE L*a*b*" is not emphasis, "my_sweep" not a start of
+-- it, a "|" not a column. A backslash is doubled only before punctuation (where Markdown reads it
+-- as an escape), so "layers \ width" stays as it is.
+local function md_cell(s)
+  s = tostring(s):gsub("\\(%p)", "\\\\%1")
+  return (s:gsub("[|*_`~]", "\\%0"))
+end
 
 -- The CSV text of rows under columns {key=...}: header = the keys, full precision numbers.
 function results.csv(columns, rows)

@@ -73,6 +73,10 @@ local rows = { { layers = 2, width = 4, ours = 0.0012346, thesis = 0.000736 }, {
 assert(results.csv(cols, rows) == "layers,width,ours,thesis\n2,4,0.0012346,0.000736\n2,6,0.5,\n", "csv")
 local md = results.markdown(cols, rows)
 assert(md:find("| 2 | 4 | 0.001235 | 0.000736 |", 1, true) and md:find("| 2 | 6 | 0.500000 | – |", 1, true), "markdown: " .. md)
+-- Cells are literal text: Markdown's emphasis and code characters are escaped.
+md = results.markdown({ { key = "space", header = "colour_space" } }, { { space = "CIE L*a*b*" }, { space = "a_b | `c`" } })
+assert(md:find("| colour\\_space |", 1, true) and md:find("| CIE L\\*a\\*b\\* |", 1, true) and
+       md:find("| a\\_b \\| \\`c\\` |", 1, true), "markdown escapes: " .. md)
 local grid = results.markdown_grid({ rows = "layers", cols = "width", value = "ours", thesis = "thesis", format = "%.6f" }, rows)
 assert(grid:find("| 2 | 0.001235 (0.000736) | 0.500000 |", 1, true), "grid: " .. grid)
 
