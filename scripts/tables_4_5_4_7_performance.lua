@@ -121,7 +121,7 @@ E.R:table {
   grids = {},
   columns = {
     { key = "layers", header = "hidden layers" }, { key = "backend", align = "left" }, { key = "batch" },
-    { key = "ms_per_batch", header = "ms / batch (ours)", format = "%.4f" },
+    { key = "ms_per_batch", header = "ms / batch (ours)", format = "%.3g" },
     { key = "thesis_cpu_ms", header = "thesis CPU", format = "%.3f" },
     { key = "thesis_gpu_ms", header = "thesis GPU", format = "%.3f" },
     { key = "batches_timed", header = "batches timed" },
@@ -137,9 +137,9 @@ E.R:table {
   title = "Many networks per job: 36 networks of 8 x 8, batch 8",
   columns = {
     { key = "backend", align = "left" }, { key = "nets" },
-    { key = "ms_per_batch_all", header = "ms per step of all nets", format = "%.4f" },
-    { key = "ms_per_batch_per_net", header = "ms per batch per net", format = "%.4f" },
-    { key = "single_net_ms", header = "one net alone: ms per batch", format = "%.4f" },
+    { key = "ms_per_batch_all", header = "ms per step of all nets", format = "%.3g" },
+    { key = "ms_per_batch_per_net", header = "ms per batch per net", format = "%.3g" },
+    { key = "single_net_ms", header = "one net alone: ms per batch", format = "%.3g" },
   },
   rows = many,
 }
@@ -154,10 +154,10 @@ E.R:table {
   },
   columns = {
     { key = "network", align = "left" }, { key = "image" }, { key = "backend", align = "left" }, { key = "covered", header = "covered fragments" },
-    { key = "ms_per_frame", header = "ms / frame (drawing)", format = "%.3f" },
+    { key = "ms_per_frame", header = "ms / frame (drawing)", format = "%.3g" },
     { key = "ns_per_fragment", header = "ns / fragment", format = "%.1f" },
-    { key = "ms_per_call", header = "ms / call (draw + read-back)", format = "%.3f" },
-    { key = "truth_ms_per_call", header = "GGX truth pass, ms / call", format = "%.3f" },
+    { key = "ms_per_call", header = "ms / call (draw + read-back)", format = "%.3g" },
+    { key = "truth_ms_per_call", header = "GGX truth pass, ms / call", format = "%.3g" },
     { key = "thesis_ms", header = "thesis ms / frame", format = "%.3f" },
     { key = "thesis_ns_per_fragment", header = "thesis ns / fragment", format = "%.1f" },
   },

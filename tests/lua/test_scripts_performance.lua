@@ -11,8 +11,13 @@ local rows = C.csv(dir .. "/table.csv")
 local backends = #sn.backends()
 assert(#rows == backends * 3 * 3, string.format("%d backends x 3 depths x 3 quick batch sizes, got %d", backends, #rows))
 C.assert_range(rows, "ms_per_batch", 1e-6, 1000, "training")
+-- table.md shows 3 significant digits of each time, so 0.000486 and 0.000510 ms differ there
+-- (with 4 decimals both were 0.0005).
+local md = C.read(dir .. "/table.md")
 for _, r in ipairs(rows) do
   assert(C.finite(r.thesis_cpu_ms) and C.finite(r.thesis_gpu_ms), "the thesis' rows beside ours")
+  local cell = string.format("| %d | %s | %d | %s |", r.layers, r.backend, r.batch, string.format("%.3g", r.ms_per_batch))
+  assert(md:find(cell, 1, true), "table.md shows " .. cell .. ":\n" .. md)
 end
 local render = C.csv(dir .. "/table_render.csv")
 assert(#render == 4 * 2, "4 networks x 2 quick image sizes")
