@@ -862,29 +862,43 @@ function E:compare(o)
   return rows
 end
 
--- How our cells compare with the thesis': Spearman's rank correlation (ties are not expected in
--- MSEs) and the median of ours / thesis over the rows that have both `key` and `thesis_key`;
+-- How our cells compare with the thesis': Spearman's rank correlation (ties get average ranks)
+-- and the median of ours / thesis over the rows that have both `key` and `thesis_key`;
 -- `notes` are the lines a table prints at its bottom (nil where a number has too few cells).
 function exp.vs_thesis(rows, key, thesis_key)
   local idx = {}
   for i, r in ipairs(rows) do
     if stats.finite(r[key]) and stats.finite(r[thesis_key]) then idx[#idx + 1] = i end
   end
+  -- Ranks 1..n; tied values share the mean of their positions (the thesis prints values to 2-3
+  -- digits, so its tables have ties), and the row index breaks no tie.
   local function ranks(k)
     local order = { unpack(idx) }
-    table.sort(order, function(a, b) return rows[a][k] < rows[b][k] end)
-    local rk = {}
-    for pos, i in ipairs(order) do rk[i] = pos end
+    table.sort(order, function(a, b) return rows[a][k] < rows[b][k] or (rows[a][k] == rows[b][k] and a < b) end)
+    local rk, pos = {}, 1
+    while pos <= #order do
+      local last = pos
+      while last < #order and rows[order[last + 1]][k] == rows[order[pos]][k] do last = last + 1 end
+      for j = pos, last do rk[order[j]] = (pos + last) / 2 end
+      pos = last + 1
+    end
     return rk
   end
   local n = #idx
   local ro, rt = ranks(key), ranks(thesis_key)
-  local d2, ratios = 0, {}
-  for _, i in ipairs(idx) do
-    d2 = d2 + (ro[i] - rt[i]) ^ 2
-    ratios[#ratios + 1] = rows[i][key] / rows[i][thesis_key]
+  local ratios = {}
+  for _, i in ipairs(idx) do ratios[#ratios + 1] = rows[i][key] / rows[i][thesis_key] end
+  -- Spearman's rho: Pearson's correlation of the ranks (1 - 6 sum d^2 / (n (n^2 - 1)) only holds
+  -- without ties). nil when either side is all one value.
+  local spearman
+  if n > 2 then
+    local mean = (n + 1) / 2
+    local so, st, sot = 0, 0, 0
+    for _, i in ipairs(idx) do
+      so, st, sot = so + (ro[i] - mean) ^ 2, st + (rt[i] - mean) ^ 2, sot + (ro[i] - mean) * (rt[i] - mean)
+    end
+    if so > 0 and st > 0 then spearman = sot / math.sqrt(so * st) end
   end
-  local spearman = n > 2 and 1 - 6 * d2 / (n * (n * n - 1)) or nil
   local median_ratio = stats.median(ratios)
   return {
     n = n, spearman = spearman, median_ratio = median_ratio,

@@ -90,6 +90,16 @@ local exp = require "lib.experiment"
 local recs = { a = { result = { best_val_mse = 1 } }, b = { result = { diverged = { epoch = 1 } } },
                c = { result = { best_val_mse = 3 } } }
 local med, found, bad = exp.median_of(recs, { "a", "b", "c", "missing" }, "best_val_mse")
+-- Spearman's rank correlation with ties: average ranks, Pearson's correlation of the ranks
+-- (ours 1 2 2 3 5 4 against 1 1 2 3 4 5: 15.25 / 17).
+local vrows = {}
+for k, pair in ipairs { { 1, 1 }, { 2, 1 }, { 2, 2 }, { 3, 3 }, { 5, 4 }, { 4, 5 } } do
+  vrows[k] = { ours = pair[1], thesis = pair[2] }
+end
+local vs = exp.vs_thesis(vrows, "ours", "thesis")
+assert(math.abs(vs.spearman - 15.25 / 17) < 1e-12, "Spearman with ties: " .. tostring(vs.spearman))
+vs = exp.vs_thesis({ { ours = 3, thesis = 1 }, { ours = 1, thesis = 1 }, { ours = 2, thesis = 1 } }, "ours", "thesis")
+assert(vs.spearman == nil, "no rank correlation against a constant")
 -- Dead units: the mean over the records found (2 of 3 seeds here), not over every seed.
 local dead = exp.dead_units_per_layer({ s1 = { result = { dead_units = { 0.5, 0.25 } } },
                                         s2 = { result = { dead_units = { 0.25, 0 } } } }, { "s1", "s2", "s3" })
