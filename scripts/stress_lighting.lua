@@ -4,7 +4,7 @@
 -- under two lights (oblique, and along +Y where n.l = 0 is exact in float), on the GPU and on
 -- the double-precision twin. Prints a Markdown table of NaN / Inf / out-of-range counts, writes
 -- it to results/stress_lighting/table.md (+ .csv), and exits 1 unless every count is zero.
---   shadenet scripts/stress_lighting.lua [--out DIR]
+--   shadenet scripts/stress_lighting.lua [--quick] [--out DIR] [--help]  (--quick: the same grid, already small)
 -- Out of range: raw radiance below 0 or above the model's analytic bound (model:bound()); or a
 -- recorded value (clamped, then encoded as rgb / hsv / cie_xyz / cie_lab) outside its space.
 package.path = (arg and arg[0] and arg[0]:match("^(.*)/[^/]*$") or ".") .. "/?.lua;" .. package.path
@@ -41,11 +41,20 @@ M.columns = {
 
 local function main()
   local results = require "lib.results"
-  local out
-  for i = 1, #arg do
-    if arg[i] == "--out" then out = arg[i + 1]
-    elseif arg[i]:match("^%-%-") then error("stress_lighting: unknown option '" .. arg[i] .. "' (valid: --out DIR)", 0) end
+  local cli = require "lib.cli"
+  local list = {}
+  for i = 1, #arg do list[i] = arg[i] end
+  -- The command line every script shares (--help, --out DIR, a value missing is an error). The
+  -- stress grid is small and fixed: --quick runs the same grid; the options of training
+  -- (--shard, --backend, --data, --ggx, --runs-per-job) do not apply and are refused.
+  local o = cli.parse(list, "stress_lighting", nil, function() return nil end)
+  for _, key in ipairs { "shard", "backend", "data", "ggx", "runs_per_job" } do
+    if o.extra[key] then
+      error(string.format("stress_lighting.lua: --%s does not apply: the stress test trains nothing "
+                          .. "(valid: --quick, --out DIR, --help)", key:gsub("_", "-")), 0)
+    end
   end
+  local out = o.out
   local rows = M.rows()
   local failures = 0
   for _, r in ipairs(rows) do failures = failures + r.failures end

@@ -65,4 +65,16 @@ for i = 3, 4 do
 end
 assert(rows[1].texture_learned == "n/a", "(a) is not a texture case")
 C.rm(dir)
+
+-- scripts/stress_lighting.lua takes the shared command line: --quick and --help work, --out
+-- without a folder is an error (it used to write to results/ silently).
+local sdir = C.tmpdir("stress")
+C.ok("scripts/stress_lighting.lua", { "--quick", "--out", sdir })
+C.assert_files(sdir, { "table.md", "table.csv" })
+local scode, sout = C.run("scripts/stress_lighting.lua", { "--help" })
+assert(scode == 0 and sout:find("usage: shadenet scripts/stress_lighting.lua", 1, true), "stress --help:\n" .. sout)
+scode, sout = C.run("scripts/stress_lighting.lua", { "--out" })
+assert(scode ~= 0 and sout:find("--out needs a value", 1, true), "stress --out without a value:\n" .. sout)
+C.rm(sdir)
+
 print("section scripts: ok")
