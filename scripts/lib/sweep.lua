@@ -46,6 +46,15 @@ end
 
 function Sweep:file(run) return self.runs_dir .. "/" .. run.id .. ".json" end
 
+-- "sweep: ignoring FILE: why", once per file and reason however often the file is read.
+function Sweep:warn(run, why)
+  local line = "sweep: ignoring " .. self:file(run) .. ": " .. why .. " (not a finished run)\n"
+  self.warned = self.warned or {}
+  if self.warned[line] then return end
+  self.warned[line] = true
+  io.stderr:write(line)
+end
+
 -- The finished record of `run`, or nil when it has not run with this configuration (or `accept`
 -- refuses it; `any` = true skips that test). A run file that cannot be read is reported and
 -- treated as not finished (it will be trained again).
@@ -54,16 +63,34 @@ function Sweep:record(run, any)
   if not text then return nil end
   local ok, rec = pcall(json.decode, text, self:file(run))
   if not ok or type(rec) ~= "table" then
-    io.stderr:write("sweep: ignoring unreadable ", self:file(run), ": ", tostring(rec), "\n")
+    self:warn(run, "unreadable: " .. tostring(rec))
     return nil
   end
   if json.encode(rec.config or {}) ~= run.config_text then return nil end
-  -- A record's errors are >= 0 (or NaN, a diverged run): a tampered or corrupt one would enter
-  -- the tables, so it is reported and trained again.
-  for k, v in pairs(type(rec.result) == "table" and rec.result or {}) do
-    if type(k) == "string" and k:find("mse$") and type(v) == "number" and v < 0 then
-      io.stderr:write("sweep: ignoring ", self:file(run), ": ", k, " = ", tostring(v), " is negative\n")
-      return nil
+  -- A record's result is a table whose errors are numbers >= 0 (or NaN, a diverged run; or
+  -- absent, a run that diverged before any validation): a tampered or corrupt one would enter
+  -- the tables or stop the sweep, so it is reported (once) and trained again.
+  if type(rec.result) ~= "table" then
+    self:warn(run, "its result is " .. (rec.result == nil and "missing" or "a " .. type(rec.result) .. ", not a table"))
+    return nil
+  end
+  -- (An error is a number or, for a curve such as val_mse, a list of numbers.)
+  local function bad(k, v)
+    if type(v) ~= "number" then return string.format("%s = %s is a %s, not a number", k, json.encode(v), type(v)) end
+    if v < 0 then return k .. " = " .. tostring(v) .. " is negative" end
+  end
+  for k, v in pairs(rec.result) do
+    if type(k) == "string" and k:find("mse$") then
+      local why
+      if type(v) == "table" then
+        for i, x in pairs(v) do why = why or bad(k .. "[" .. tostring(i) .. "]", x) end
+      else
+        why = bad(k, v)
+      end
+      if why then
+        self:warn(run, why)
+        return nil
+      end
     end
   end
   if self.accept and not any and not self.accept(rec, run) then return nil end

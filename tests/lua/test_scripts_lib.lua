@@ -140,6 +140,23 @@ assert(#full:records() == 6 and #full:pending() == 1 and full:pending()[1].id ==
 trained = {}
 full:run { train = train }
 assert(#trained == 1 and trained[1] == "r5" and #full:records() == 7, "and trained again")
+-- A non-numeric error (a string, a table) or a result that is not a table is not a finished run
+-- either: the sweep trains it again instead of stopping on a comparison, and says so once.
+local real_stderr, said = io.stderr, { text = "" }
+function said:write(...) for _, t in ipairs({ ... }) do self.text = self.text .. t end end
+io.stderr = said
+results.write_file(path5, text5:gsub('"value": 50', '"value": 50, "best_val_mse": "0.5"'))
+local path6 = full:file(runs[6])
+local text6 = results.read_file(path6)
+results.write_file(path6, text6:gsub('"result": {[^}]*}', '"result": 7'))
+trained = {}
+local ok_run, run_err = pcall(full.run, full, { train = train, score = function(r) return r.best_val_mse end })
+io.stderr = real_stderr
+assert(ok_run, "a string best_val_mse stops the sweep: " .. tostring(run_err))
+assert(#trained == 2 and #full:records() == 7, "both trained again: " .. table.concat(trained, " "))
+local _, n5 = said.text:gsub('best_val_mse = "0.5" is a string, not a number', "")
+local _, n6 = said.text:gsub("its result is a number, not a table", "")
+assert(n5 == 1 and n6 == 1, "each file is reported once:\n" .. said.text)
 -- A changed configuration is not a finished run.
 runs[2].config = { i = 2, epochs = 3 }
 local changed = Sweep.new { dir = tmp .. "/sw", runs = runs, label = "t" }
