@@ -18,24 +18,33 @@ end
 Progress.duration = duration
 
 -- Progress.new{ total = N, label = "table_4_1_phong", tty = (default: stdout is a terminal),
---               every = 10 (seconds between plain lines), out = io.stdout }
+--               every = 10 (seconds between plain lines), out = io.stdout, clock = (tests) }
 function Progress.new(o)
   local tty = o.tty
   if tty == nil then tty = sn.isatty("stdout") end
+  local c = o.clock or clock
   local self = setmetatable({ total = o.total, label = o.label or "", tty = tty, every = o.every or 10,
-                              out = o.out or io.stdout, done = 0, start_done = o.already or 0,
-                              t0 = clock(), last_print = -math.huge, width = sn.terminal_width() or 100 }, Progress)
+                              out = o.out or io.stdout, done = 0, start_done = o.already or 0, clock = c,
+                              t0 = c(), last_print = -math.huge, width = sn.terminal_width() or 100 }, Progress)
   self.done = self.start_done
   Progress.active = self
   return self
 end
 
 -- The text of the line (exposed for tests).
+-- The ETA is the rate of the work since the first progress was reported (the training alone:
+-- the dataset and shader setup before it would inflate the first estimates many times over),
+-- shown once 2% of this run's work (at least a twentieth of a run) and a second lie behind it.
 function Progress:text()
-  local elapsed = clock() - self.t0
-  local fresh = self.done - self.start_done
+  local now = self.clock()
+  local elapsed = now - self.t0
   local remaining = self.total - self.done
-  local eta = fresh > 0 and elapsed / fresh * remaining or nil
+  local eta
+  if self.anchor then
+    local work, seconds = self.done - self.anchor.done, now - self.anchor.t
+    local enough = math.max(0.02 * (self.total - self.start_done), 0.05)
+    if work >= enough and seconds >= 1 then eta = seconds / work * remaining end
+  end
   -- Most useful first: a narrow terminal cuts the end of the line.
   local parts = { string.format("%s %d/%d runs", self.label, math.floor(self.done + 1e-9), self.total) }
   if remaining > 0 then parts[#parts + 1] = "ETA " .. (eta and duration(eta) or "?") end
@@ -53,7 +62,8 @@ end
 function Progress:update(done, best)
   self.done = done
   if best then self.best = best end
-  local now = clock()
+  local now = self.clock()
+  if not self.anchor and done > self.start_done then self.anchor = { t = now, done = done } end
   if self.tty then
     -- Redraw at most 10 times a second (and always at the end).
     if now - self.last_print < 0.1 and self.done < self.total then return end

@@ -194,6 +194,19 @@ function sink:flush() end
 local pr = Progress.new { total = 10, label = "x", tty = false, every = 0, out = sink, already = 2 }
 pr:update(4, "0.001 (L4 W6)")
 assert(sink.text:find("x 4/10 runs  ETA %S+  elapsed %S+  best 0.001 %(L4 W6%)"), "progress line: " .. sink.text)
+-- The ETA counts the training alone: 100 s of dataset and shader setup before the first tick do
+-- not make 1 run in 10 s look like 1 run in 110 s; no ETA before 2% of the work is done.
+local now = 0
+local pe = Progress.new { total = 10, label = "e", tty = false, every = 0, out = sink, clock = function() return now end }
+now = 100
+pe:update(0.01)
+assert(pe:text():find("ETA ?", 1, true), "no ETA from the first tick: " .. pe:text())
+now = 100.5
+pe:update(0.15)
+assert(pe:text():find("ETA ?", 1, true), "no ETA before 2% of the work: " .. pe:text())
+now = 110
+pe:update(1.01)
+assert(pe:text():find("ETA 1m30s", 1, true), "ETA from the training's rate (1 run per 10 s, 8.99 left): " .. pe:text())
 sink.text = ""
 local prt = Progress.new { total = 10, label = "x", tty = true, out = sink }
 prt:update(5)
