@@ -53,15 +53,17 @@ function cli.parse_shard(text, where)
 end
 
 -- The Slurm job array's slice, when this process is one task of one (ids may start at 0 or 1:
--- SLURM_ARRAY_TASK_MIN tells which).
+-- SLURM_ARRAY_TASK_MIN tells which; a stepped array, --array=0-14:2, has SLURM_ARRAY_TASK_STEP).
 function cli.slurm_shard(getenv)
   getenv = getenv or os.getenv
   local id, count = tonumber(getenv("SLURM_ARRAY_TASK_ID")), tonumber(getenv("SLURM_ARRAY_TASK_COUNT"))
   if not id or not count then return nil end
   local min = tonumber(getenv("SLURM_ARRAY_TASK_MIN")) or 0
-  local index = id - min + 1
-  if count < 1 or index < 1 or index > count then
-    error(string.format("SLURM_ARRAY_TASK_ID=%d (min %d) is outside an array of %d tasks", id, min, count), 0)
+  local step = tonumber(getenv("SLURM_ARRAY_TASK_STEP")) or 1
+  local index = step >= 1 and (id - min) / step + 1 or 0
+  if count < 1 or index < 1 or index > count or index % 1 ~= 0 then
+    error(string.format("SLURM_ARRAY_TASK_ID=%d (min %d, step %d) is outside an array of %d tasks", id, min, step,
+                        count), 0)
   end
   return { index = index, count = count, from = "slurm" }
 end

@@ -37,7 +37,8 @@ function exp.start(name, args, o)
   o = o or {}
   local list = {}
   for i = 1, #(args or {}) do list[i] = args[i] end
-  local opts = cli.parse(list, name, o.flags)
+  -- scripts/merge.lua reports on every run: a Slurm array task it runs in picks no shard.
+  local opts = cli.parse(list, name, o.flags, exp.report_only and function() return nil end or nil)
   local R = results.open(opts, name)
   local self = setmetatable({
     name = name, opts = opts, quick = opts.quick, R = R, dir = R.dir, args = list,

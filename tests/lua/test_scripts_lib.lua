@@ -36,6 +36,16 @@ assert(o.shard.index == 6 and o.shard.count == 8, "slurm 0-based array task 5 ->
 env.SLURM_ARRAY_TASK_MIN = "1"
 o = cli.parse({}, "t", nil, function(k) return env[k] end)
 assert(o.shard.index == 5, "slurm 1-based array")
+-- A stepped array (sbatch --array=0-14:2): ids 0, 2, ..., 14 are shards 1..8.
+local stepped = { SLURM_ARRAY_TASK_ID = "6", SLURM_ARRAY_TASK_COUNT = "8", SLURM_ARRAY_TASK_MIN = "0",
+                  SLURM_ARRAY_TASK_STEP = "2" }
+o = cli.parse({}, "t", nil, function(k) return stepped[k] end)
+assert(o.shard.index == 4 and o.shard.count == 8, "stepped array task 6 -> shard 4/8")
+stepped.SLURM_ARRAY_TASK_ID = "14"
+assert(cli.parse({}, "t", nil, function(k) return stepped[k] end).shard.index == 8, "the last task of a stepped array")
+stepped.SLURM_ARRAY_TASK_ID = "5"
+ok, err = pcall(cli.parse, {}, "t", nil, function(k) return stepped[k] end)
+assert(not ok and err:find("step 2"), "an id off the step: " .. tostring(err))
 o = cli.parse({ "--shard", "1/2" }, "t", nil, function(k) return env[k] end)
 assert(o.shard.index == 1 and o.shard.count == 2, "--shard wins over Slurm")
 o = cli.parse({ "--epochs", "7" }, "t", { { flag = "--epochs", value = "N", help = "epochs" } }, none)

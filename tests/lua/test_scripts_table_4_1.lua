@@ -46,7 +46,10 @@ local S1, S2, M = root .. "/s1", root .. "/s2", root .. "/merged"
 C.ok(script, { "--quick", "--shard", "1/2", "--out", S1 })
 C.ok(script, { "--quick", "--out", S2 }, { SLURM_ARRAY_TASK_ID = "1", SLURM_ARRAY_TASK_COUNT = "2", SLURM_ARRAY_TASK_MIN = "0" })
 assert(#C.csv(S1 .. "/table.csv") == 36, "a shard's table lists every cell")
-local out = C.ok("scripts/merge.lua", { S1, S2, "--out", M })
+-- merge.lua run inside a Slurm array task merges everything: the array's shard is not its own.
+local out = C.ok("scripts/merge.lua", { S1, S2, "--out", M },
+                 { SLURM_ARRAY_TASK_ID = "1", SLURM_ARRAY_TASK_COUNT = "2", SLURM_ARRAY_TASK_MIN = "0" })
+assert(C.json(M .. "/run.json").shard == nil, "the merged run.json names no shard")
 local code
 assert(out:find("72 run files from 2 folders"), "merge copies both shards' runs:\n" .. out)
 assert(C.read(M .. "/table.csv") == C.read(A .. "/table.csv"), "shard + merge = unsharded table")
