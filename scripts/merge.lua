@@ -57,8 +57,9 @@ for _, d in ipairs(dirs) do
                         tostring(info.experiment)), 0)
   end
   if quick ~= nil and info.quick ~= quick then
-    error("merge.lua: " .. d .. " was run " .. (info.quick and "with" or "without") .. " --quick, " .. dirs[1] ..
-          " was not: their runs are different experiments", 0)
+    local with, without = d, dirs[1]
+    if quick then with, without = dirs[1], d end
+    error("merge.lua: " .. with .. " was run with --quick, " .. without .. " without it: their runs are different experiments", 0)
   end
   for _, key in ipairs { "data", "ggx" } do
     local v = recorded(info, key)

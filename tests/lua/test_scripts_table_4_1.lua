@@ -101,6 +101,12 @@ results.write_file(f2, json.encode(info2))
 code, out = C.run("scripts/merge.lua", { W .. "/s1", W .. "/s2", "--out", W .. "/mixed" })
 assert(code ~= 0 and out:find("s1 was run with %-%-ggx gold, [^\n]*s2 with %-%-ggx thesis: their runs are different experiments"),
        "mixed options refused:\n" .. out)
+-- A full-mode shard beside a quick one: the message names which is which.
+info2.options, info2.quick = nil, false
+results.write_file(f2, json.encode(info2))
+code, out = C.run("scripts/merge.lua", { W .. "/s1", W .. "/s2", "--out", W .. "/mixed" })
+assert(code ~= 0 and out:find("s1 was run with %-%-quick, [^\n]*s2 without it: their runs are different experiments"),
+       "quick and full refused, named the right way round:\n" .. out)
 
 -- Resumed: half the runs already there.
 local R = root .. "/resumed"
