@@ -48,6 +48,19 @@ function exp.start(name, args, o)
     t0 = sn.clock(), timings = {}, datasets = {}, scenes = {}, sweeps = {}, baselines = {},
     load_at_start = results.load_average(),
   }, E)
+  -- Every table says when it is not the full experiment: quick mode, or one shard's runs.
+  R.notices = {}
+  if opts.quick then
+    R.notices[#R.notices + 1] = "**Quick mode (--quick):** fewer seeds and epochs, 8,000 samples and smaller images: a "
+                                .. "smoke run, not the thesis' recipe; its numbers are not the experiment's."
+  end
+  if opts.shard then
+    R.notices[#R.notices + 1] = string.format("**One shard (%d/%d%s):** this shard trained only its own runs; the "
+                                              .. "table holds those and any others already in its folder, – marks "
+                                              .. "the rest. Merge the shards with scripts/merge.lua.",
+                                              opts.shard.index, opts.shard.count,
+                                              opts.shard.from and ", from " .. opts.shard.from or "")
+  end
   exp.model_params.ggx = exp.ggx_presets[self.ggx_choice]
   exp.ggx_used = false  -- this experiment's notes name the GGX only if it uses one
   local shard = opts.shard and string.format(" shard %d/%d%s", opts.shard.index, opts.shard.count,

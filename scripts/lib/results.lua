@@ -179,12 +179,13 @@ end
 
 -- R:table{ file = "table", title = "...", columns = {{key, header, format}...}, rows = {...},
 --          grids = {{title, rows, cols, value, thesis, format}...}, notes = {"..."} }
--- writes FILE.md (title, grids, the long table, notes) and FILE.csv (the long table). When
--- R.partial is set (a stopped sweep), FILE.md says so under its title.
+-- writes FILE.md (title, grids, the long table, notes) and FILE.csv (the long table). Under its
+-- title FILE.md prints R.notices (lines: quick mode, one shard) and R.partial (a stopped sweep).
 function Results:table(t)
   local file = t.file or "table"
   local md = {}
   if t.title then md[#md + 1] = "## " .. t.title .. "\n" end
+  for _, n in ipairs(self.notices or {}) do md[#md + 1] = n .. "\n" end
   if self.partial then md[#md + 1] = self.partial .. "\n" end
   for _, g in ipairs(t.grids or {}) do md[#md + 1] = results.markdown_grid(g, t.rows) end
   md[#md + 1] = results.markdown(t.columns, t.rows)

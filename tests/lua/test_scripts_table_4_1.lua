@@ -40,16 +40,20 @@ assert(info.quick == true and info.backend.used == "cpu" and info.environment.gl
 local md = C.read(A .. "/table.md")
 assert(md:find("| hidden layers \\ width |", 1, true) and md:find("(0.002158)", 1, true), "markdown grid with thesis values")
 assert(not md:find("GGX", 1, true), "a Phong table's notes name no GGX")
+assert(md:find("**Quick mode (--quick):**", 1, true) and not md:find("One shard", 1, true), "a quick table says so:\n" .. md)
 
 -- Sharded in two, merged: the same table.
 local S1, S2, M = root .. "/s1", root .. "/s2", root .. "/merged"
 C.ok(script, { "--quick", "--shard", "1/2", "--out", S1 })
 C.ok(script, { "--quick", "--out", S2 }, { SLURM_ARRAY_TASK_ID = "1", SLURM_ARRAY_TASK_COUNT = "2", SLURM_ARRAY_TASK_MIN = "0" })
 assert(#C.csv(S1 .. "/table.csv") == 36, "a shard's table lists every cell")
+assert(C.read(S1 .. "/table.md"):find("**One shard (1/2):**", 1, true) and
+       C.read(S2 .. "/table.md"):find("**One shard (2/2, from slurm):**", 1, true), "a shard's table says it is one")
 -- merge.lua run inside a Slurm array task merges everything: the array's shard is not its own.
 local out = C.ok("scripts/merge.lua", { S1, S2, "--out", M },
                  { SLURM_ARRAY_TASK_ID = "1", SLURM_ARRAY_TASK_COUNT = "2", SLURM_ARRAY_TASK_MIN = "0" })
-assert(C.json(M .. "/run.json").shard == nil, "the merged run.json names no shard")
+assert(C.json(M .. "/run.json").shard == nil and not C.read(M .. "/table.md"):find("One shard", 1, true),
+       "the merged run.json and table name no shard")
 local code
 assert(out:find("72 run files from 2 folders"), "merge copies both shards' runs:\n" .. out)
 assert(C.read(M .. "/table.csv") == C.read(A .. "/table.csv"), "shard + merge = unsharded table")
