@@ -121,7 +121,13 @@ function results.markdown_grid(g, rows)
     local a, b = r[g.rows], r[g.cols]
     if not seen_r[a] then seen_r[a] = true rvals[#rvals + 1] = a end
     if not seen_c[b] then seen_c[b] = true cvals[#cvals + 1] = b end
-    cell[tostring(a) .. "\0" .. tostring(b)] = r
+    local key = tostring(a) .. "\0" .. tostring(b)
+    if cell[key] then  -- one cell, two rows: keeping the last would hide the other
+      error(string.format("results.markdown_grid: two rows have %s = %s and %s = %s; a grid shows one row per cell "
+                          .. "(add the field that tells them apart to the grid or to the rows' values)",
+                          tostring(g.rows), tostring(a), tostring(g.cols), tostring(b)), 0)
+    end
+    cell[key] = r
   end
   local head = { md_cell((g.row_header or g.rows) .. " \\ " .. (g.col_header or g.cols)) }
   local rule = { "---" }

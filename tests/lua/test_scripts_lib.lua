@@ -89,6 +89,9 @@ assert(md:find("| colour\\_space |", 1, true) and md:find("| CIE L\\*a\\*b\\* |"
        md:find("| a\\_b \\| \\`c\\` |", 1, true), "markdown escapes: " .. md)
 local grid = results.markdown_grid({ rows = "layers", cols = "width", value = "ours", thesis = "thesis", format = "%.6f" }, rows)
 assert(grid:find("| 2 | 0.001235 (0.000736) | 0.500000 |", 1, true), "grid: " .. grid)
+ok, err = pcall(results.markdown_grid, { rows = "layers", cols = "width", value = "ours" },
+                { rows[1], rows[2], { layers = 2, width = 4, ours = 0.3 } })
+assert(not ok and err:find("two rows have layers = 2 and width = 4", 1, true), "a duplicate cell is an error: " .. tostring(err))
 
 -- ---- stats ----
 assert(stats.median({ 3, 1, 2 }) == 2 and stats.median({ 4, 1, 3, 2 }) == 2.5, "median")
