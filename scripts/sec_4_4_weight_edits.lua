@@ -116,24 +116,33 @@ local function view_of(m)
 end
 local meshes = { { mesh = exp.meshes.train, label = "training mesh", view = 1 },
                  { mesh = exp.meshes.test, label = "test mesh", view = 2 } }
-local panels, row_labels, rows = {}, {}, {}
+local panels, row_labels, rows, panel_rows = {}, {}, {}, {}
 for _, m in ipairs(meshes) do
   local truth, render = view_of(m)
   local base = render(fitted)
+  local base_mse = sn.image.mse(truth, base, { channels = 3, mask = truth })
   panels[#panels + 1] = { image = truth, caption = "toon ground truth" }
-  panels[#panels + 1] = { image = base, caption = string.format("fitted, MSE %.2e", sn.image.mse(truth, base, { channels = 3, mask = truth })) }
+  panels[#panels + 1] = { image = base, caption = string.format("fitted, MSE %.2e", base_mse) }
+  panel_rows[#panel_rows + 1] = { mesh = m.label, view = m.view, panel = "fitted", mse = base_mse }
   for k, e in ipairs(edits) do
     local img = render(e.net)
     panels[#panels + 1] = { image = img, caption = string.format("(%s) %s", string.char(96 + k), e.caption) }
     local chroma, pattern = change(base, img)
     rows[#rows + 1] = { mesh = m.label, edit = string.char(96 + k), layer = e.layer, description = e.label,
                         chroma_change = chroma, pattern_change = pattern }
+    panel_rows[#panel_rows + 1] = { mesh = m.label, view = m.view, panel = "(" .. string.char(96 + k) .. ") " .. e.label,
+                                    mse = sn.image.mse(truth, img, { channels = 3, mask = truth }),
+                                    chroma_change = chroma, pattern_change = pattern }
   end
   row_labels[#row_labels + 1] = m.label
 end
 E:figure("figures/weight_edits.png", sn.image.grid {
   panels = panels, columns = #edits + 2, row_labels = row_labels,
   title = "Section 4.4 — a toon-shading network (8 x 12) edited by hand", caption_size = size[1] >= 300 and 14 or 11 })
+-- Each panel's MSE against the toon truth (an edit's too: how far it moved from the truth), and
+-- an edit's change against the fitted network.
+E.R:write("figures/weight_edits.csv", results.csv({ { key = "mesh" }, { key = "view" }, { key = "panel" }, { key = "mse" },
+                                                    { key = "chroma_change" }, { key = "pattern_change" } }, panel_rows))
 
 -- Figure 4.17: stylised looks from hand edits of the 8 x 12 network, as the thesis shows three
 -- (a watercolour-like shade, shades in different colours, strokes). Ours: (a) every middle layer's

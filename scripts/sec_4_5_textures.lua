@@ -13,6 +13,7 @@ package.path = (arg and arg[0] and arg[0]:match("^(.*)/[^/]*$") or ".") .. "/?.l
 local sn = require "shadenet"
 local exp = require "lib.experiment"
 local thesis = require "lib.thesis"
+local results = require "lib.results"
 
 local E = exp.start("sec_4_5_textures", arg)
 local epochs = E:pick(10, exp.epochs)
@@ -88,7 +89,7 @@ end
 
 local size = E:pick({ 200, 150 }, { 480, 360 })
 local scene = E:scene { mesh = exp.meshes.train, size = size, views = 8 }
-local panels, row_labels, rows = {}, {}, {}
+local panels, row_labels, rows, panel_rows = {}, {}, {}, {}
 for _, c in ipairs(cases) do
   local rec = records[c.id]
   if rec then
@@ -108,6 +109,8 @@ for _, c in ipairs(cases) do
     local base = E:baseline(c.desc)
     local m = rec.result.best_val_mse
     local fine, coarse = detail(img) / detail(truth), detail(img, 4) / detail(truth, 4)
+    panel_rows[#panel_rows + 1] = { case = c.label, view = 1, network = arch, mse = mse, detail_kept = fine,
+                                    coarse_detail_kept = coarse }
     rows[#rows + 1] = {
       case = c.label, inputs = table.concat(c.desc.inputs, " + "), network = arch,
       encoding = c.encoding and encoding_text or "none",
@@ -121,6 +124,10 @@ if #panels > 0 then
     panels = panels, columns = 3, row_labels = row_labels,
     title = "Section 4.5 — textures: what a fully connected network loses, and a frequency encoding",
     caption_size = size[1] >= 300 and 14 or 11 })
+  -- The per-panel MSEs, as every figure has beside it (each row's network panel; its error
+  -- heatmap shows the same difference).
+  E.R:write("figures/textures.csv", results.csv({ { key = "case" }, { key = "view" }, { key = "network" }, { key = "mse" },
+                                                  { key = "detail_kept" }, { key = "coarse_detail_kept" } }, panel_rows))
 end
 E.R:table {
   title = "Section 4.5 — textured targets: validation MSE, how much detail survives, whether the texture is learned",

@@ -10,6 +10,10 @@ C.assert_files(dir, { "figures/weight_edits.png", "table.md", "table.csv", "run.
 local rows = C.csv(dir .. "/table.csv")
 assert(#rows == 12, "6 edits x 2 meshes")
 C.assert_range(rows, "chroma_change", 0, 2, "edits")
+-- The figure's per-panel MSEs beside it: the fitted network and each edit, on both meshes.
+local wpanels = C.csv(dir .. "/figures/weight_edits.csv")
+assert(#wpanels == 2 * 7, "fitted + 6 edits on 2 meshes: " .. #wpanels)
+C.assert_range(wpanels, "mse", 0, 1, "weight_edits panels")
 C.assert_range(rows, "pattern_change", 0, 2, "edits")
 local e = {}
 for _, r in ipairs(rows) do if r.mesh == "training mesh" then e[r.edit] = r end end
@@ -45,6 +49,11 @@ C.ok("scripts/sec_4_5_textures.lua", { "--quick", "--out", dir })
 C.assert_files(dir, { "figures/textures.png", "table.md", "table.csv", "run.json" })
 rows = C.csv(dir .. "/table.csv")
 assert(#rows == 4, "textured Phong, texture, texture frequency-encoded into two networks")
+local tpanels = C.csv(dir .. "/figures/textures.csv")
+assert(#tpanels == 4, "a per-panel MSE for each row of the textures figure: " .. #tpanels)
+for i, p in ipairs(tpanels) do
+  assert(math.abs(p.mse - rows[i].image_mse) <= 1e-6 * rows[i].image_mse, "the figure's MSE is the table's image MSE")
+end
 C.assert_range(rows, "val_mse", 1e-7, 0.05, "textures")
 C.assert_range(rows, "detail_kept", 0, 1.5, "textures")
 assert(rows[1].thesis_val_mse == thesis.sec_4_5.textured_phong and rows[2].thesis_val_mse == thesis.sec_4_5.texture_from_position_uv,
