@@ -44,7 +44,7 @@ local function recorded(info, key)
 end
 
 -- Which experiment, in which mode, on which data: every shard must agree.
-local name, quick, backend
+local name, quick, backend, recorded_script
 local options, first_with = {}, {}
 for _, d in ipairs(dirs) do
   if sn.fs.exists(d) ~= "folder" then error("merge.lua: '" .. d .. "' is not a folder", 0) end
@@ -75,14 +75,22 @@ for _, d in ipairs(dirs) do
     options[key], first_with[key] = v, first_with[key] or d
   end
   name, quick = info.experiment, info.quick
+  recorded_script = recorded_script or info.script or
+                    (type(info.command) == "string" and info.command:match("^%S+%s+(%S+%.lua)") or nil)
   -- The backend the shards asked for, when they agree (each shard trained its runs on it);
   -- otherwise auto, which takes every run whatever trained it.
   local asked = info.backend and info.backend.requested or "auto"
   backend = (backend == nil or backend == asked) and asked or "auto"
 end
-local script = "scripts/" .. name .. ".lua"
-if arg[0] then script = (arg[0]:match("^(.*)/[^/]*$") or ".") .. "/" .. name .. ".lua" end
-if sn.fs.exists(script) ~= "file" then error("merge.lua: the experiment script " .. script .. " is missing", 0) end
+-- The experiment script: where the shards ran it from (run.json's `script`, or its command
+-- line's), else the one of that name beside merge.lua.
+local beside = (arg[0] and (arg[0]:match("^(.*)/[^/]*$") or ".") or "scripts") .. "/" .. name .. ".lua"
+local script = recorded_script
+if not script or sn.fs.exists(script) ~= "file" then script = beside end
+if sn.fs.exists(script) ~= "file" then
+  error("merge.lua: the experiment script is missing: " .. (recorded_script and (recorded_script .. " (as the shards ran it), ")
+        or "") .. beside, 0)
+end
 
 if not out then
   local parent = dirs[1]:match("^(.*)/[^/]+$") or "."

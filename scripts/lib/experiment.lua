@@ -42,6 +42,8 @@ function exp.start(name, args, o)
   local R = results.open(opts, name)
   local self = setmetatable({
     name = name, opts = opts, quick = opts.quick, R = R, dir = R.dir, args = list,
+    -- the script as it was run (a user's own experiment may live anywhere); merge.lua runs it
+    script = args and type(args[0]) == "string" and args[0] or "scripts/" .. name .. ".lua",
     backend = opts.backend or o.backend or "auto",
     data_choice = opts.data or "poses",
     ggx_choice = opts.ggx or "thesis",
@@ -493,8 +495,16 @@ function exp.make_net(c)
                   input_names = c.data.inputs, encoding = encoding_from_config(c.encoding) }
 end
 
--- The trained network of a finished record (needs keep_params in its config).
-function exp.net_from_record(rec)
+-- The trained network of a finished record (needs keep_params in its config). `id` names the
+-- run in the error when there is no record: under --shard i/n every sweep is split, so a
+-- figure's one-run sweep trains in one shard only (the first) and the others have no record.
+function exp.net_from_record(rec, id)
+  if not rec then
+    error(string.format("exp.net_from_record: run %s is not finished in this folder: under --shard i/n every "
+                        .. "E:sweep is split round robin, so a sweep of one run trains in shard 1 only; check "
+                        .. "`if records[id]`, or draw the figure after merging the shards (scripts/merge.lua)",
+                        id and ("'" .. tostring(id) .. "'") or "(nil record)"), 2)
+  end
   assert(rec.result.params, "run " .. rec.id .. " kept no parameters (keep_params)")
   local net = exp.make_net(rec.config)
   net:set_params(rec.result.params)
@@ -940,7 +950,8 @@ function E:finish(o)
   local env = results.environment()
   local info = {
     experiment = self.name,
-    command = "shadenet scripts/" .. self.name .. ".lua " .. table.concat(self.args, " "),
+    command = "shadenet " .. self.script .. " " .. table.concat(self.args, " "),
+    script = self.script,
     quick = self.quick,
     -- what chose the data (scripts/merge.lua re-runs the experiment with them)
     options = { data = self.data_choice, ggx = self.ggx_choice },

@@ -112,6 +112,29 @@ code, out = C.run("scripts/merge.lua", { W .. "/s1", W .. "/s2", "--out", W .. "
 assert(code ~= 0 and out:find("s1 was run with %-%-quick, [^\n]*s2 without it: their runs are different experiments"),
        "quick and full refused, named the right way round:\n" .. out)
 
+-- An experiment of one's own, outside scripts/: run.json records its real path and merge.lua
+-- runs it from there; a one-run figure sweep trains in shard 1 only, and in shard 2 a network
+-- asked of its missing record is a clear error, not "attempt to index local 'rec'".
+local own, own_dir = C.child("own", [[
+package.path = "scripts/?.lua;" .. package.path
+local exp = require "lib.experiment"
+local E = exp.start("my_own", arg)
+local desc = E:data_desc { model = "phong" }
+local runs = {}
+for seed = 1, 2 do runs[seed] = exp.run { id = "s" .. seed, hidden = { 4 }, seed = seed, epochs = 1, data = desc } end
+local records = E:sweep(runs)
+local fig = E:sweep { exp.run { id = "fig", hidden = { 4 }, seed = 3, epochs = 1, data = desc, keep_params = true } }
+if not os.getenv("NO_FIGURE") then exp.net_from_record(fig.fig, "fig") end
+E:finish { records = records }
+]])
+C.ok(own, { "--quick", "--shard", "1/2", "--out", own_dir .. "/s1" })
+assert(C.json(own_dir .. "/s1/run.json").command:find("shadenet " .. own .. " --quick", 1, true), "run.json names the real script")
+code, out = C.run(own, { "--quick", "--shard", "2/2", "--out", own_dir .. "/s2" })
+assert(code ~= 0 and out:find("run 'fig' is not finished in this folder: under %-%-shard i/n"), "a clear error:\n" .. out)
+C.ok(own, { "--quick", "--shard", "2/2", "--out", own_dir .. "/s2" }, { NO_FIGURE = "1" })
+out = C.ok("scripts/merge.lua", { own_dir .. "/s1", own_dir .. "/s2", "--out", own_dir .. "/merged" })
+assert(C.json(own_dir .. "/merged/run.json").sweeps[1].finished == 2, "the merge ran the script from its folder:\n" .. out)
+
 -- Resumed: half the runs already there.
 local R = root .. "/resumed"
 local kept = C.copy_runs(A, R, function(i) return i % 2 == 0 end)
