@@ -47,7 +47,7 @@ local function main()
   -- The command line every script shares (--help, --out DIR, a value missing is an error). The
   -- stress grid is small and fixed: --quick runs the same grid; the options of training
   -- (--shard, --backend, --data, --ggx, --runs-per-job) do not apply and are refused.
-  local o = cli.parse(list, "stress_lighting", nil, function() return nil end)
+  local o = cli.parse_or_exit(list, "stress_lighting", nil, function() return nil end)
   for _, key in ipairs { "shard", "backend", "data", "ggx", "runs_per_job" } do
     if o.extra[key] then
       error(string.format("stress_lighting.lua: --%s does not apply: the stress test trains nothing "

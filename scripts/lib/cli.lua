@@ -137,4 +137,15 @@ function cli.parse(args, name, extra, getenv)
   return o
 end
 
+-- cli.parse for a script's own command line: a mistake in it is the user's typing, not the
+-- script's fault, so it prints the message alone (no Lua traceback) and exits 2, the usual
+-- status of a command-line error.
+function cli.parse_or_exit(args, name, extra, getenv)
+  local ok, o = pcall(cli.parse, args, name, extra, getenv)
+  if ok then return o end
+  local script = arg and arg[0] or "scripts/" .. name .. ".lua"
+  io.stderr:write(tostring(o), "\n(shadenet ", script, " --help lists the options)\n")
+  os.exit(2)
+end
+
 return cli

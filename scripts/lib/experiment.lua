@@ -38,7 +38,7 @@ function exp.start(name, args, o)
   local list = {}
   for i = 1, #(args or {}) do list[i] = args[i] end
   -- scripts/merge.lua reports on every run: a Slurm array task it runs in picks no shard.
-  local opts = cli.parse(list, name, o.flags, exp.report_only and function() return nil end or nil)
+  local opts = cli.parse_or_exit(list, name, o.flags, exp.report_only and function() return nil end or nil)
   local R = results.open(opts, name)
   local self = setmetatable({
     name = name, opts = opts, quick = opts.quick, R = R, dir = R.dir, args = list,

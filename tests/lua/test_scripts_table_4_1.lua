@@ -171,9 +171,10 @@ out = C.ok(script, { "--quick", "--out", T })
 assert(out:find("resuming, 36 of 72"), "the re-run resumes:\n" .. out)
 assert(C.read(T .. "/table.csv") == C.read(A .. "/table.csv"), "stopped in training + resumed = uninterrupted")
 
--- An unknown option lists the valid ones.
+-- An unknown option lists the valid ones: a command-line error, exit 2, without a Lua traceback.
 code, out = C.run(script, { "--quik" })
-assert(code ~= 0 and out:find("unknown option '%-%-quik' %(valid: %-%-quick, %-%-shard i/n, %-%-out DIR"), out)
+assert(code == 2 and out:find("unknown option '%-%-quik' %(valid: %-%-quick, %-%-shard i/n, %-%-out DIR"), out)
+assert(not out:find("traceback") and out:find("--help lists the options", 1, true), out)
 
 C.rm(root)
 print("table_4_1 script: ok")
