@@ -23,9 +23,11 @@
 #include "scene/gltf.h"
 #include "scene/mesh.h"
 #include "scene/procedural.h"
+#include "gltf_fixture.h"
 
 namespace fs = std::filesystem;
 using namespace sn::scene;
+using namespace gltf_fixture;
 
 namespace {
 
@@ -80,59 +82,6 @@ void expect_consistent_winding(const Mesh& m) {
   }
 }
 
-// ---- glTF fixtures built with tinygltf's writer (an independent path from our reader) ----
-class Fixture {
- public:
-  Fixture() {
-    model.asset.version = "2.0";
-    model.buffers.resize(1);
-  }
-  template <class T>
-  int view(const std::vector<T>& data, int stride = 0) {
-    auto& buf = model.buffers[0].data;
-    buf.resize((buf.size() + 3) & ~size_t(3));
-    tinygltf::BufferView v;
-    v.buffer = 0;
-    v.byteOffset = buf.size();
-    v.byteLength = data.size() * sizeof(T);
-    v.byteStride = size_t(stride);
-    const auto* p = reinterpret_cast<const unsigned char*>(data.data());
-    buf.insert(buf.end(), p, p + v.byteLength);
-    model.bufferViews.push_back(v);
-    return int(model.bufferViews.size()) - 1;
-  }
-  int accessor(int view, int component, int type, size_t count, size_t offset = 0) {
-    tinygltf::Accessor a;
-    a.bufferView = view;
-    a.componentType = component;
-    a.type = type;
-    a.count = count;
-    a.byteOffset = offset;
-    model.accessors.push_back(a);
-    return int(model.accessors.size()) - 1;
-  }
-  int vec3s(const std::vector<float>& v) {
-    return accessor(view(v), TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, v.size() / 3);
-  }
-  std::string write(const fs::path& path) {
-    std::ostringstream s;
-    tinygltf::TinyGLTF w;
-    EXPECT_TRUE(w.WriteGltfSceneToStream(&model, s, true, false));
-    std::ofstream(path) << s.str();
-    return path.string();
-  }
-  tinygltf::Model model;
-};
-
-tinygltf::Primitive primitive(int mode, int pos, int nrm = -1, int idx = -1) {
-  tinygltf::Primitive p;
-  p.mode = mode;
-  p.attributes["POSITION"] = pos;
-  if (nrm >= 0) p.attributes["NORMAL"] = nrm;
-  p.indices = idx;
-  return p;
-}
-
 // One mesh under node B (matrix: translate 0,0,1) under root node A (TRS: translate (1,2,3),
 // rotate 90 degrees about Y, scale (2,1,1)); its primitives use every index form and mode.
 std::string transform_fixture(const fs::path& path) {
@@ -181,38 +130,6 @@ std::string transform_fixture(const fs::path& path) {
   m.scenes.push_back(s);
   m.defaultScene = 0;
   return f.write(path);
-}
-
-// Base64 for hand-written fixtures (tinygltf cannot write sparse accessors).
-std::string base64(const std::vector<unsigned char>& in) {
-  static const char* t = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  for (size_t i = 0; i < in.size(); i += 3) {
-    unsigned v = unsigned(in[i]) << 16 | (i + 1 < in.size() ? unsigned(in[i + 1]) << 8 : 0) |
-                 (i + 2 < in.size() ? in[i + 2] : 0);
-    out += t[v >> 18 & 63];
-    out += t[v >> 12 & 63];
-    out += i + 1 < in.size() ? t[v >> 6 & 63] : '=';
-    out += i + 2 < in.size() ? t[v & 63] : '=';
-  }
-  return out;
-}
-
-// A one-triangle file whose accessors are given as raw JSON, over one buffer `bytes`.
-std::string raw_fixture(const fs::path& path, const std::vector<unsigned char>& bytes, const std::string& views,
-                        const std::string& accessors, const std::string& primitive,
-                        const std::string& nodes = R"([{"mesh": 0}])") {
-  std::ofstream(path) << R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": )" << nodes
-                      << R"(, "meshes": [{"primitives": [)" << primitive << R"(]}], "buffers": [{"byteLength": )"
-                      << bytes.size() << R"(, "uri": "data:application/octet-stream;base64,)" << base64(bytes)
-                      << R"("}], "bufferViews": )" << views << R"(, "accessors": )" << accessors << "}";
-  return path.string();
-}
-
-std::vector<unsigned char> float_bytes(const std::vector<float>& v) {
-  std::vector<unsigned char> b(v.size() * 4);
-  std::memcpy(b.data(), v.data(), b.size());
-  return b;
 }
 
 }  // namespace
