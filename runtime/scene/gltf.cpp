@@ -446,8 +446,19 @@ class GltfLoader {
                                                      : std::string()) +
                                  "; points and lines are not drawn)");
     mesh_.has_normals = true;
-    mesh_.has_uvs = primitives_with_uvs_ == primitives_used_;
-    if (!mesh_.has_uvs) std::fill(mesh_.uvs.begin(), mesh_.uvs.end(), glm::vec2(0));
+    // A primitive without texture coordinates (a textured body's untextured eyes) keeps (0, 0)
+    // rather than taking the others' away: they used to be zeroed too, drawing one flat colour.
+    mesh_.has_uvs = primitives_with_uvs_ > 0;
+    if (mesh_.has_uvs && !primitives_without_uvs_.empty()) {
+      std::string which;
+      for (std::size_t i = 0; i < primitives_without_uvs_.size() && i < 3; ++i)
+        which += (i ? ", " : "") + primitives_without_uvs_[i];
+      if (primitives_without_uvs_.size() > 3) which += ", ...";
+      mesh_.notes.push_back("has " + std::to_string(primitives_without_uvs_.size()) + " of " +
+                            std::to_string(primitives_used_) + " primitives without texture coordinates (" + which +
+                            "): their uvs are (0, 0), so a texture shows its top-left texel there; give them "
+                            "texture coordinates in the file for more");
+    }
     // The file's tangents are used when every primitive has them (a degenerate one is replaced by
     // the generated frame); otherwise all are generated alike when drawn (tangents.h).
     if (primitives_with_tangents_ == primitives_used_) {
@@ -611,6 +622,7 @@ class GltfLoader {
       mesh_.uvs.push_back(uv.empty() ? glm::vec2(0) : glm::vec2(float(uv[2 * i]), float(uv[2 * i + 1])));
     }
     if (!uv.empty()) ++primitives_with_uvs_;
+    else primitives_without_uvs_.push_back(what + " (TEXCOORD_0)");
     if (!tan.empty()) ++primitives_with_tangents_;
     for (uint32_t i : tris) mesh_.indices.push_back(uint32_t(base) + i);
 
@@ -652,6 +664,7 @@ class GltfLoader {
   int texture_image_ = -1;
   int placements_hidden_ = 0;  // meshes placed by a node whose transform is singular (scaled to zero)
   int primitives_seen_ = 0, primitives_used_ = 0, primitives_with_uvs_ = 0, primitives_with_tangents_ = 0;
+  std::vector<std::string> primitives_without_uvs_;  // "mesh 0 primitive 1 (TEXCOORD_0)"
   std::vector<glm::vec4> file_tangents_;
   std::size_t node_visits_ = 0;
   const io::Limits limits_ = io::limits();
