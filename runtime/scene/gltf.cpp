@@ -544,10 +544,13 @@ class GltfLoader {
         throw FileError(path_, what + ": TANGENT has " + std::to_string(tan.size() / 4) + " elements, POSITION " +
                                    std::to_string(count));
     }
-    if (auto it = prim.attributes.find("TEXCOORD_0"); it != prim.attributes.end()) {
-      uv = reader_.read(it->second, 2, what + " TEXCOORD_0");
+    // The set the material's base-colour texture names (texCoord n: TEXCOORD_n); it was always 0.
+    const tinygltf::TextureInfo* texture = base_color_texture(prim);
+    const std::string uv_set = "TEXCOORD_" + std::to_string(texture ? texture->texCoord : 0);
+    if (auto it = prim.attributes.find(uv_set); it != prim.attributes.end()) {
+      uv = reader_.read(it->second, 2, what + " " + uv_set);
       if (uv.size() != count * 2)
-        throw FileError(path_, what + ": TEXCOORD_0 has " + std::to_string(uv.size() / 2) + " elements, POSITION " +
+        throw FileError(path_, what + ": " + uv_set + " has " + std::to_string(uv.size() / 2) + " elements, POSITION " +
                                    std::to_string(count));
     }
 
@@ -622,21 +625,25 @@ class GltfLoader {
       mesh_.uvs.push_back(uv.empty() ? glm::vec2(0) : glm::vec2(float(uv[2 * i]), float(uv[2 * i + 1])));
     }
     if (!uv.empty()) ++primitives_with_uvs_;
-    else primitives_without_uvs_.push_back(what + " (TEXCOORD_0)");
+    else primitives_without_uvs_.push_back(what + " (" + uv_set + ")");
     if (!tan.empty()) ++primitives_with_tangents_;
     for (uint32_t i : tris) mesh_.indices.push_back(uint32_t(base) + i);
 
     // The merged mesh carries one texture: the first base-colour texture met in the scene.
-    if (texture_image_ < 0 && prim.material >= 0 && size_t(prim.material) < m_.materials.size()) {
-      int tex = m_.materials[size_t(prim.material)].pbrMetallicRoughness.baseColorTexture.index;
-      if (tex >= 0 && size_t(tex) >= m_.textures.size())  // it was ignored: the mesh came out untextured
-        throw FileError(path_, "material " + std::to_string(prim.material) + "'s base-colour texture is texture " +
-                                   std::to_string(tex) + ", but the file has " + std::to_string(m_.textures.size()));
-      if (tex >= 0) {
-        int src = m_.textures[size_t(tex)].source;
-        if (src >= 0 && size_t(src) < m_.images.size()) texture_image_ = src;
-      }
+    if (texture_image_ < 0 && texture) {
+      int src = m_.textures[size_t(texture->index)].source;
+      if (src >= 0 && size_t(src) < m_.images.size()) texture_image_ = src;
     }
+  }
+
+  // The primitive's material's base-colour texture, or null when it has none.
+  const tinygltf::TextureInfo* base_color_texture(const tinygltf::Primitive& prim) const {
+    if (prim.material < 0 || size_t(prim.material) >= m_.materials.size()) return nullptr;
+    const tinygltf::TextureInfo& t = m_.materials[size_t(prim.material)].pbrMetallicRoughness.baseColorTexture;
+    if (t.index >= 0 && size_t(t.index) >= m_.textures.size())  // it was ignored: the mesh came out untextured
+      throw FileError(path_, "material " + std::to_string(prim.material) + "'s base-colour texture is texture " +
+                                 std::to_string(t.index) + ", but the file has " + std::to_string(m_.textures.size()));
+    return t.index >= 0 ? &t : nullptr;
   }
 
   // Its bytes, decoded when first read (scene/texture.h).
