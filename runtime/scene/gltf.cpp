@@ -396,6 +396,18 @@ glm::dmat4 node_transform(const tinygltf::Node& n, std::string& why) {
   return t * r * s;
 }
 
+// Primitives a note is about, counted per placement, the first three names kept for the text.
+struct PrimitiveList {
+  std::size_t count = 0;
+  std::vector<std::string> names;
+  void add(const std::string& name) {
+    ++count;
+    if (names.size() < 3 && std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+  }
+  bool empty() const { return count == 0; }
+  std::string text() const { return io::join(names) + (count > names.size() ? ", ..." : ""); }
+};
+
 // Turns one primitive's index list (or 0..count-1) into triangles per its mode.
 std::vector<uint32_t> triangles_of(int mode, const std::vector<uint32_t>& in) {
   std::vector<uint32_t> out;
@@ -450,12 +462,9 @@ class GltfLoader {
     // rather than taking the others' away: they used to be zeroed too, drawing one flat colour.
     mesh_.has_uvs = primitives_with_uvs_ > 0;
     if (mesh_.has_uvs && !primitives_without_uvs_.empty()) {
-      std::string which;
-      for (std::size_t i = 0; i < primitives_without_uvs_.size() && i < 3; ++i)
-        which += (i ? ", " : "") + primitives_without_uvs_[i];
-      if (primitives_without_uvs_.size() > 3) which += ", ...";
-      mesh_.notes.push_back("has " + std::to_string(primitives_without_uvs_.size()) + " of " +
-                            std::to_string(primitives_used_) + " primitives without texture coordinates (" + which +
+      mesh_.notes.push_back("has " + std::to_string(primitives_without_uvs_.count) + " of " +
+                            std::to_string(primitives_used_) + " primitives without texture coordinates (" +
+                            primitives_without_uvs_.text() +
                             "): their uvs are (0, 0), so a texture shows its top-left texel there; give them "
                             "texture coordinates in the file for more");
     }
@@ -470,8 +479,16 @@ class GltfLoader {
     }
     mesh_.bounds = compute_bounds(mesh_.positions);
     if (texture_image_ >= 0) mesh_.base_color = texture(texture_image_);
-    if (mesh_.normals_computed)
-      mesh_.notes.insert(mesh_.notes.begin(), "has no normals (or some are zero); computed area-weighted vertex normals");
+    if (normals_repaired_)
+      mesh_.notes.insert(mesh_.notes.begin(), "has " + std::to_string(normals_repaired_) +
+                                                  " zero or non-finite normals: replaced by the area-weighted "
+                                                  "normals of the triangles around them");
+    if (!primitives_flat_.empty())
+      mesh_.notes.insert(mesh_.notes.begin(),
+                         "has no normals in " + std::to_string(primitives_flat_.count) + " of " +
+                             std::to_string(primitives_used_) + " primitives (" + primitives_flat_.text() +
+                             "): computed flat normals as glTF 2.0 requires (3.7.2.1), each triangle its face "
+                             "normal on vertices of its own; give the file normals for smooth shading");
     return std::move(mesh_);
   }
 
@@ -577,6 +594,21 @@ class GltfLoader {
     ++primitives_used_;
     if (mirrored)
       for (size_t t = 0; t < tris.size(); t += 3) std::swap(tris[t + 1], tris[t + 2]);
+    // glTF 2.0 (3.7.2.1): without normals, flat ones. Each triangle gets three vertices of its own,
+    // so its face normal is not averaged with its neighbours' (a cube came out as a blob).
+    if (nrm.empty()) {
+      auto split = [&](std::vector<double>& a, size_t k) {
+        if (a.empty()) return;
+        std::vector<double> out;
+        out.reserve(tris.size() * k);
+        for (uint32_t i : tris) out.insert(out.end(), a.begin() + i * k, a.begin() + (i + 1) * k);
+        a = std::move(out);
+      };
+      split(pos, 3), split(uv, 2), split(tan, 4);
+      count = tris.size();
+      for (size_t i = 0; i < count; ++i) tris[i] = uint32_t(i);
+      primitives_flat_.add(what);
+    }
 
     size_t base = mesh_.positions.size();
     if (base + count > limits_.mesh_vertices)
@@ -593,7 +625,9 @@ class GltfLoader {
         throw FileError(path_, what + ": POSITION " + std::to_string(i) + " is not a finite number");
       world_pos[i] = glm::vec3(w);
     }
-    // Normals the file lacks, or gives as zero / non-finite, come from the geometry.
+    // Normals the file lacks come from the geometry: on the split vertices above, the area-weighted
+    // normal is the face normal. Zero or non-finite ones in a file that has normals are repaired
+    // from the triangles around them.
     std::vector<glm::vec3> computed;
     auto fallback = [&](size_t i) {
       if (computed.empty()) computed = area_weighted_normals(world_pos, tris);
@@ -605,7 +639,12 @@ class GltfLoader {
       if (!nrm.empty()) {
         glm::dvec3 d = normal_matrix * glm::dvec3(nrm[3 * i], nrm[3 * i + 1], nrm[3 * i + 2]);
         double len = glm::length(d);
-        n = (std::isfinite(len) && len > 1e-12) ? glm::vec3(d / len) : fallback(i);
+        if (std::isfinite(len) && len > 1e-12) {
+          n = glm::vec3(d / len);
+        } else {
+          n = fallback(i);
+          ++normals_repaired_;
+        }
       } else {
         n = fallback(i);
       }
@@ -625,7 +664,7 @@ class GltfLoader {
       mesh_.uvs.push_back(uv.empty() ? glm::vec2(0) : glm::vec2(float(uv[2 * i]), float(uv[2 * i + 1])));
     }
     if (!uv.empty()) ++primitives_with_uvs_;
-    else primitives_without_uvs_.push_back(what + " (" + uv_set + ")");
+    else primitives_without_uvs_.add(what + " (" + uv_set + ")");
     if (!tan.empty()) ++primitives_with_tangents_;
     for (uint32_t i : tris) mesh_.indices.push_back(uint32_t(base) + i);
 
@@ -671,7 +710,9 @@ class GltfLoader {
   int texture_image_ = -1;
   int placements_hidden_ = 0;  // meshes placed by a node whose transform is singular (scaled to zero)
   int primitives_seen_ = 0, primitives_used_ = 0, primitives_with_uvs_ = 0, primitives_with_tangents_ = 0;
-  std::vector<std::string> primitives_without_uvs_;  // "mesh 0 primitive 1 (TEXCOORD_0)"
+  PrimitiveList primitives_without_uvs_;  // "mesh 0 primitive 1 (TEXCOORD_0)"
+  PrimitiveList primitives_flat_;         // without normals
+  std::size_t normals_repaired_ = 0;      // zero or non-finite in the file
   std::vector<glm::vec4> file_tangents_;
   std::size_t node_visits_ = 0;
   const io::Limits limits_ = io::limits();

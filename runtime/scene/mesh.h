@@ -37,8 +37,8 @@ struct Mesh {
   std::string tangent_source;  // "file" (glTF TANGENT), "analytic", or "" (generated when drawn)
   bool has_normals = false;
   bool has_uvs = false;
-  // The file had no normals, so they were computed (area-weighted vertex normals); callers
-  // tell the user, since flat-shaded files come out smooth.
+  // The file lacked some normals, so they were computed (flat for a primitive without normals,
+  // area-weighted where a normal was zero); callers tell the user.
   bool normals_computed = false;
   // What loading the file changed or left out, each a sentence the bindings print as
   // "note: mesh file 'PATH' <note>" (computed normals, indices that make no whole triangle).

@@ -621,6 +621,39 @@ TEST(Mesh, AreaWeightedNormalsWeighByTriangleArea) {
   expect_near(area_weighted_normals(p, idx)[5], {0, 1, 0}, 0, "lonely vertex");
 }
 
+TEST(Mesh, AFileWithoutNormalsGetsFlatNormalsAsGltfRequires) {
+  // An indexed cube of 8 shared corners, no normals: glTF 2.0 (3.7.2.1) requires flat normals.
+  // Area-weighted vertex normals pointed along the diagonals and shaded it like a blob.
+  Fixture f;
+  int pos = f.vec3s({-1, -1, -1, 1, -1, -1, 1, 1, -1, -1, 1, -1, -1, -1, 1, 1, -1, 1, 1, 1, 1, -1, 1, 1});
+  std::vector<uint16_t> idx = {0, 3, 2, 0, 2, 1, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4,
+                               3, 7, 6, 3, 6, 2, 0, 4, 7, 0, 7, 3, 1, 2, 6, 1, 6, 5};
+  int ia = f.accessor(f.view(idx), TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_TYPE_SCALAR, idx.size());
+  tinygltf::Mesh mesh;
+  mesh.primitives.push_back(primitive(TINYGLTF_MODE_TRIANGLES, pos, -1, ia));
+  f.model.meshes.push_back(mesh);
+  f.place(0);
+  Mesh m = load_mesh(f.write(temp_dir() / "cube_without_normals.gltf"));
+  ASSERT_EQ(m.indices.size(), 36u);
+  EXPECT_EQ(m.vertex_count(), 36u);  // each triangle's corners split from its neighbours'
+  EXPECT_TRUE(m.normals_computed);
+  expect_consistent_winding(m);
+  for (size_t t = 0; t < m.indices.size(); t += 3) {
+    glm::dvec3 n(m.normals[m.indices[t]]);
+    // The face normal is the axis the face lies across: the one where all three corners agree.
+    int axis = std::abs(n.x) > 0.5 ? 0 : std::abs(n.y) > 0.5 ? 1 : 2;
+    for (int k = 0; k < 3; ++k) {
+      ASSERT_NEAR(glm::distance(glm::dvec3(m.normals[m.indices[t + k]]), n), 0, 1e-7) << "triangle " << t / 3;
+      ASSERT_NEAR(std::abs(n[axis]), 1, 1e-7) << "triangle " << t / 3;
+      ASSERT_NEAR(m.positions[m.indices[t + k]][axis], n[axis], 1e-7) << "triangle " << t / 3;
+    }
+  }
+  ASSERT_FALSE(m.notes.empty());
+  EXPECT_NE(m.notes[0].find("has no normals in 1 of 1 primitives (mesh 0 primitive 0): computed flat normals"),
+            std::string::npos)
+      << m.notes[0];
+}
+
 TEST(Mesh, TransformedUsesTheInverseTransposeForNormals) {
   // A sphere stretched to an ellipsoid x^2/4 + y^2 + z^2 = 1: its normal is the gradient (x/4, y, z).
   Mesh s = sphere(1, 32, 16);
