@@ -478,7 +478,10 @@ class GltfLoader {
       mesh_.tangent_source = "file";
     }
     mesh_.bounds = compute_bounds(mesh_.positions);
-    if (texture_image_ >= 0) mesh_.base_color = texture(texture_image_);
+    if (texture_image_ >= 0) {
+      mesh_.base_color = texture(texture_image_);
+      mesh_.base_color.sampler = sampler_;
+    }
     if (normals_repaired_)
       mesh_.notes.insert(mesh_.notes.begin(), "has " + std::to_string(normals_repaired_) +
                                                   " zero or non-finite normals: replaced by the area-weighted "
@@ -670,9 +673,37 @@ class GltfLoader {
 
     // The merged mesh carries one texture: the first base-colour texture met in the scene.
     if (texture_image_ < 0 && texture) {
-      int src = m_.textures[size_t(texture->index)].source;
-      if (src >= 0 && size_t(src) < m_.images.size()) texture_image_ = src;
+      const tinygltf::Texture& t = m_.textures[size_t(texture->index)];
+      if (t.source >= 0 && size_t(t.source) < m_.images.size()) {
+        texture_image_ = t.source;
+        sampler_ = sampler(texture->index, t.sampler);
+      }
     }
+  }
+
+  // How texture `texture` is wrapped: its sampler's wrapS / wrapT (it was always repeat).
+  Sampler sampler(int texture, int index) {
+    Sampler out;
+    if (index < 0) return out;  // no sampler: glTF's default, repeat
+    if (size_t(index) >= m_.samplers.size())
+      throw FileError(path_, "texture " + std::to_string(texture) + "'s sampler is sampler " + std::to_string(index) +
+                                 ", but the file has " + std::to_string(m_.samplers.size()));
+    auto wrap = [&](int value, const char* name) {
+      switch (value) {
+        case TINYGLTF_TEXTURE_WRAP_REPEAT: return Wrap::repeat;
+        case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE: return Wrap::clamp_to_edge;
+        case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT: return Wrap::mirrored_repeat;
+        default:
+          mesh_.notes.push_back("has sampler " + std::to_string(index) + " with " + name + " " + std::to_string(value) +
+                                ", which glTF does not define (10497 repeat, 33071 clamp to edge, 33648 mirrored "
+                                "repeat): the texture repeats there");
+          return Wrap::repeat;
+      }
+    };
+    const tinygltf::Sampler& s = m_.samplers[size_t(index)];
+    out.s = wrap(s.wrapS, "wrapS");
+    out.t = wrap(s.wrapT, "wrapT");
+    return out;
   }
 
   // The primitive's material's base-colour texture, or null when it has none.
@@ -708,6 +739,7 @@ class GltfLoader {
   Mesh mesh_;
   std::set<int> on_path_;
   int texture_image_ = -1;
+  Sampler sampler_;  // texture_image_'s
   int placements_hidden_ = 0;  // meshes placed by a node whose transform is singular (scaled to zero)
   int primitives_seen_ = 0, primitives_used_ = 0, primitives_with_uvs_ = 0, primitives_with_tangents_ = 0;
   PrimitiveList primitives_without_uvs_;  // "mesh 0 primitive 1 (TEXCOORD_0)"
@@ -847,6 +879,18 @@ void save_glb(const Mesh& m, const std::string& path) {
     model.images.push_back(image);
     tinygltf::Texture tex;
     tex.source = 0;
+    if (!(m.base_color.sampler == Sampler())) {
+      auto gl_wrap = [](Wrap w) {
+        return w == Wrap::clamp_to_edge     ? TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE
+               : w == Wrap::mirrored_repeat ? TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT
+                                            : TINYGLTF_TEXTURE_WRAP_REPEAT;
+      };
+      tinygltf::Sampler s;
+      s.wrapS = gl_wrap(m.base_color.sampler.s);
+      s.wrapT = gl_wrap(m.base_color.sampler.t);
+      model.samplers.push_back(s);
+      tex.sampler = 0;
+    }
     model.textures.push_back(tex);
     tinygltf::Material mat;
     mat.pbrMetallicRoughness.baseColorTexture.index = 0;

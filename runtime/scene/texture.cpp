@@ -1,5 +1,6 @@
 #include "scene/texture.h"
 
+#include <cmath>
 #include <mutex>
 #include <stdexcept>
 
@@ -39,6 +40,29 @@ const io::Image& Texture::operator*() const {
 
 const std::vector<unsigned char>* Texture::encoded() const {
   return state_ && !state_->encoded.empty() ? &state_->encoded : nullptr;
+}
+
+int wrap_texel(Wrap w, int i, int size) {
+  auto mod = [](int a, int n) { return ((a % n) + n) % n; };
+  switch (w) {
+    case Wrap::clamp_to_edge: return i < 0 ? 0 : i >= size ? size - 1 : i;
+    case Wrap::mirrored_repeat: {
+      int a = mod(i, 2 * size) - size;
+      return (size - 1) - (a >= 0 ? a : -(1 + a));
+    }
+    case Wrap::repeat: break;
+  }
+  return mod(i, size);
+}
+
+double sample_bilinear(const io::Image& img, const Sampler& sampler, double u, double v, int channel) {
+  const double fx = u * img.width - 0.5, fy = v * img.height - 0.5;
+  const double x0 = std::floor(fx), y0 = std::floor(fy), ax = fx - x0, ay = fy - y0;
+  auto texel = [&](double x, double y) {
+    return double(img.at(wrap_texel(sampler.s, int(x), img.width), wrap_texel(sampler.t, int(y), img.height), channel));
+  };
+  return (1 - ay) * ((1 - ax) * texel(x0, y0) + ax * texel(x0 + 1, y0)) +
+         ay * ((1 - ax) * texel(x0, y0 + 1) + ax * texel(x0 + 1, y0 + 1));
 }
 
 }  // namespace sn::scene

@@ -12,6 +12,19 @@
 
 namespace sn::scene {
 
+// How a texture coordinate outside [0, 1] finds a texel, per axis: glTF's sampler wrapS / wrapT.
+enum class Wrap { repeat, clamp_to_edge, mirrored_repeat };
+struct Sampler {
+  Wrap s = Wrap::repeat, t = Wrap::repeat;  // glTF's default
+  bool operator==(const Sampler& o) const { return s == o.s && t == o.t; }
+};
+
+// Texel `i` of an axis `size` texels long, wrapped as OpenGL does (4.5 core, section 8.14.2).
+int wrap_texel(Wrap w, int i, int size);
+// The CPU twin of textureLod(u_base_color, uv, 0) on `img` (gpu_mesh.h): bilinear between the
+// four texels around uv, texel centres at (i + 0.5) / size, each axis wrapped as `sampler` says.
+double sample_bilinear(const io::Image& img, const Sampler& sampler, double u, double v, int channel);
+
 class Texture {
  public:
   Texture() = default;  // none
@@ -30,6 +43,8 @@ class Texture {
   const io::Image* operator->() const { return &**this; }
   // The encoded bytes it was made from, or null for none or one made from an image.
   const std::vector<unsigned char>* encoded() const;
+
+  Sampler sampler;  // how draws sample it (the file's; a copy may change its own)
 
  private:
   struct State;

@@ -5,10 +5,15 @@
 #include <algorithm>
 #include <string>
 
+#include "gl/context.h"
+#include "gl/program.h"
+#include "gl/render_target.h"
 #include "gltf_fixture.h"
 #include "io/image.h"
 #include "io/temp_dir.h"
+#include "scene/camera.h"
 #include "scene/gltf.h"
+#include "scene/gpu_mesh.h"
 #include "scene/mesh.h"
 
 using namespace sn::scene;
@@ -107,4 +112,82 @@ TEST(GltfTexture, TheBaseColorTexturesTexCoordPicksTheSet) {
   for (int i = 3; i < 6; ++i) EXPECT_EQ(m.uvs[i], glm::vec2(0.0f)) << i;
   EXPECT_EQ(m.uvs[6], glm::vec2(0.5f));
   EXPECT_NE(note_with(m, "(mesh 0 primitive 1 (TEXCOORD_1))"), "") << (m.notes.empty() ? "" : m.notes[0]);
+}
+
+TEST(GltfTexture, WrapTexelFollowsOpenGl) {
+  // A 4-texel axis, indices -5..8.
+  std::vector<int> repeat, clamp, mirror;
+  for (int i = -5; i <= 8; ++i)
+    repeat.push_back(wrap_texel(Wrap::repeat, i, 4)), clamp.push_back(wrap_texel(Wrap::clamp_to_edge, i, 4)),
+        mirror.push_back(wrap_texel(Wrap::mirrored_repeat, i, 4));
+  EXPECT_EQ(repeat, (std::vector<int>{3, 0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3, 0}));
+  EXPECT_EQ(clamp, (std::vector<int>{0, 0, 0, 0, 0, 0, 1, 2, 3, 3, 3, 3, 3, 3}));
+  EXPECT_EQ(mirror, (std::vector<int>{3, 3, 2, 1, 0, 0, 1, 2, 3, 3, 2, 1, 0, 0}));
+}
+
+// A quad whose uvs run from -1 to 2, under each sampler: the colour drawn at each pixel is the CPU
+// twin's lookup (sample_bilinear) at the uv drawn there, with the file's wrap modes. With repeat
+// hard-coded (as it was) every non-repeat case is far off.
+TEST(GltfTexture, TheSamplersWrapModesReachTheGpuAndTheCpuTwin) {
+  sn::gl::current();
+  sn::io::Image img(4, 4, 3);
+  for (int y = 0; y < 4; ++y)
+    for (int x = 0; x < 4; ++x) img.at(x, y, 0) = x / 3.f, img.at(x, y, 1) = y / 3.f, img.at(x, y, 2) = (x + y) % 2;
+  const Sampler samplers[] = {{Wrap::repeat, Wrap::repeat},
+                              {Wrap::clamp_to_edge, Wrap::clamp_to_edge},
+                              {Wrap::mirrored_repeat, Wrap::mirrored_repeat},
+                              {Wrap::clamp_to_edge, Wrap::mirrored_repeat}};
+  const int gl_wrap[] = {TINYGLTF_TEXTURE_WRAP_REPEAT, TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE,
+                         TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT};
+  Camera cam(glm::dvec3(0, 0, 2.5), glm::dvec3(0));
+  sn::gl::RenderTarget target(128, 128);
+  for (const Sampler& want : samplers) {
+    Fixture f;
+    tinygltf::Sampler s;
+    s.wrapS = gl_wrap[int(want.s)], s.wrapT = gl_wrap[int(want.t)];
+    f.model.samplers.push_back(s);
+    tinygltf::Primitive quad = primitive(TINYGLTF_MODE_TRIANGLES, f.vec3s({-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0}),
+                                         f.vec3s({0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1}),
+                                         f.accessor(f.view(std::vector<uint16_t>{0, 1, 2, 0, 2, 3}),
+                                                    TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_TYPE_SCALAR, 6));
+    quad.attributes["TEXCOORD_0"] = f.vec2s({-1, 2, 2, 2, 2, -1, -1, -1});
+    quad.material = textured_material(f, img, 0);
+    tinygltf::Mesh mesh;
+    mesh.primitives = {quad};
+    f.model.meshes.push_back(mesh);
+    f.place(0);
+    const std::string name = "wrap_" + std::to_string(int(want.s)) + std::to_string(int(want.t));
+    Mesh m = load_mesh(f.write(temp_dir() / (name + ".gltf")));
+    ASSERT_TRUE(m.base_color.sampler == want) << name;
+    // A .glb the mesh is saved as keeps its sampler.
+    save_glb(m, (temp_dir() / (name + ".glb")).string());
+    EXPECT_TRUE(load_mesh((temp_dir() / (name + ".glb")).string()).base_color.sampler == want) << name;
+
+    auto render = [&](const char* frag) {
+      auto p = sn::gl::get_program({"", "mesh.vert", std::string("tests/data/") + frag, {}});
+      target.bind();
+      target.clear();
+      set_standard_uniforms(*p, cam, 1.0, glm::dmat4(1.0), upload(m));
+      draw(*p, upload(m), glm::dmat4(1.0));
+      return target.read();
+    };
+    sn::io::Image uv = render("uv.frag"), color = render("base_color.frag");
+    int covered = 0;
+    double max_err = 0, repeat_err = 0;
+    for (int y = 0; y < uv.height; ++y)
+      for (int x = 0; x < uv.width; ++x) {
+        if (uv.at(x, y, 3) < 0.5) continue;
+        ++covered;
+        for (int c = 0; c < 3; ++c) {
+          double u = uv.at(x, y, 0), v = uv.at(x, y, 1);
+          max_err = std::max(max_err, std::abs(color.at(x, y, c) - sample_bilinear(*m.base_color, want, u, v, c)));
+          repeat_err += std::abs(color.at(x, y, c) - sample_bilinear(*m.base_color, Sampler(), u, v, c));
+        }
+      }
+    ASSERT_GT(covered, 4000) << name;
+    // GPUs blend with 8-bit weights (llvmpipe: under 1/255 on the duck).
+    EXPECT_LT(max_err, 4.0 / 255) << name;
+    // The test can tell the modes apart: repeat's lookup is far off for the others.
+    if (!(want == Sampler())) EXPECT_GT(repeat_err / (3 * covered), 0.05) << name;
+  }
 }
