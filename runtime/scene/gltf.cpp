@@ -25,6 +25,7 @@
 #include "io/read_file.h"
 #include "io/text.h"
 #include "scene/gltf_accessor.h"
+#include "scene/gltf_deform.h"
 #include "scene/tangents.h"
 #include "scene/transform.h"
 
@@ -281,7 +282,7 @@ class GltfLoader {
       for (int i = 0; i < int(m_.nodes.size()); ++i)
         if (!children.count(i)) roots.push_back(i);
       if (m_.nodes.empty())
-        for (int i = 0; i < int(m_.meshes.size()); ++i) add_mesh(i, glm::dmat4(1.0));
+        for (int i = 0; i < int(m_.meshes.size()); ++i) add_mesh(i, glm::dmat4(1.0), {});
     }
     for (int r : roots) walk(r, glm::dmat4(1.0));
 
@@ -349,12 +350,13 @@ class GltfLoader {
     glm::dmat4 world = parent * node_transform(n, why);
     if (!why.empty()) throw FileError(path_, "node " + std::to_string(node) + " has " + why);
     if (!is_finite(world)) throw FileError(path_, "node " + std::to_string(node) + " has a non-finite transform");
-    if (n.mesh >= 0) add_mesh(n.mesh, world);
+    if (n.mesh >= 0) add_mesh(n.mesh, world, n.weights);
     for (int c : n.children) walk(c, world, depth + 1);
     on_path_.erase(node);
   }
 
-  void add_mesh(int index, const glm::dmat4& world) {
+  // `node_weights`: the placing node's morph weights, which override the mesh's (glTF 3.7.2.2).
+  void add_mesh(int index, const glm::dmat4& world, const std::vector<double>& node_weights) {
     if (size_t(index) >= m_.meshes.size())
       throw FileError(path_, "refers to mesh " + std::to_string(index) + ", but the file has " +
                                  std::to_string(m_.meshes.size()));
@@ -366,14 +368,15 @@ class GltfLoader {
       return;
     }
     glm::dmat3 normal_matrix = glm::transpose(glm::inverse(linear));
-    const auto& prims = m_.meshes[size_t(index)].primitives;
-    for (size_t p = 0; p < prims.size(); ++p)
-      add_primitive(prims[p], "mesh " + std::to_string(index) + " primitive " + std::to_string(p), world,
-                    normal_matrix, det < 0);
+    const tinygltf::Mesh& mesh = m_.meshes[size_t(index)];
+    const std::vector<double>& weights = node_weights.empty() ? mesh.weights : node_weights;
+    for (size_t p = 0; p < mesh.primitives.size(); ++p)
+      add_primitive(mesh.primitives[p], "mesh " + std::to_string(index) + " primitive " + std::to_string(p), world,
+                    normal_matrix, det < 0, weights);
   }
 
   void add_primitive(const tinygltf::Primitive& prim, const std::string& what, const glm::dmat4& world,
-                     const glm::dmat3& normal_matrix, bool mirrored) {
+                     const glm::dmat3& normal_matrix, bool mirrored, const std::vector<double>& morph_weights) {
     ++primitives_seen_;
     int mode = prim.mode;
     if (mode != -1 && mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
@@ -392,6 +395,8 @@ class GltfLoader {
         throw FileError(path_, what + ": NORMAL has " + std::to_string(nrm.size() / 3) + " elements, POSITION " +
                                    std::to_string(count));
     }
+    // The rest shape includes the morph targets at their default weights (they were ignored).
+    add_morph_targets(reader_, prim, morph_weights, what, path_, pos, nrm);
     std::vector<double> tan;
     if (auto it = prim.attributes.find("TANGENT"); it != prim.attributes.end()) {
       tan = reader_.read(it->second, 4, what + " TANGENT");
