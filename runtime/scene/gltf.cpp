@@ -282,7 +282,7 @@ class GltfLoader {
       for (int i = 0; i < int(m_.nodes.size()); ++i)
         if (!children.count(i)) roots.push_back(i);
       if (m_.nodes.empty())
-        for (int i = 0; i < int(m_.meshes.size()); ++i) add_mesh(i, glm::dmat4(1.0), {});
+        for (int i = 0; i < int(m_.meshes.size()); ++i) add_mesh(i, glm::dmat4(1.0), {}, -1);
     }
     for (int r : roots) walk(r, glm::dmat4(1.0));
 
@@ -318,6 +318,10 @@ class GltfLoader {
       mesh_.base_color = texture(texture_image_);
       mesh_.base_color.sampler = sampler_;
     }
+    if (unweighted_vertices_)
+      mesh_.notes.push_back("has " + std::to_string(unweighted_vertices_) +
+                            " skinned vertices whose joint weights are all zero: drawn where the file puts them, "
+                            "unskinned; give them weights in the file");
     if (normals_repaired_)
       mesh_.notes.insert(mesh_.notes.begin(), "has " + std::to_string(normals_repaired_) +
                                                   " zero or non-finite normals: replaced by the area-weighted "
@@ -350,13 +354,16 @@ class GltfLoader {
     glm::dmat4 world = parent * node_transform(n, why);
     if (!why.empty()) throw FileError(path_, "node " + std::to_string(node) + " has " + why);
     if (!is_finite(world)) throw FileError(path_, "node " + std::to_string(node) + " has a non-finite transform");
-    if (n.mesh >= 0) add_mesh(n.mesh, world, n.weights);
+    // A skinned mesh is placed by its joints alone: glTF 3.7.3 says its node's transform MUST be
+    // ignored (it was applied, on top of no skinning at all).
+    if (n.mesh >= 0) add_mesh(n.mesh, n.skin >= 0 ? glm::dmat4(1.0) : world, n.weights, n.skin);
     for (int c : n.children) walk(c, world, depth + 1);
     on_path_.erase(node);
   }
 
   // `node_weights`: the placing node's morph weights, which override the mesh's (glTF 3.7.2.2).
-  void add_mesh(int index, const glm::dmat4& world, const std::vector<double>& node_weights) {
+  // `skin`: the placing node's skin, or -1.
+  void add_mesh(int index, const glm::dmat4& world, const std::vector<double>& node_weights, int skin) {
     if (size_t(index) >= m_.meshes.size())
       throw FileError(path_, "refers to mesh " + std::to_string(index) + ", but the file has " +
                                  std::to_string(m_.meshes.size()));
@@ -372,11 +379,12 @@ class GltfLoader {
     const std::vector<double>& weights = node_weights.empty() ? mesh.weights : node_weights;
     for (size_t p = 0; p < mesh.primitives.size(); ++p)
       add_primitive(mesh.primitives[p], "mesh " + std::to_string(index) + " primitive " + std::to_string(p), world,
-                    normal_matrix, det < 0, weights);
+                    normal_matrix, det < 0, weights, skin);
   }
 
   void add_primitive(const tinygltf::Primitive& prim, const std::string& what, const glm::dmat4& world,
-                     const glm::dmat3& normal_matrix, bool mirrored, const std::vector<double>& morph_weights) {
+                     const glm::dmat3& normal_matrix, bool mirrored, const std::vector<double>& morph_weights,
+                     int skin) {
     ++primitives_seen_;
     int mode = prim.mode;
     if (mode != -1 && mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
@@ -414,6 +422,30 @@ class GltfLoader {
                                    std::to_string(count));
     }
 
+    // Skinned: every vertex through its own skin matrix, into world space (world is the identity).
+    std::vector<char> skin_mirrors;  // per vertex
+    if (skin >= 0) {
+      const std::vector<glm::dmat4> skins =
+          skin_matrices(reader_, m_, skin, prim, globals(), count, what, path_, unweighted_vertices_);
+      skin_mirrors.resize(count);
+      for (size_t i = 0; i < count; ++i) {
+        const glm::dmat3 linear(skins[i]);
+        const double det = glm::determinant(linear);
+        skin_mirrors[i] = det < 0;
+        const glm::dvec4 p = skins[i] * glm::dvec4(pos[3 * i], pos[3 * i + 1], pos[3 * i + 2], 1.0);
+        for (int k = 0; k < 3; ++k) pos[3 * i + k] = p[k];
+        if (!nrm.empty() && std::abs(det) > 1e-300) {
+          const glm::dvec3 n = glm::transpose(glm::inverse(linear)) * glm::dvec3(nrm[3 * i], nrm[3 * i + 1], nrm[3 * i + 2]);
+          for (int k = 0; k < 3; ++k) nrm[3 * i + k] = n[k];
+        }
+        if (!tan.empty()) {
+          const glm::dvec3 t = linear * glm::dvec3(tan[4 * i], tan[4 * i + 1], tan[4 * i + 2]);
+          for (int k = 0; k < 3; ++k) tan[4 * i + k] = t[k];
+          if (det < 0) tan[4 * i + 3] = -tan[4 * i + 3];
+        }
+      }
+    }
+
     std::vector<uint32_t> local;
     if (prim.indices >= 0) {
       std::vector<double> idx = reader_.read(prim.indices, 1, what + " indices", true);
@@ -435,8 +467,9 @@ class GltfLoader {
                             " (no whole triangle) left out");
     if (tris.empty()) return;
     ++primitives_used_;
-    if (mirrored)
-      for (size_t t = 0; t < tris.size(); t += 3) std::swap(tris[t + 1], tris[t + 2]);
+    // A mirror turns the winding; under a skin, the mirror is the first corner's skin matrix's.
+    for (size_t t = 0; t < tris.size(); t += 3)
+      if (mirrored != (!skin_mirrors.empty() && skin_mirrors[tris[t]])) std::swap(tris[t + 1], tris[t + 2]);
     // glTF 2.0 (3.7.2.1): without normals, flat ones. Each triangle gets three vertices of its own,
     // so its face normal is not averaged with its neighbours' (a cube came out as a blob).
     if (nrm.empty()) {
@@ -546,6 +579,32 @@ class GltfLoader {
     return out;
   }
 
+  // Every node's world transform (its parents' times its own): a skin's joints may sit anywhere in
+  // the tree, in the default scene or not. Computed once, when the first skin needs them.
+  const std::vector<glm::dmat4>& globals() {
+    if (!globals_.empty()) return globals_;
+    std::vector<int> parent(m_.nodes.size(), -1);
+    for (size_t n = 0; n < m_.nodes.size(); ++n)
+      for (int c : m_.nodes[n].children)
+        if (c >= 0 && size_t(c) < parent.size()) parent[size_t(c)] = int(n);
+    globals_.resize(m_.nodes.size());
+    for (size_t n = 0; n < m_.nodes.size(); ++n) {
+      glm::dmat4 g(1.0);
+      int depth = 0;
+      for (int k = int(n); k >= 0; k = parent[size_t(k)]) {
+        if (++depth > kMaxNodeDepth)  // a cycle, or a chain deeper than the walk allows
+          throw FileError(path_, "nests nodes more than " + std::to_string(kMaxNodeDepth) + " deep above node " +
+                                     std::to_string(n) + " (the limit, scene/gltf.h; a cycle?)");
+        std::string why;
+        g = node_transform(m_.nodes[size_t(k)], why) * g;
+        if (!why.empty()) throw FileError(path_, "node " + std::to_string(k) + " has " + why);
+      }
+      if (!is_finite(g)) throw FileError(path_, "node " + std::to_string(n) + " has a non-finite transform");
+      globals_[n] = g;
+    }
+    return globals_;
+  }
+
   // The primitive's material's base-colour texture, or null when it has none.
   const tinygltf::TextureInfo* base_color_texture(const tinygltf::Primitive& prim) const {
     if (prim.material < 0 || size_t(prim.material) >= m_.materials.size()) return nullptr;
@@ -580,6 +639,8 @@ class GltfLoader {
   std::set<int> on_path_;
   int texture_image_ = -1;
   Sampler sampler_;  // texture_image_'s
+  std::vector<glm::dmat4> globals_;  // every node's world transform, once a skin needs them
+  std::size_t unweighted_vertices_ = 0;  // skinned vertices whose weights are all zero
   int placements_hidden_ = 0;  // meshes placed by a node whose transform is singular (scaled to zero)
   int primitives_seen_ = 0, primitives_used_ = 0, primitives_with_uvs_ = 0, primitives_with_tangents_ = 0;
   PrimitiveList primitives_without_uvs_;  // "mesh 0 primitive 1 (TEXCOORD_0)"

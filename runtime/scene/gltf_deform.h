@@ -1,6 +1,6 @@
-// How glTF 2.0 moves a primitive's vertices before its node places it, as the loader draws them
-// without animation: morph targets at their default weights (3.7.2.2). Run once, at load
-// (scene/gltf.cpp).
+// The two ways glTF 2.0 moves a primitive's vertices before its node places it, as the loader
+// draws them without animation: morph targets at their default weights (3.7.2.2) and skinning in
+// the pose the file's joint nodes hold (3.7.3). Both run once, at load (scene/gltf.cpp).
 #pragma once
 #include <string>
 #include <vector>
@@ -18,5 +18,15 @@ namespace sn::scene {
 void add_morph_targets(const AccessorReader& reader, const tinygltf::Primitive& prim,
                        const std::vector<double>& weights, const std::string& what, const std::string& path,
                        std::vector<double>& pos, std::vector<double>& nrm);
+
+// One skin matrix per vertex: sum_i w_i * global(joint_i) * inverseBind_i over every JOINTS_n /
+// WEIGHTS_n set of the primitive (linear blend skinning), `globals` holding each node's world
+// transform. Weights are scaled to sum to 1; a vertex whose weights are all zero keeps the
+// identity and is counted in `unweighted`. Throws for a missing JOINTS_0 / WEIGHTS_0, a joint
+// index outside the skin, or a skin naming a node or matrix that is not there.
+std::vector<glm::dmat4> skin_matrices(const AccessorReader& reader, const tinygltf::Model& model, int skin,
+                                      const tinygltf::Primitive& prim, const std::vector<glm::dmat4>& globals,
+                                      std::size_t count, const std::string& what, const std::string& path,
+                                      std::size_t& unweighted);
 
 }  // namespace sn::scene

@@ -75,3 +75,66 @@ TEST(GltfDeform, ASparseMorphTargetMovesOnlyTheVerticesItNames) {
   expect_near(m.positions[1], {1, 0, 0}, 0, "untouched");
   expect_near(m.positions[2], {0, 1, 2}, 1e-7, "the sparse vertex");
 }
+
+TEST(GltfDeform, ASkinnedMeshIsPlacedByItsJointsAloneNotItsNode) {
+  // Node 0 holds the skinned triangle and a translation of 100 the specification says to ignore
+  // (glTF 3.7.3); it was applied, and the joints were not. Joint 0 is node 1 (translated (0, 5, 0),
+  // its inverse bind matrix undoing that: it leaves vertices in place); joint 1 is node 2, node
+  // 1's child, translated (2, 0, 0) and turned 90 degrees about x, with the identity as inverse
+  // bind matrix. Vertex 0 follows joint 0, vertex 1 joint 1, vertex 2 both, half each.
+  Fixture f;
+  tinygltf::Primitive p = primitive(TINYGLTF_MODE_TRIANGLES, f.vec3s({0, 0, 0, 1, 0, 0, 0, 1, 0}),
+                                    f.vec3s({0, 0, 1, 0, 0, 1, 0, 0, 1}));
+  p.attributes["JOINTS_0"] = f.accessor(f.view(std::vector<uint8_t>{0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0}),
+                                        TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_TYPE_VEC4, 3);
+  p.attributes["WEIGHTS_0"] = f.accessor(f.view(std::vector<float>{1, 0, 0, 0, 1, 0, 0, 0, 0.5f, 0.5f, 0, 0}),
+                                         TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC4, 3);
+  tinygltf::Mesh mesh;
+  mesh.primitives = {p};
+  f.model.meshes.push_back(mesh);
+  const glm::dmat4 ibm0 = glm::translate(glm::dmat4(1.0), glm::dvec3(0, -5, 0));
+  std::vector<float> ibms;
+  for (const glm::dmat4& m : {ibm0, glm::dmat4(1.0)})
+    for (int c = 0; c < 4; ++c)
+      for (int r = 0; r < 4; ++r) ibms.push_back(float(m[c][r]));
+  tinygltf::Skin skin;
+  skin.inverseBindMatrices = f.accessor(f.view(ibms), TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_MAT4, 2);
+  skin.joints = {1, 2};
+  f.model.skins.push_back(skin);
+  tinygltf::Node skinned, root, arm;
+  skinned.mesh = 0;
+  skinned.skin = 0;
+  skinned.translation = {100, 0, 0};
+  root.translation = {0, 5, 0};
+  root.children = {2};
+  arm.translation = {2, 0, 0};
+  const double h = std::sqrt(0.5);
+  arm.rotation = {h, 0, 0, h};  // 90 degrees about x: y -> z, z -> -y
+  f.model.nodes = {skinned, root, arm};
+  f.model.scenes.resize(1);
+  f.model.scenes[0].nodes = {0, 1};
+  f.model.defaultScene = 0;
+  Mesh m = load_mesh(f.write(temp_dir() / "skin.gltf"));
+  ASSERT_EQ(m.vertex_count(), 3u);
+  expect_near(m.positions[0], {0, 0, 0}, 1e-6, "joint 0");
+  expect_near(m.positions[1], {3, 5, 0}, 1e-6, "joint 1");
+  expect_near(m.normals[1], {0, -1, 0}, 1e-6, "joint 1's normal");
+  expect_near(m.positions[2], {1, 3, 0.5}, 1e-6, "half each");
+  // The blend's normal: the inverse transpose of the blended matrix's linear part.
+  const glm::dmat4 joint1 = glm::translate(glm::dmat4(1.0), glm::dvec3(2, 5, 0)) *
+                            glm::rotate(glm::dmat4(1.0), std::acos(-1.0) / 2, glm::dvec3(1, 0, 0));
+  const glm::dmat3 blend = glm::dmat3(0.5 * glm::dmat4(1.0) + 0.5 * joint1);
+  expect_near(m.normals[2], glm::normalize(glm::transpose(glm::inverse(blend)) * glm::dvec3(0, 0, 1)), 1e-6,
+              "half each, normal");
+  EXPECT_TRUE(m.notes.empty()) << m.notes[0];
+
+  // A skinned primitive without JOINTS_0 is a broken file, named as such.
+  f.model.meshes[0].primitives[0].attributes.erase("JOINTS_0");
+  std::string e;
+  try {
+    load_mesh(f.write(temp_dir() / "skin_without_joints.gltf"));
+  } catch (const std::exception& x) {
+    e = x.what();
+  }
+  EXPECT_NE(e.find("mesh 0 primitive 0 is skinned (its node has skin 0) but lacks JOINTS_0"), std::string::npos) << e;
+}
