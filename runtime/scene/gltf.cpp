@@ -588,19 +588,26 @@ class GltfLoader {
       for (int c : m_.nodes[n].children)
         if (c >= 0 && size_t(c) < parent.size()) parent[size_t(c)] = int(n);
     globals_.resize(m_.nodes.size());
+    std::vector<char> done(m_.nodes.size(), 0);
     for (size_t n = 0; n < m_.nodes.size(); ++n) {
-      glm::dmat4 g(1.0);
-      int depth = 0;
-      for (int k = int(n); k >= 0; k = parent[size_t(k)]) {
-        if (++depth > kMaxNodeDepth)  // a cycle, or a chain deeper than the walk allows
+      if (done[n]) continue;
+      std::vector<int> chain;  // n and its ancestors up to one already done
+      for (int k = int(n); k >= 0 && !done[size_t(k)]; k = parent[size_t(k)]) {
+        chain.push_back(k);
+        if (chain.size() > size_t(kMaxNodeDepth))  // a cycle, or a chain deeper than the walk allows
           throw FileError(path_, "nests nodes more than " + std::to_string(kMaxNodeDepth) + " deep above node " +
                                      std::to_string(n) + " (the limit, scene/gltf.h; a cycle?)");
-        std::string why;
-        g = node_transform(m_.nodes[size_t(k)], why) * g;
-        if (!why.empty()) throw FileError(path_, "node " + std::to_string(k) + " has " + why);
       }
-      if (!is_finite(g)) throw FileError(path_, "node " + std::to_string(n) + " has a non-finite transform");
-      globals_[n] = g;
+      const int above = parent[size_t(chain.back())];
+      glm::dmat4 g = above >= 0 ? globals_[size_t(above)] : glm::dmat4(1.0);
+      for (auto k = chain.rbegin(); k != chain.rend(); ++k) {
+        std::string why;
+        g = g * node_transform(m_.nodes[size_t(*k)], why);
+        if (!why.empty()) throw FileError(path_, "node " + std::to_string(*k) + " has " + why);
+        if (!is_finite(g)) throw FileError(path_, "node " + std::to_string(*k) + " has a non-finite transform");
+        globals_[size_t(*k)] = g;
+        done[size_t(*k)] = 1;
+      }
     }
     return globals_;
   }

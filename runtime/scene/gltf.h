@@ -15,14 +15,14 @@ namespace sn::scene {
 constexpr int kMaxNodeDepth = 256;
 
 // Loads a .gltf or .glb file (told apart by content, not extension): walks the default scene's
-// node tree, applies each node's transform (matrix or TRS) to positions and, through its
-// inverse transpose, to normals, and merges every triangle primitive (triangles, strips, fans;
-// uint8/16/32 or no indices) in the rest shape its default morph weights give, a skinned one
-// placed by its joints instead of its node (scene/gltf_deform.h); a primitive without normals gets flat ones (glTF 2.0, 3.7.2.1),
-// its triangles' vertices split. Throws "mesh file 'PATH': reason" for a missing, truncated or
-// malformed file, an accessor reaching outside its buffer, an index out of range, or a file
-// with no triangles. The base-colour texture is decoded when first read, and throws then if it
-// cannot be (scene/texture.h).
+// node tree and merges every triangle primitive (triangles, strips, fans; uint8/16/32 or no
+// indices) as glTF 2.0 draws it without animation: placed by its node's transform (matrix or TRS;
+// normals through the inverse transpose), in the rest shape its default morph weights give, a
+// skinned one placed by its joints instead of its node (scene/gltf_deform.h); a primitive without
+// normals gets flat ones (3.7.2.1), its triangles' vertices split. Throws "mesh file 'PATH':
+// reason" for a missing, truncated or malformed file, an accessor reaching outside its buffer, an
+// index out of range, or a file with no triangles. The base-colour texture is decoded when first
+// read, and throws then if it cannot be (scene/texture.h).
 Mesh load_mesh(const std::string& path);
 
 // Writes `m` as a binary glTF (.glb): positions (with min/max), normals, uvs when present,
