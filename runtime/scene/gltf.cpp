@@ -425,25 +425,8 @@ class GltfLoader {
     // Skinned: every vertex through its own skin matrix, into world space (world is the identity).
     std::vector<char> skin_mirrors;  // per vertex
     if (skin >= 0) {
-      const std::vector<glm::dmat4> skins =
-          skin_matrices(reader_, m_, skin, prim, globals(), count, what, path_, unweighted_vertices_);
-      skin_mirrors.resize(count);
-      for (size_t i = 0; i < count; ++i) {
-        const glm::dmat3 linear(skins[i]);
-        const double det = glm::determinant(linear);
-        skin_mirrors[i] = det < 0;
-        const glm::dvec4 p = skins[i] * glm::dvec4(pos[3 * i], pos[3 * i + 1], pos[3 * i + 2], 1.0);
-        for (int k = 0; k < 3; ++k) pos[3 * i + k] = p[k];
-        if (!nrm.empty() && std::abs(det) > 1e-300) {
-          const glm::dvec3 n = glm::transpose(glm::inverse(linear)) * glm::dvec3(nrm[3 * i], nrm[3 * i + 1], nrm[3 * i + 2]);
-          for (int k = 0; k < 3; ++k) nrm[3 * i + k] = n[k];
-        }
-        if (!tan.empty()) {
-          const glm::dvec3 t = linear * glm::dvec3(tan[4 * i], tan[4 * i + 1], tan[4 * i + 2]);
-          for (int k = 0; k < 3; ++k) tan[4 * i + k] = t[k];
-          if (det < 0) tan[4 * i + 3] = -tan[4 * i + 3];
-        }
-      }
+      const auto skins = skin_matrices(reader_, m_, skin, prim, globals(), count, what, path_, unweighted_vertices_);
+      skin_mirrors = apply_skin(skins, pos, nrm, tan);
     }
 
     std::vector<uint32_t> local;

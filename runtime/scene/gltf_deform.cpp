@@ -1,5 +1,7 @@
 #include "scene/gltf_deform.h"
 
+#include <cmath>
+
 #include <glm/gtc/type_ptr.hpp>
 
 namespace sn::scene {
@@ -88,6 +90,29 @@ std::vector<glm::dmat4> skin_matrices(const AccessorReader& reader, const tinygl
     }
   }
   return out;
+}
+
+std::vector<char> apply_skin(const std::vector<glm::dmat4>& skins, std::vector<double>& pos,
+                             std::vector<double>& nrm, std::vector<double>& tan) {
+  std::vector<char> mirrors(skins.size());
+  for (std::size_t i = 0; i < skins.size(); ++i) {
+    const glm::dmat3 linear(skins[i]);
+    const double det = glm::determinant(linear);
+    mirrors[i] = det < 0;
+    const glm::dvec4 p = skins[i] * glm::dvec4(pos[3 * i], pos[3 * i + 1], pos[3 * i + 2], 1.0);
+    for (int k = 0; k < 3; ++k) pos[3 * i + k] = p[k];
+    if (!nrm.empty() && std::abs(det) > 1e-300) {  // a collapsed vertex keeps its normal
+      const glm::dmat3 normal_matrix = glm::transpose(glm::inverse(linear));
+      const glm::dvec3 n = normal_matrix * glm::dvec3(nrm[3 * i], nrm[3 * i + 1], nrm[3 * i + 2]);
+      for (int k = 0; k < 3; ++k) nrm[3 * i + k] = n[k];
+    }
+    if (!tan.empty()) {
+      const glm::dvec3 t = linear * glm::dvec3(tan[4 * i], tan[4 * i + 1], tan[4 * i + 2]);
+      for (int k = 0; k < 3; ++k) tan[4 * i + k] = t[k];
+      if (det < 0) tan[4 * i + 3] = -tan[4 * i + 3];
+    }
+  }
+  return mirrors;
 }
 
 }  // namespace sn::scene

@@ -29,4 +29,11 @@ std::vector<glm::dmat4> skin_matrices(const AccessorReader& reader, const tinygl
                                       std::size_t count, const std::string& what, const std::string& path,
                                       std::size_t& unweighted);
 
+// Moves each vertex through its skin matrix: positions (3 per vertex), normals (3, when not empty)
+// through its inverse transpose, tangents (4, when not empty) through its linear part, their
+// handedness flipped where it mirrors. Returns, per vertex, whether its matrix mirrors (the
+// loader turns those triangles' winding).
+std::vector<char> apply_skin(const std::vector<glm::dmat4>& skins, std::vector<double>& pos,
+                             std::vector<double>& nrm, std::vector<double>& tan);
+
 }  // namespace sn::scene

@@ -37,7 +37,8 @@ TEST(GltfDeform, MorphTargetsAddAtTheirDefaultWeightsAndANodesWeightsOverrideThe
   Fixture f;
   tinygltf::Primitive p = primitive(TINYGLTF_MODE_TRIANGLES, f.vec3s({0, 0, 0, 1, 0, 0, 0, 1, 0}),
                                     f.vec3s({0, 0, 1, 0, 0, 1, 0, 0, 1}));
-  p.targets.push_back({{"POSITION", f.vec3s({0, 0, 2, 0, 0, 2, 0, 0, 2})}, {"NORMAL", f.vec3s({0, 2, 0, 0, 2, 0, 0, 2, 0})}});
+  p.targets.push_back({{"POSITION", f.vec3s({0, 0, 2, 0, 0, 2, 0, 0, 2})},
+                       {"NORMAL", f.vec3s({0, 2, 0, 0, 2, 0, 0, 2, 0})}});
   p.targets.push_back({{"POSITION", f.vec3s({0, 0, 0, 1, 0, 0, 0, 0, 0})}});
   tinygltf::Mesh mesh;
   mesh.primitives = {p};
