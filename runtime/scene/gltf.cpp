@@ -314,6 +314,16 @@ class GltfLoader {
       mesh_.tangent_source = "file";
     }
     mesh_.bounds = compute_bounds(mesh_.positions);
+    // Positions are floats once placed: far from the origin their spacing (float's at the largest
+    // coordinate) becomes visible in the shape (a unit sphere placed at 1e6 is lumpy).
+    const glm::dvec3 reach = glm::max(glm::abs(mesh_.bounds.min), glm::abs(mesh_.bounds.max));
+    const double far = std::max({reach.x, reach.y, reach.z}), size = 2 * mesh_.bounds.radius();
+    const double spacing = far > 0 ? std::ldexp(1.0, std::ilogb(far) - 23) : 0;
+    if (spacing > 1e-3 * size)
+      mesh_.notes.push_back("lies " + io::number_text(far) + " from the origin, " + io::number_text(far / size) +
+                            " times its size: its vertices, floats once placed, are " + io::number_text(spacing) +
+                            " apart there (" + io::number_text(spacing / size) +
+                            " of its size), which can show in the shape; move it to the origin in the file");
     if (texture_image_ >= 0) {
       mesh_.base_color = texture(texture_image_);
       mesh_.base_color.sampler = sampler_;

@@ -262,6 +262,25 @@ TEST(Mesh, AMirroringNodeFlipsTheWindingSoTrianglesStillFaceTheirNormals) {
   expect_consistent_winding(m);
 }
 
+// A mesh placed far from the origin (a georeferenced or CAD export: small local coordinates under
+// a large translation) loses its shape to float's spacing once placed, and the mesh says so.
+TEST(Mesh, AMeshFarFromTheOriginSaysItsVerticesLosePrecision) {
+  auto placed_at = [](double x) {
+    Fixture f;
+    tinygltf::Mesh mesh;
+    mesh.primitives.push_back(primitive(TINYGLTF_MODE_TRIANGLES, f.vec3s({0, 0, 0, 1, 0, 0, 0, 1, 0}),
+                                        f.vec3s({0, 0, 1, 0, 0, 1, 0, 0, 1})));
+    f.model.meshes.push_back(mesh);
+    f.model.nodes[size_t(f.place(0))].translation = {x, 0, 0};
+    return load_mesh(f.write(temp_dir() / "far.gltf"));
+  };
+  EXPECT_TRUE(placed_at(1e3).notes.empty());
+  const Mesh far = placed_at(1e6);
+  ASSERT_EQ(far.notes.size(), 1u);
+  EXPECT_NE(far.notes[0].find("lies 1e+06 from the origin"), std::string::npos) << far.notes[0];
+  EXPECT_NE(far.notes[0].find("are 0.0625 apart there"), std::string::npos) << far.notes[0];
+}
+
 TEST(Mesh, SparseAccessorsOverrideTheirBaseValues) {
   // positions 0..2 in the buffer, then one sparse index (ubyte 1, padded) and its value
   std::vector<unsigned char> bytes = float_bytes({0, 0, 0, 1, 0, 0, 0, 1, 0});
