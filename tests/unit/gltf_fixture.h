@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 #include <tiny_gltf.h>
 
+#include <glm/glm.hpp>
+
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -13,6 +15,12 @@
 #include <vector>
 
 namespace gltf_fixture {
+
+inline void expect_near(glm::dvec3 a, glm::dvec3 b, double tol, const std::string& what) {
+  EXPECT_NEAR(a.x, b.x, tol) << what;
+  EXPECT_NEAR(a.y, b.y, tol) << what;
+  EXPECT_NEAR(a.z, b.z, tol) << what;
+}
 
 class Fixture {
  public:

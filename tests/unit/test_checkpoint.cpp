@@ -54,6 +54,13 @@ void write_all(const fs::path& p, const std::string& s) {
   f.write(s.data(), std::streamsize(s.size()));
 }
 
+// A checkpoint's bytes edited in place, their checksum (the header's last 8 bytes, over the
+// payload after it) made good again: what a file damaged with care looks like.
+void reseal(std::string& bytes) {
+  const uint64_t sum = io::fnv1a(bytes.substr(24));
+  std::memcpy(bytes.data() + 16, &sum, 8);
+}
+
 std::string load_error(const fs::path& p) {
   try {
     load_checkpoint(p.string());
@@ -159,8 +166,7 @@ TEST(Checkpoint, NonFiniteParametersAreRefusedOnSaveAndLoad) {
     const std::size_t at = bytes.find(std::string(m, 4));
     EXPECT_NE(at, std::string::npos);
     bytes.replace(at, 4, std::string(v, 4));
-    const uint64_t sum = io::fnv1a(bytes.substr(24));
-    std::memcpy(bytes.data() + 16, &sum, 8);
+    reseal(bytes);
     const auto out = scratch("nonfinite.snmlp");
     write_all(out, bytes);
     return out.string();
@@ -254,8 +260,7 @@ TEST(Checkpoint, EncodingsRoundTrip) {
   const std::size_t at = renamed.find("triangle_wave");
   ASSERT_NE(at, std::string::npos);
   renamed.replace(at, 13, "triangle_wavy");
-  const uint64_t sum = io::fnv1a(renamed.substr(24));
-  std::memcpy(renamed.data() + 16, &sum, 8);
+  reseal(renamed);
   auto bad = scratch("unknown_encoding.snmlp");
   write_all(bad, renamed);
   EXPECT_NE(load_error(bad).find("the network encodes input 'uv' with 'triangle_wavy', which this build does not know "
@@ -361,8 +366,7 @@ TEST(Checkpoint, ParameterCountErrorNamesTheRealNetwork) {
   std::memcpy(&size, bytes.data() + 12, 4);
   size -= 4;
   std::memcpy(bytes.data() + 12, &size, 4);
-  const uint64_t sum = io::fnv1a(bytes.substr(24));
-  std::memcpy(bytes.data() + 16, &sum, 8);
+  reseal(bytes);
   write_all(path, bytes);
   const std::string err = load_error(path);
   EXPECT_NE(err.find("checkpoint has 42 parameters, its spec " + s.describe() + " needs 43"), std::string::npos) << err;

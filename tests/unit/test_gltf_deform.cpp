@@ -22,12 +22,6 @@ std::filesystem::path temp_dir() {
   return dir.path();
 }
 
-void expect_near(glm::dvec3 a, glm::dvec3 b, double tol, const std::string& what) {
-  EXPECT_NEAR(a.x, b.x, tol) << what;
-  EXPECT_NEAR(a.y, b.y, tol) << what;
-  EXPECT_NEAR(a.z, b.z, tol) << what;
-}
-
 }  // namespace
 
 TEST(GltfDeform, MorphTargetsAddAtTheirDefaultWeightsAndANodesWeightsOverrideTheMeshs) {

@@ -64,12 +64,6 @@ std::string error_of(F f) {
   return "";
 }
 
-void expect_near(glm::dvec3 a, glm::dvec3 b, double tol, const std::string& what) {
-  EXPECT_NEAR(a.x, b.x, tol) << what;
-  EXPECT_NEAR(a.y, b.y, tol) << what;
-  EXPECT_NEAR(a.z, b.z, tol) << what;
-}
-
 // Every triangle must have area and face the way its vertices' normals point.
 void expect_consistent_winding(const Mesh& m) {
   for (size_t t = 0; t < m.indices.size(); t += 3) {
