@@ -72,9 +72,15 @@ end
 --   options = { quick, shard = {index, count} | nil, out, backend, data, ggx, runs_per_job, name }
 -- `extra_flags` adds script-specific flags, same shape as `common` above (value flags give a
 -- string, others true; a flag with `choices` takes one of them).
-function cli.parse(args, name, extra, getenv)
+function cli.parse(args, name, extra, getenv, only)
+  -- `only`, when given, lists the common flags the script takes ({"--quick", "--out", "--help"}
+  -- for one that trains nothing): the others are unknown options there, and --help omits them.
+  local taken = {}
+  for _, f in ipairs(only or {}) do taken[f] = true end
   local flags = {}
-  for _, f in ipairs(common) do flags[#flags + 1] = f end
+  for _, f in ipairs(common) do
+    if not only or taken[f.flag] then flags[#flags + 1] = f end
+  end
   for _, f in ipairs(extra or {}) do flags[#flags + 1] = f end
   local by_flag = {}
   for _, f in ipairs(flags) do by_flag[f.flag] = f end
@@ -140,8 +146,8 @@ end
 -- cli.parse for a script's own command line: a mistake in it is the user's typing, not the
 -- script's fault, so it prints the message alone (no Lua traceback) and exits 2, the usual
 -- status of a command-line error.
-function cli.parse_or_exit(args, name, extra, getenv)
-  local ok, o = pcall(cli.parse, args, name, extra, getenv)
+function cli.parse_or_exit(args, name, extra, getenv, only)
+  local ok, o = pcall(cli.parse, args, name, extra, getenv, only)
   if ok then return o end
   local script = arg and arg[0] or "scripts/" .. name .. ".lua"
   io.stderr:write(tostring(o), "\n(shadenet ", script, " --help lists the options)\n")

@@ -84,6 +84,11 @@ local scode, sout = C.run("scripts/stress_lighting.lua", { "--help" })
 assert(scode == 0 and sout:find("usage: shadenet scripts/stress_lighting.lua", 1, true), "stress --help:\n" .. sout)
 scode, sout = C.run("scripts/stress_lighting.lua", { "--out" })
 assert(scode ~= 0 and sout:find("--out needs a value", 1, true), "stress --out without a value:\n" .. sout)
+-- The options of training are not its own: --help omits them, and given they are unknown.
+local _, help = C.run("scripts/stress_lighting.lua", { "--help" })
+assert(not help:find("--shard", 1, true) and not help:find("--backend", 1, true), "stress --help:\n" .. help)
+scode, sout = C.run("scripts/stress_lighting.lua", { "--backend", "gl" })
+assert(scode == 2 and sout:find("unknown option '--backend' (valid: --quick, --out DIR, --help)", 1, true), sout)
 C.rm(sdir)
 
 print("section scripts: ok")
