@@ -4,6 +4,7 @@
 #include <poll.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -36,6 +37,8 @@ StdinReader::StdinReader(std::function<void()> wake) : wake_(std::move(wake)) {
     using_history();
     stifle_history(1000);
     if (!history_.empty()) read_history(history_.c_str());
+    for (int i = 0; i < history_length; ++i)
+      if (HIST_ENTRY* h = history_get(history_base + i); h && h->line) longest_ = std::max(longest_, std::strlen(h->line));
   }
   if (pipe2(control_, O_CLOEXEC) != 0) control_[0] = control_[1] = -1;
   thread_ = std::thread([this] { run(); });
@@ -76,6 +79,7 @@ void StdinReader::prompt(const char* text) {
     }
     std::string s = line;
     free(line);
+    self->longest_ = std::max(self->longest_, s.size());
     if (s.find_first_not_of(" \t") != std::string::npos) {
       add_history(s.c_str());
       if (!self->history_.empty()) write_history(self->history_.c_str());
@@ -85,6 +89,17 @@ void StdinReader::prompt(const char* text) {
   line_open_ = true;
   std::lock_guard<std::mutex> lock(mutex_);
   if (ready_) wake_();  // characters typed while the last line ran
+}
+
+// libedit 3.1 (Debian 12's) points rl_line_buffer at the buffer its line is converted into, once,
+// and after each character writes the line's end there (rl_line_buffer[rl_end] = 0); a line past
+// 1,020 bytes moves that buffer, and the write went to freed memory: a pasted long line crashed
+// the session ("malloc(): invalid next size"). It points at a buffer of ours instead, kept longer
+// than any line one character can make: the line so far plus the longest it may recall or yank.
+void StdinReader::hold_line_buffer() {
+  const std::size_t need = 2 * (std::size_t(std::max(rl_end, 0)) + longest_) + 4096;
+  if (line_buffer_.size() < need) line_buffer_.assign(need, '\0');
+  rl_line_buffer = line_buffer_.data();
 }
 
 void StdinReader::edit() {
@@ -100,7 +115,9 @@ void StdinReader::edit() {
       hangup = fd.revents & (POLLHUP | POLLERR | POLLNVAL);
       break;
     }
+    hold_line_buffer();
     rl_callback_read_char();
+    longest_ = std::max(longest_, std::size_t(std::max(rl_end, 0)));
   }
   std::lock_guard<std::mutex> lock(mutex_);
   if (hangup) eof_ = true;

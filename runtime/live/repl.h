@@ -14,6 +14,7 @@
 #include <mutex>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include <lua.hpp>
 
@@ -39,12 +40,15 @@ class StdinReader {
  private:
   void run();
   void edit();  // feeds the typed characters to libedit (loop thread)
+  void hold_line_buffer();  // before each character fed to libedit: see repl.cpp
   std::function<void()> wake_;
   bool editing_ = false;  // a terminal: libedit reads, the thread only polls
   bool ready_ = false;    // (editing) stdin has characters the loop has not fed to libedit yet
   bool line_open_ = false;  // (editing) a prompt is shown and libedit is reading its line
   std::condition_variable consumed_;
   std::string history_;
+  std::vector<char> line_buffer_;  // (editing) what libedit's rl_line_buffer points to
+  std::size_t longest_ = 0;        // (editing) the longest line of the history or edited so far
   int control_[2] = {-1, -1};
   std::mutex mutex_;
   std::deque<std::string> lines_;

@@ -1,6 +1,7 @@
 -- The console at a terminal (a pseudo-terminal here): lines are edited (the up arrow recalls the
 -- last line, backspace deletes, the edited line runs), the history is saved to its file and the
--- next session recalls the last session's lines; Ctrl-D on an empty line ends the session.
+-- next session recalls the last session's lines; Ctrl-D on an empty line ends the session; lines
+-- of thousands of characters are typed and recalled like short ones.
 -- (Piped stdin, no terminal: tests/window/test_live_repl.lua and the other live tests.)
 local sn = require "shadenet"
 package.path = "tests/live/?.lua;" .. package.path
@@ -40,4 +41,25 @@ local out2 = t2:wait("V=42")
 t2:type(CTRL_D)
 t2:close()
 assert(select(2, out2:gsub("V=42", "")) >= 1, "the recalled lines ran")
+-- Lines past libedit's 1,020-byte conversion buffer (a pasted table of weights): its readline
+-- layer wrote their end into freed memory, and the session died ("malloc(): invalid next size").
+-- Typed a piece at a time (a terminal's input queue holds 4 KB), then recalled from the history.
+local t3 = session()
+t3:wait("READY")
+t3:wait("> ")
+local function type_long(text)
+  for at = 1, #text, 1000 do t3:type(text:sub(at, at + 999)) end
+end
+for n = 1, 3 do
+  type_long('s = "' .. ("w"):rep(3000 * n) .. '"\r')
+  t3:type('print("LEN=" .. #s)\r')
+  t3:wait("LEN=" .. 3000 * n)
+end
+t3:type('s = ""\r')
+local before = #t3:output()
+t3:type(UP .. UP .. UP .. "\r")  -- the longest line, recalled
+t3:type('print("LEN=" .. #s)\r')
+t3:wait("LEN=9000", nil, before)
+t3:type(CTRL_D)
+t3:close()
 print(("console at a terminal: the edited line ran (V=42), history in %s recalled by the next session"):format(history))
