@@ -207,13 +207,23 @@ bool incomplete(lua_State* L) {
 bool Console::execute(const std::string& line, bool* ok) {
   if (ok) *ok = false;
   printed_values_ = false;
-  buffer_ += buffer_.empty() ? line : "\n" + line;
+  // "=expr" is "return expr", as in the lua interpreter.
+  buffer_ += buffer_.empty() ? (line.rfind('=', 0) == 0 ? "return " + line.substr(1) : line) : "\n" + line;
   int base = lua_gettop(L_);
   // As the lua interpreter does: try the line as an expression first so its values print. It
   // is an argument, not `return <line>`, so a call is no tail call and its errors keep stdin:LINE.
-  std::string ret = "local function pack(...) return {n = select('#', ...), ...} end return pack(" + buffer_ + "\n)";
+  // The closing bracket on the same line, so that a call's error names the line it is on (on a
+  // line of its own it named the next); on the next line only where a comment ends the chunk.
+  static const std::string pack = "local function pack(...) return {n = select('#', ...), ...} end return pack(";
   bool expression = true;
-  if (luaL_loadbuffer(L_, ret.data(), ret.size(), "=stdin") != 0) {
+  std::string ret = pack + buffer_ + ")";
+  int status = luaL_loadbuffer(L_, ret.data(), ret.size(), "=stdin");
+  if (status != 0) {
+    lua_pop(L_, 1);
+    ret = pack + buffer_ + "\n)";
+    status = luaL_loadbuffer(L_, ret.data(), ret.size(), "=stdin");
+  }
+  if (status != 0) {
     lua_pop(L_, 1);
     expression = false;
     if (luaL_loadbuffer(L_, buffer_.data(), buffer_.size(), "=stdin") != 0) {
@@ -237,17 +247,21 @@ bool Console::execute(const std::string& line, bool* ok) {
     return true;
   }
   if (ok) *ok = true;
-  if (expression && lua_istable(L_, -1)) {  // print(...) of the values, through the script's own `print`
-    int results = lua_gettop(L_);
-    lua_getfield(L_, results, "n");
-    int n = int(lua_tointeger(L_, -1));
+  // print(...) of the values, through the script's own `print`: an expression's (packed in one
+  // table), or a statement's `return` (on the stack above the traceback function).
+  int first = base + 2, n = lua_gettop(L_) - base - 1;
+  if (expression) {
+    lua_getfield(L_, first, "n");
+    n = int(lua_tointeger(L_, -1));
     lua_pop(L_, 1);
-    printed_values_ = n > 0;
-    if (n > 0) {
-      lua_getglobal(L_, "print");
-      for (int i = 1; i <= n; ++i) lua_rawgeti(L_, results, i);
-      if (lua_pcall(L_, n, 0, 0) != 0) fprintf(stderr, "%s\n", lua_tostring(L_, -1));
-    }
+    for (int i = 1; i <= n; ++i) lua_rawgeti(L_, first, i);
+    first = lua_gettop(L_) - n + 1;
+  }
+  printed_values_ = n > 0;
+  if (n > 0) {
+    lua_getglobal(L_, "print");
+    lua_insert(L_, first);
+    if (lua_pcall(L_, n, 0, 0) != 0) fprintf(stderr, "%s\n", lua_tostring(L_, -1));
   }
   fflush(stdout);
   lua_settop(L_, base);

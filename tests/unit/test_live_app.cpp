@@ -102,6 +102,21 @@ TEST(LiveConsole, RunsLinesLikeTheLuaInterpreter) {
   EXPECT_NE(err.find("unexpected symbol near '='"), std::string::npos) << err;
   luaL_dostring(L, "return table.concat(out, '|')");
   EXPECT_STREQ(lua_tostring(L, -1), "21\ttwo|40");
+  // As the lua interpreter: a statement's `return` values print, "=expr" is "return expr", and an
+  // expression's error names its line (the call's closing bracket stood on the next: stdin:2; it
+  // still does after a trailing comment, which would comment it out).
+  luaL_dostring(L, "out = {}");
+  EXPECT_TRUE(c.execute("return 1, nil, 'x'", &ok));
+  EXPECT_TRUE(c.printed_values());
+  EXPECT_TRUE(c.execute("=x * 2", &ok));
+  EXPECT_TRUE(c.execute("x -- the value", &ok));
+  testing::internal::CaptureStderr();
+  EXPECT_TRUE(c.execute("nosuch.y", &ok));
+  err = testing::internal::GetCapturedStderr();
+  EXPECT_EQ(err.find("stdin:2"), std::string::npos) << err;
+  EXPECT_NE(err.find("stdin:1: attempt to index global 'nosuch'"), std::string::npos) << err;
+  luaL_dostring(L, "return table.concat(out, '|')");
+  EXPECT_STREQ(lua_tostring(L, -1), "1\tnil\tx|40|20");
   lua_close(L);
 }
 
