@@ -130,7 +130,7 @@ class Loop {
   void take_requests();
   void redraw();
   void present();
-  bool tick(const std::string& text, double fraction);
+  const char* tick(const std::string& text, double fraction);
   // What the view is drawn at: the window's framebuffer, or headless the --size given (0 x 0:
   // the script's size, sn.live.show{ size = ... }, else 640 x 480).
   std::pair<int, int> view_size() const {
@@ -217,7 +217,8 @@ bool Loop::call(const char* fn, int nargs, int nresults, std::string* error) {
 
 // The terminal gets the overlay's text (headline, source line, context), then the traceback.
 void Loop::report(const std::string& message) {
-  if (message == last_reported_) return;
+  // Closing the window stops the work it was waiting on: the error that stops is no news.
+  if (message == last_reported_ || quit_) return;
   if (!message.empty()) {
     ErrorReport r = report_error(message);
     std::string text;
@@ -505,39 +506,41 @@ void Loop::redraw() {
   set_status();
 }
 
-// sn.live._tick(text, fraction) -> cancelled: called by long work (shadenet.live.busy.lua).
+// sn.live._tick(text, fraction) -> why the work must stop, or false: called by long work
+// (shadenet.live.busy.lua).
 int Loop::tick_thunk(lua_State* L) {
   auto* self = static_cast<Loop*>(lua_touserdata(L, lua_upvalueindex(1)));
   const char* text = luaL_checkstring(L, 1);
   double fraction = luaL_optnumber(L, 2, 0);
-  lua_pushboolean(L, self->tick(text, fraction));
+  if (const char* why = self->tick(text, fraction)) lua_pushstring(L, why);
+  else lua_pushboolean(L, 0);
   return 1;
 }
 
 // During training (sn.train's tick) or between recorded frames: at most every 40 ms (at least
 // 10 pictures a second while the work ticks at least that often), show the last picture with the progress bar and read
-// the window's events; true when the user cancelled (or closed the window).
-bool Loop::tick(const std::string& text, double fraction) {
+// the window's events; why the work must stop when the user cancelled or closed the window, else null.
+const char* Loop::tick(const std::string& text, double fraction) {
   hud_.set_progress(text, fraction);
   auto now = Clock::now();
   double since = std::chrono::duration<double>(now - last_tick_).count();
   if (!ctx_.windowed()) {
     if (since >= 1) fprintf(stderr, "[live] %s\n", text.c_str()), last_tick_ = now;  // headless: a line a second
     if (!shown_path_.empty() && since >= 1) present();
-    return false;
+    return nullptr;
   }
-  if (since < 0.04) return false;  // work that ticks every 50 ms is shown at each tick
+  if (since < 0.04) return nullptr;  // work that ticks every 50 ms is shown at each tick
   last_tick_ = now;
   ctx_.poll(0);  // input callbacks run; the view they change is drawn after the work
-  bool cancel = input_.take_cancel();
-  if (ctx_.should_close()) cancel = quit_ = true;
+  const char* why = input_.take_cancel() ? "cancelled by the user (Esc)" : nullptr;
+  if (ctx_.should_close()) why = "stopped: the window was closed", quit_ = true;
   try {
-    present();
+    if (!quit_) present();
   } catch (const std::exception& e) {
     fprintf(stderr, "[live] cannot show the progress: %s\n", e.what());
   }
-  if (cancel) fprintf(stderr, "[live] cancelled: %s\n", text.c_str());
-  return cancel;
+  if (why) fprintf(stderr, "[live] %s: %s\n", quit_ ? "window closed" : "cancelled", text.c_str());
+  return why;
 }
 
 // The probe box follows the cursor (key I): the values of the last frame under it, read back

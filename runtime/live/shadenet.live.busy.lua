@@ -8,11 +8,13 @@ local live = sn.live
 
 local busy = {}
 
--- Shows `text` and `fraction` (0..1) in the window; raises an error when the user cancelled.
+-- Shows `text` and `fraction` (0..1) in the window; raises an error when the user cancelled (Esc)
+-- or closed the window.
 function busy.tick(text, fraction)
   local tick = live._tick  -- set by the C++ loop while it runs
   if not (S.active and tick) then return end
-  if tick(text, fraction or 0) then error("cancelled by the user (Esc)", 0) end
+  local why = tick(text, fraction or 0)
+  if why then error(why, 0) end
 end
 
 -- sn.train with the job's progress in the window (epoch, step, validation MSE, ETA) about
@@ -35,8 +37,10 @@ function sn.train(o)
     local text = ("training%s: epoch %d/%d, step %d/%d%s%s  (Esc cancels)"):format(
       nets > 1 and (" %d nets"):format(nets) or "", t.epoch, t.epochs, t.step, t.steps, val_mse,
       eta and ("  ETA %.1f s"):format(eta) or "")
-    if live._tick(text, t.fraction) then
+    local why = live._tick(text, t.fraction)
+    if why then
       cancelled = t
+      cancelled.why = why
       return "stop"
     end
     if user_tick then return user_tick(t) end
@@ -46,8 +50,8 @@ function sn.train(o)
   local ok, results = pcall(plain_train, copy)
   if not ok then error(results, 2) end
   if cancelled then
-    error(("sn.train: cancelled by the user (Esc) in epoch %d of %d; the last good state stays"):format(
-      cancelled.epoch, cancelled.epochs), 2)
+    error(("sn.train: %s in epoch %d of %d; the last good state stays"):format(cancelled.why, cancelled.epoch,
+                                                                               cancelled.epochs), 2)
   end
   return results
 end

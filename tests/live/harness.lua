@@ -265,6 +265,15 @@ function H.x11()
     int XTestFakeKeyEvent(Display* d, unsigned int keycode, int is_press, unsigned long delay);
     int XTestFakeButtonEvent(Display* d, unsigned int button, int is_press, unsigned long delay);
     int XTestFakeMotionEvent(Display* d, int screen, int x, int y, unsigned long delay);
+    unsigned long XDefaultRootWindow(Display* d);
+    int XQueryTree(Display* d, unsigned long w, unsigned long* root, unsigned long* parent, unsigned long** children,
+                   unsigned int* n);
+    int XFree(void* p);
+    unsigned long XInternAtom(Display* d, const char* name, int only_if_exists);
+    typedef struct { int type; unsigned long serial; int send_event; Display* display; unsigned long window;
+                     unsigned long message_type; int format; long l[5]; } XClientMessageEvent;
+    typedef union { int type; XClientMessageEvent xclient; long pad[24]; } XEvent;
+    int XSendEvent(Display* d, unsigned long w, int propagate, long mask, XEvent* e);
   ]])
   local X11, Xtst = ffi.load("X11"), ffi.load("Xtst.so.6")
   local d = X11.XOpenDisplay(nil)
@@ -294,6 +303,24 @@ function H.x11()
       self:move(math.floor(x0 + (x1 - x0) * i / steps), math.floor(y0 + (y1 - y0) * i / steps))
     end
     Xtst.XTestFakeButtonEvent(d, button, 0, 0)
+    X11.XSync(d, 0)
+  end
+  -- What a window manager's close button sends (there is none under Xvfb): WM_DELETE_WINDOW to
+  -- every top-level window.
+  function input:close_window()
+    local root, parent, children, n = ffi.new("unsigned long[1]"), ffi.new("unsigned long[1]"),
+                                      ffi.new("unsigned long*[1]"), ffi.new("unsigned int[1]")
+    X11.XQueryTree(d, X11.XDefaultRootWindow(d), root, parent, children, n)
+    local e = ffi.new("XEvent")
+    e.xclient.type = 33  -- ClientMessage
+    e.xclient.message_type = X11.XInternAtom(d, "WM_PROTOCOLS", 0)
+    e.xclient.format = 32
+    e.xclient.l[0] = X11.XInternAtom(d, "WM_DELETE_WINDOW", 0)
+    for i = 0, n[0] - 1 do
+      e.xclient.window = children[0][i]
+      X11.XSendEvent(d, children[0][i], 0, 0, e)
+    end
+    if children[0] ~= nil then X11.XFree(children[0]) end
     X11.XSync(d, 0)
   end
   function input:close() X11.XCloseDisplay(d) end

@@ -93,3 +93,26 @@ s:send("print('ALIVE ' .. sn.live.frames())")
 s:wait_log("ALIVE %d+")
 s:stop()
 print("3. Esc cancelled the training; the session kept its last good network")
+
+-- 4. Closing the window during a training ends the session: the training stops and says why,
+-- and the error that stops the run is not reported as one (it read "cancelled by the user (Esc)",
+-- with a traceback).
+H.write(script, version(4, 3, 2000000))
+local s4 = H.start { dir = dir .. "/closing", script = script, size = "200x150", limit = 60 }
+s4:wait_log("TRAIN START 4")
+H.sleep(0.5)
+local x4 = H.x11()
+x4:close_window()
+x4:close()
+s4:wait_log("%[live%] window closed: training")
+for _ = 1, 200 do
+  if not H.exists(("/proc/%d/stat"):format(s4.pid)) then break end
+  H.sleep(0.05)
+end
+s4.pipe:close()
+local log4 = s4:log()
+assert(not H.exists(("/proc/%d/stat"):format(s4.pid)), "the session ended")
+assert(not log4:find("[live] error:", 1, true) and not log4:find("cancelled by the user", 1, true)
+       and not log4:find("TRAINED 4", 1, true),
+       "closed, not cancelled with an error:\n" .. log4)
+print("4. closing the window stopped the training and ended the session without an error report")
