@@ -15,4 +15,5 @@ return {
   pending_binds = nil,  -- the ones given during the run in progress (committed when it succeeds)
   requests = {},    -- actions asked of the loop from Lua (quit)
   out = {},         -- the loop's targets, reused between frames (by "what WxH")
+  backend_said = nil,  -- the console's last line on which backend draws the network view
 }

@@ -35,7 +35,8 @@ function M.drawer(spec, key)
     end
   end
   -- A network is drawn straight into the loop's target (`into`, when it has the view's size):
-  -- no image on the host; the live loop says once per sn.live.show which backend drew it.
+  -- no image on the host; the console says which backend drew it, once, and again only when that
+  -- changes (the state outlives reloads: each run's sn.live.show made it say so again).
   local said = false
   return function(view, into)
     if not (into and select(1, into:size()) == view.width and select(2, into:size()) == view.height) then
@@ -46,7 +47,9 @@ function M.drawer(spec, key)
     if not said and S.active then  -- the watching user's console, not a plain run's output
       said = true
       local info = sn.render_info()
-      print(("[live] network view: %s backend (%s)"):format(info.backend, info.reason))
+      local line = ("[live] network view: %s backend (%s)"):format(info.backend, info.reason)
+      if line ~= S.backend_said then print(line) end
+      S.backend_said = line
     end
     return out
   end

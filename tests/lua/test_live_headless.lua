@@ -140,6 +140,28 @@ s:send("tint[3] = 0.05")  -- the script's local, from the console
 n = s:settle()
 assert(math.abs(s:image(n):get(2, 2)[3] - 0.05) < 1e-6, "the console's edit is shown")
 s:stop()
+-- A network's view says which backend draws it once, not again at each reload.
+local nscript = wdir .. "/net.lua"
+local function net_script(run)
+  return ([[
+local sn = require "shadenet"
+local scene = sn.scene { mesh = sn.mesh.sphere {}, size = { 16, 16 } }
+sn.live.show { scene = scene, network = sn.mlp { inputs = { "normal", "view" }, hidden = { 4 } } }
+print("NET RUN %d")
+]]):format(run)
+end
+H.write(nscript, net_script(1))
+local ns = H.start { dir = wdir .. "/net_session", script = nscript, window = false }
+ns:wait_log("NET RUN 1")
+ns:wait_frame(1)
+for run = 2, 3 do
+  H.write_in_place(nscript, net_script(run))
+  ns:wait_log("NET RUN " .. run)
+  ns:settle()
+end
+ns:stop()
+local said = select(2, ns:log():gsub("%[live%] network view: ", ""))
+assert(said == 1, ("the backend line, said %d times over 3 runs:\n%s"):format(said, ns:log()))
 -- 6. Every example of docs/lua-api/live.md runs, each in a fresh process (they declare views).
 local doc = H.read("docs/lua-api/live.md")
 local count = 0
