@@ -119,6 +119,10 @@ function live.bind(o)
   b.step = o.step or (b.min and b.max and (b.max - b.min) / 20) or 0.1
   if b.step <= 0 then error("sn.live.bind: 'step' must be > 0", 2) end
   local binds = S.running and (S.pending_binds or {}) or S.binds
+  -- One binding per key (letters without case: Shift steps down): a second one replaces the
+  -- first, which the user is told (within a run, or at the console; each run binds anew).
+  local old = binds[key]
+  if old and old.name ~= b.name then print(("[live] key %s was bound to %s; now to %s"):format(key, old.name, b.name)) end
   binds[key] = b
   if S.running then S.pending_binds = binds end
 end

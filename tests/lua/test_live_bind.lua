@@ -28,6 +28,15 @@ near(net.layers[1].weight[2][3], w0 + 0.3, "clamped to max")
 live._key("k", true)
 near(net.layers[1].weight[2][3], w0 + 0.05, "Shift+k steps down")
 assert(live._key("z", false) == nil, "an unbound key does nothing")
+-- Binding a bound key again (its capital too: Shift steps down) replaces it, and says so.
+local said = {}
+local print0 = print
+print = function(...) said[#said + 1] = table.concat({ ... }, " ") end
+live.bind { key = "K", param = "net.layers[1].weight[2][4]" }
+live.bind { key = "k", param = "net.layers[1].weight[2][3]", step = 0.25, max = w0 + 0.3 }
+print = print0
+assert(said[1] == "[live] key k was bound to net.layers[1].weight[2][3]; now to net.layers[1].weight[2][4]", said[1])
+assert(#said == 2, "and back: " .. #said)
 
 -- 2. The show's lighting model: a changed copy replaces it; the truth view shows it.
 local before = live.render { mode = "truth" }:read()
