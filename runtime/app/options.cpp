@@ -10,7 +10,7 @@ std::string usage() {
          "options:\n"
          "  --window           open a GLFW window instead of running headless (EGL)\n"
          "  --size WxH         window size (default 960x720); headless --watch: the view's size\n"
-         "                     (default: sn.live.show's size, else 640x480)\n"
+         "                     (default: sn.live.show's size, else its scene's, else 640x480)\n"
          "  --watch            live mode: re-run the script when it, a module it requires or a shader\n"
          "                     it uses is saved (sn.keep values survive); Lua lines on stdin run in\n"
          "                     the script's state (see docs/live-mode.md)\n"
