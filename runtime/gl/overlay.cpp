@@ -43,4 +43,13 @@ void copy_color(const RenderTarget& from, RenderTarget& to) {
   to.mark_drawn();
 }
 
+void copy_color(const RenderTarget& from, RenderTarget& to, int x, int y, int w, int h) {
+  if (x == 0 && y == 0 && w == from.width() && h == from.height() && w == to.width() && h == to.height())
+    return copy_color(from, to);
+  const int y0 = to.height() - y - h;  // GL rows start at the bottom
+  glBlitNamedFramebuffer(from.fbo(), to.fbo(), 0, 0, from.width(), from.height(), x, y0, x + w, y0 + h,
+                         GL_COLOR_BUFFER_BIT, GL_LINEAR);
+  to.mark_drawn();
+}
+
 }  // namespace sn::gl

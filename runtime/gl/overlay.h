@@ -10,7 +10,9 @@ namespace sn::gl {
 // corner at (x, y) (top-left origin); the parts outside the target are skipped.
 void blend_over(RenderTarget& target, const io::Image& overlay, int x, int y);
 
-// Copies attachment 0 of `from` into attachment 0 of `to` (same size; throws otherwise).
+// Copies attachment 0 of `from` into attachment 0 of `to` (same size; throws otherwise), or,
+// given a rectangle of `to` (x, y from the top-left), into it, scaled (linear filtering).
 void copy_color(const RenderTarget& from, RenderTarget& to);
+void copy_color(const RenderTarget& from, RenderTarget& to, int x, int y, int w, int h);
 
 }  // namespace sn::gl

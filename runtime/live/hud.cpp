@@ -56,17 +56,17 @@ io::Image cross_hair(int arm) {
 
 }  // namespace
 
-std::vector<Placed> Hud::layout(int w, int h) const {
+std::vector<Placed> Hud::layout(int w, int h, const Picture& picture) const {
   std::vector<Placed> out;
   io::OverlayStyle small;
   small.size = overlay_font_size(w);
   small.opacity = 0.6f;
-  if (mode_ == "side") {  // 2 x 2 panels: truth | network, error | legend
-    int pw = w / 2, ph = h / 2;
-    out.push_back({io::text_box({{"truth"}}, 0, small), 0, 0});
-    out.push_back({io::text_box({{"network"}}, 0, small), pw, 0});
-    out.push_back({io::text_box({{"|error|, scale " + io::number_text(error_scale_)}}, 0, small), 0, ph});
-    out.push_back({colour_bar(std::max(8, pw - 16), ph, error_scale_, small.size), pw + 8, ph + 8});
+  if (mode_ == "side") {  // 2 x 2 panels of the picture: truth | network, error | legend
+    const int x = picture.x, y = picture.y, pw = picture.w / 2, ph = picture.h / 2;
+    out.push_back({io::text_box({{"truth"}}, 0, small), x, y});
+    out.push_back({io::text_box({{"network"}}, 0, small), x + pw, y});
+    out.push_back({io::text_box({{"|error|, scale " + io::number_text(error_scale_)}}, 0, small), x, y + ph});
+    out.push_back({colour_bar(std::max(8, pw - 16), ph, error_scale_, small.size), x + pw + 8, y + ph + 8});
   }
   if (!binds_.empty()) {  // under the error box, if any: the error matters more
     io::OverlayStyle style = small;
@@ -105,17 +105,19 @@ std::vector<Placed> Hud::layout(int w, int h) const {
     out.push_back({std::move(box), x, top});  // under the progress bar, if any
   }
   if (!probe_lines_.empty()) {
+    // The probed frame pixel's centre where it is shown.
+    const int px = picture.x + int((probe_x_ + 0.5) * picture.scale), py = picture.y + int((probe_y_ + 0.5) * picture.scale);
     int arm = 5;
-    out.push_back({cross_hair(arm), probe_x_ - arm - 1, probe_y_ - arm - 1});
+    out.push_back({cross_hair(arm), px - arm - 1, py - arm - 1});
     io::OverlayStyle style = small;
     style.opacity = 0.8f;
     std::vector<io::OverlayLine> lines;
     for (const auto& l : probe_lines_) lines.push_back({l});
     io::Image box = io::text_box(lines, 0, style);
     // Below and right of the pixel; flipped to the other side where the picture ends.
-    int x = probe_x_ + 12, y = probe_y_ + 12;
-    if (x + box.width > w) x = std::max(0, probe_x_ - 12 - box.width);
-    if (y + box.height > h) y = std::max(0, probe_y_ - 12 - box.height);
+    int x = px + 12, y = py + 12;
+    if (x + box.width > w) x = std::max(0, px - 12 - box.width);
+    if (y + box.height > h) y = std::max(0, py - 12 - box.height);
     out.push_back({std::move(box), x, y});
   }
   if (!notice_.empty()) {
@@ -135,12 +137,18 @@ std::vector<Placed> Hud::layout(int w, int h) const {
 }
 
 const gl::RenderTarget& Hud::compose(const gl::RenderTarget* frame, int w, int h) {
-  if (frame) w = frame->width(), h = frame->height();
-  std::vector<Placed> overlays = layout(w, h);
+  if (frame && (w < 1 || h < 1)) w = frame->width(), h = frame->height();
+  Picture picture{0, 0, w, h, 1};
+  if (frame) {  // fitted inside, the aspect kept (as the window shows a frame without overlays)
+    picture.scale = std::min(double(w) / frame->width(), double(h) / frame->height());
+    picture.w = int(frame->width() * picture.scale), picture.h = int(frame->height() * picture.scale);
+    picture.x = (w - picture.w) / 2, picture.y = (h - picture.h) / 2;
+  }
+  std::vector<Placed> overlays = layout(w, h, picture);
   if (frame && overlays.empty()) return *frame;
   if (!shown_ || shown_->width() != w || shown_->height() != h) shown_ = std::make_unique<gl::RenderTarget>(w, h);
-  if (frame) gl::copy_color(*frame, *shown_);
-  else shown_->clear({0.1f, 0.1f, 0.1f, 1});
+  if (!frame || picture.w != w || picture.h != h) shown_->clear({0.1f, 0.1f, 0.1f, 1});
+  if (frame) gl::copy_color(*frame, *shown_, picture.x, picture.y, picture.w, picture.h);
   for (const Placed& p : overlays) gl::blend_over(*shown_, p.image, p.x, p.y);
   return *shown_;
 }

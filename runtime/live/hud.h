@@ -44,11 +44,21 @@ class Hud {
   void set_notice(std::vector<std::string> lines) { notice_ = std::move(lines); }
   bool has_notice() const { return !notice_.empty(); }
 
-  // The overlays for a w x h picture, in drawing order.
-  std::vector<Placed> layout(int w, int h) const;
+  // Where the frame lies in what is shown, and how many shown pixels a frame pixel spans.
+  struct Picture {
+    int x = 0, y = 0, w = 0, h = 0;
+    double scale = 1;
+  };
+  // The overlays for a w x h picture shown in `picture` of it (all of it: the frame itself), in
+  // drawing order.
+  std::vector<Placed> layout(int w, int h, const Picture& picture) const;
+  std::vector<Placed> layout(int w, int h) const { return layout(w, h, {0, 0, w, h, 1}); }
 
-  // The picture to show: `frame` (may be null: nothing drawn yet, a w x h dark picture) with the
-  // overlays blended over a copy. Returns the target to present (frame itself when no overlay).
+  // The picture to show, w x h (the window's framebuffer; 0 x 0: the frame's size): `frame`
+  // fitted inside, letterboxed (may be null: nothing drawn yet, a dark picture), with the
+  // overlays blended over it at the shown size, so that a small render size (sn.live.show{ size
+  // = ... }) does not magnify them past the window's edges. Returns the target to present (frame
+  // itself when no overlay).
   const gl::RenderTarget& compose(const gl::RenderTarget* frame, int w, int h);
 
  private:

@@ -589,9 +589,15 @@ void Loop::present() {
     frame = &lua::check<gl::RenderTarget>(L_, -1, "Target");
     lua_pop(L_, 1);  // the registry keeps it alive
   }
+  // A window shows the overlays at its own size over the frame fitted inside; headless, the
+  // frame's size is the view's (and without a frame, --size's or 640 x 480).
   auto [w, h] = view_size();
-  if (!ctx_.windowed() && w < 1) w = 640, h = 480;  // headless without --size
-  if (w < 1 || h < 1) return;  // minimised
+  if (!ctx_.windowed()) {
+    if (frame) w = h = 0;
+    else if (w < 1) w = 640, h = 480;
+  } else if (w < 1 || h < 1) {
+    return;  // minimised
+  }
   const ViewState& v = input_.view();
   hud_.set_view(frame ? mode_name(v.mode) : "", view_error_scale_, frame_ms_, ctx_.windowed());
   const gl::RenderTarget& shown = hud_.compose(frame, w, h);

@@ -124,5 +124,32 @@ local old_changed = region(cx + 14, cy + 14, cx + 60, cy + 40)
 assert(old_changed == 0, "no box left at the old place: " .. old_changed)
 x11:close()
 s:stop()
+
+-- A render size smaller than the window (sn.live.show{ size = ... }, advised on llvmpipe): the
+-- picture is fitted into the window and the overlays are drawn at the window's size over it,
+-- not at the render's and magnified with it (the error box and the labels ran off the window).
+local small = dir .. "/small.lua"
+H.write(small, (H.read("tests/live/scenario.lua"):gsub('title = "live test",', 'title = "live test", size = { 80, 60 },')))
+local s2 = H.start { dir = dir .. "/small_session", script = small, size = W .. "x" .. Hh, shown = true }
+s2:wait_frame(1)
+s2:send("sn.live.set_view{ mode = 'side' }")
+s2:settle()
+local side
+for _ = 1, 300 do
+  local _, img = s2:shown()
+  if img then
+    local lw, lh = img:size()
+    if lw == W and lh == Hh then
+      shown = img
+      local _, white = region(pw + 1, 1, pw + 40, 14)  -- "network", at the window's size
+      if white > 10 then side = img break end
+    end
+  end
+  H.sleep(0.05)
+end
+assert(side, "the side view's labels are drawn at the window's size over the 80 x 60 picture")
+local _, tall = region(pw + 1, 16, pw + 40, 40)  -- a label magnified 4 times reached down here
+assert(tall == 0, "the network label is not magnified: " .. tall .. " white pixels under it")
+s2:stop()
 print(("hud: labels at truth (1,1), network (%d,1), error (1,%d), colour bar at row %d, counter top-right; title %s")
       :format(pw + 1, ph + 1, bar_y, title))
