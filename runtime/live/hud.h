@@ -49,10 +49,8 @@ class Hud {
     int x = 0, y = 0, w = 0, h = 0;
     double scale = 1;
   };
-  // The overlays for a w x h picture shown in `picture` of it (all of it: the frame itself), in
-  // drawing order.
+  // The overlays for a w x h picture with the frame shown in `picture` of it, in drawing order.
   std::vector<Placed> layout(int w, int h, const Picture& picture) const;
-  std::vector<Placed> layout(int w, int h) const { return layout(w, h, {0, 0, w, h, 1}); }
 
   // The picture to show, w x h (the window's framebuffer; 0 x 0: the frame's size): `frame`
   // fitted inside, letterboxed (may be null: nothing drawn yet, a dark picture), with the

@@ -13,7 +13,8 @@ assert(#y == 2 and y[1][3] == y[2][3], "two samples, the same outputs")
 assert(sn.buffer { type = "float32", data = { 1, 2, 3 } }:download()[3] == 3, "a buffer's data list")
 
 expect.fails(function() return net:forward { x, x, n = 2 } end, "net:forward: a list expected, got a table with the key 'n'")
-expect.fails(function() return net:forward { x, nil, x } end, "net:forward")
+expect.fails(function() return net:forward { x, nil, x } end, "net:forward: a list expected, got a")
+expect.fails(function() return net:forward { x, nil, x } end, "nil at [2]")
 expect.fails(function() return sn.buffer { type = "float32", data = { 1, 2, scale = 4 } } end,
              "sn.buffer option 'data': a list expected, got a table with the key 'scale'")
 expect.fails(function() return sn.buffer { type = "float32", data = { 1, 2, [4] = 4 } } end,
