@@ -48,10 +48,12 @@ uint64_t mesh_content_hash(const scene::Mesh& m) {
   f.vec(m.indices);
   f.vec(m.tangents);
   const std::vector<unsigned char>* encoded = m.base_color.encoded();
-  // The sampler's wrap modes change what a texture shows outside [0, 1].
-  uint8_t flags[5] = {uint8_t(m.has_uvs), uint8_t(m.base_color.has_value()), uint8_t(encoded != nullptr),
-                      uint8_t(m.base_color.sampler.s), uint8_t(m.base_color.sampler.t)};
-  f.bytes(flags, 5);
+  // The sampler's wrap modes change what a texture shows outside [0, 1], its filters what it shows
+  // between texels.
+  const scene::Sampler& s = m.base_color.sampler;
+  uint8_t flags[7] = {uint8_t(m.has_uvs), uint8_t(m.base_color.has_value()), uint8_t(encoded != nullptr),
+                      uint8_t(s.s), uint8_t(s.t), uint8_t(s.mag), uint8_t(s.min)};
+  f.bytes(flags, sizeof flags);
   if (encoded) {
     f.vec(*encoded);  // the file's bytes: hashed without decoding them (OpenImageIO is not loaded)
   } else if (m.base_color) {

@@ -547,7 +547,7 @@ class GltfLoader {
     }
   }
 
-  // How texture `texture` is wrapped: its sampler's wrapS / wrapT (it was always repeat).
+  // How texture `texture` is sampled: its sampler's wrap modes and filters.
   Sampler sampler(int texture, int index) {
     Sampler out;
     if (index < 0) return out;  // no sampler: glTF's default, repeat
@@ -569,6 +569,17 @@ class GltfLoader {
     const tinygltf::Sampler& s = m_.samplers[size_t(index)];
     out.s = wrap(s.wrapS, "wrapS");
     out.t = wrap(s.wrapT, "wrapT");
+    // The filters' values are OpenGL's; -1: undefined.
+    if (s.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST || s.magFilter == TINYGLTF_TEXTURE_FILTER_LINEAR)
+      out.mag = s.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST ? MagFilter::nearest : MagFilter::linear;
+    else if (s.magFilter != -1)
+      mesh_.notes.push_back("has sampler " + std::to_string(index) + " with magFilter " + std::to_string(s.magFilter) +
+                            ", which glTF does not define (9728 nearest, 9729 linear): linear there");
+    for (int i = 0; i <= int(MinFilter::linear_mipmap_linear); ++i)
+      if (gl_value(MinFilter(i)) == s.minFilter) out.min = MinFilter(i);
+    if (gl_value(out.min) != s.minFilter && s.minFilter != -1)
+      mesh_.notes.push_back("has sampler " + std::to_string(index) + " with minFilter " + std::to_string(s.minFilter) +
+                            ", which glTF does not define (9728, 9729, 9984-9987): trilinear there");
     return out;
   }
 
@@ -781,14 +792,11 @@ void save_glb(const Mesh& m, const std::string& path) {
     tinygltf::Texture tex;
     tex.source = 0;
     if (!(m.base_color.sampler == Sampler())) {
-      auto gl_wrap = [](Wrap w) {
-        return w == Wrap::clamp_to_edge     ? TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE
-               : w == Wrap::mirrored_repeat ? TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT
-                                            : TINYGLTF_TEXTURE_WRAP_REPEAT;
-      };
       tinygltf::Sampler s;
-      s.wrapS = gl_wrap(m.base_color.sampler.s);
-      s.wrapT = gl_wrap(m.base_color.sampler.t);
+      s.wrapS = gl_value(m.base_color.sampler.s);
+      s.wrapT = gl_value(m.base_color.sampler.t);
+      s.magFilter = gl_value(m.base_color.sampler.mag);
+      s.minFilter = gl_value(m.base_color.sampler.min);
       model.samplers.push_back(s);
       tex.sampler = 0;
     }

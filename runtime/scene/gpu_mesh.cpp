@@ -84,14 +84,12 @@ unsigned GpuMesh::base_color_texture() const {
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   glTextureSubImage2D(texture_, 0, 0, 0, img.width, img.height, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
   glGenerateTextureMipmap(texture_);
-  // Wrapped as the file's sampler says (it was always repeat); trilinear.
-  auto gl_wrap = [](Wrap w) {
-    return w == Wrap::clamp_to_edge ? GL_CLAMP_TO_EDGE : w == Wrap::mirrored_repeat ? GL_MIRRORED_REPEAT : GL_REPEAT;
-  };
-  glTextureParameteri(texture_, GL_TEXTURE_WRAP_S, gl_wrap(texture_source_.sampler.s));
-  glTextureParameteri(texture_, GL_TEXTURE_WRAP_T, gl_wrap(texture_source_.sampler.t));
-  glTextureParameteri(texture_, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-  glTextureParameteri(texture_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  // Wrapped and filtered as the file's sampler says.
+  const Sampler& sampler = texture_source_.sampler;
+  glTextureParameteri(texture_, GL_TEXTURE_WRAP_S, gl_value(sampler.s));
+  glTextureParameteri(texture_, GL_TEXTURE_WRAP_T, gl_value(sampler.t));
+  glTextureParameteri(texture_, GL_TEXTURE_MIN_FILTER, gl_value(sampler.min));
+  glTextureParameteri(texture_, GL_TEXTURE_MAG_FILTER, gl_value(sampler.mag));
   return texture_;
 }
 

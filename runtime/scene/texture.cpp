@@ -42,6 +42,10 @@ const std::vector<unsigned char>* Texture::encoded() const {
   return state_ && !state_->encoded.empty() ? &state_->encoded : nullptr;
 }
 
+int gl_value(Wrap w) { return w == Wrap::clamp_to_edge ? 33071 : w == Wrap::mirrored_repeat ? 33648 : 10497; }
+int gl_value(MagFilter f) { return f == MagFilter::nearest ? 9728 : 9729; }
+int gl_value(MinFilter f) { return f <= MinFilter::linear ? 9728 + int(f) : 9984 + int(f) - 2; }
+
 int wrap_texel(Wrap w, int i, int size) {
   auto mod = [](int a, int n) { return ((a % n) + n) % n; };
   switch (w) {
@@ -55,12 +59,13 @@ int wrap_texel(Wrap w, int i, int size) {
   return mod(i, size);
 }
 
-double sample_bilinear(const io::Image& img, const Sampler& sampler, double u, double v, int channel) {
-  const double fx = u * img.width - 0.5, fy = v * img.height - 0.5;
-  const double x0 = std::floor(fx), y0 = std::floor(fy), ax = fx - x0, ay = fy - y0;
+double sample_lod0(const io::Image& img, const Sampler& sampler, double u, double v, int channel) {
   auto texel = [&](double x, double y) {
     return double(img.at(wrap_texel(sampler.s, int(x), img.width), wrap_texel(sampler.t, int(y), img.height), channel));
   };
+  if (sampler.mag == MagFilter::nearest) return texel(std::floor(u * img.width), std::floor(v * img.height));
+  const double fx = u * img.width - 0.5, fy = v * img.height - 0.5;
+  const double x0 = std::floor(fx), y0 = std::floor(fy), ax = fx - x0, ay = fy - y0;
   return (1 - ay) * ((1 - ax) * texel(x0, y0) + ax * texel(x0 + 1, y0)) +
          ay * ((1 - ax) * texel(x0, y0 + 1) + ax * texel(x0 + 1, y0 + 1));
 }

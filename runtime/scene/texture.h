@@ -14,16 +14,36 @@ namespace sn::scene {
 
 // How a texture coordinate outside [0, 1] finds a texel, per axis: glTF's sampler wrapS / wrapT.
 enum class Wrap { repeat, clamp_to_edge, mirrored_repeat };
+// How a texel's colour is found where the texture is magnified (and at level 0): glTF's magFilter.
+enum class MagFilter { nearest, linear };
+// ... and where it is minified: glTF's minFilter, OpenGL's names.
+enum class MinFilter {
+  nearest,
+  linear,
+  nearest_mipmap_nearest,
+  linear_mipmap_nearest,
+  nearest_mipmap_linear,
+  linear_mipmap_linear
+};
 struct Sampler {
   Wrap s = Wrap::repeat, t = Wrap::repeat;  // glTF's default
-  bool operator==(const Sampler& o) const { return s == o.s && t == o.t; }
+  // A file that leaves the filters undefined gets trilinear filtering.
+  MagFilter mag = MagFilter::linear;
+  MinFilter min = MinFilter::linear_mipmap_linear;
+  bool operator==(const Sampler& o) const { return s == o.s && t == o.t && mag == o.mag && min == o.min; }
 };
+
+// OpenGL's number for each, which glTF's samplers use too (10497 repeat, 9728 nearest, ...).
+int gl_value(Wrap w);
+int gl_value(MagFilter f);
+int gl_value(MinFilter f);
 
 // Texel `i` of an axis `size` texels long, wrapped as OpenGL does (4.5 core, section 8.14.2).
 int wrap_texel(Wrap w, int i, int size);
-// The CPU twin of textureLod(u_base_color, uv, 0) on `img` (gpu_mesh.h): bilinear between the
-// four texels around uv, texel centres at (i + 0.5) / size, each axis wrapped as `sampler` says.
-double sample_bilinear(const io::Image& img, const Sampler& sampler, double u, double v, int channel);
+// The CPU twin of textureLod(u_base_color, uv, 0) on `img` (gpu_mesh.h): texel centres at
+// (i + 0.5) / size, each axis wrapped as `sampler` says; the texel uv lies in (magFilter nearest)
+// or bilinear between the four around it (linear).
+double sample_lod0(const io::Image& img, const Sampler& sampler, double u, double v, int channel);
 
 class Texture {
  public:

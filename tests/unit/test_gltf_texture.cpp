@@ -126,25 +126,37 @@ TEST(GltfTexture, WrapTexelFollowsOpenGl) {
 }
 
 // A quad whose uvs run from -1 to 2, under each sampler: the colour drawn at each pixel is the CPU
-// twin's lookup (sample_bilinear) at the uv drawn there, with the file's wrap modes. With repeat
-// hard-coded (as it was) every non-repeat case is far off.
-TEST(GltfTexture, TheSamplersWrapModesReachTheGpuAndTheCpuTwin) {
+// twin's lookup (sample_lod0) at the uv drawn there, with the file's wrap modes and magnification
+// filter. With repeat and linear hard-coded (as they were) every other case is far off.
+TEST(GltfTexture, TheSamplersWrapModesAndFiltersReachTheGpuAndTheCpuTwin) {
   sn::gl::current();
   sn::io::Image img(4, 4, 3);
   for (int y = 0; y < 4; ++y)
     for (int x = 0; x < 4; ++x) img.at(x, y, 0) = x / 3.f, img.at(x, y, 1) = y / 3.f, img.at(x, y, 2) = (x + y) % 2;
-  const Sampler samplers[] = {{Wrap::repeat, Wrap::repeat},
-                              {Wrap::clamp_to_edge, Wrap::clamp_to_edge},
-                              {Wrap::mirrored_repeat, Wrap::mirrored_repeat},
-                              {Wrap::clamp_to_edge, Wrap::mirrored_repeat}};
+  const Sampler samplers[] = {
+      {Wrap::repeat, Wrap::repeat},
+      {Wrap::clamp_to_edge, Wrap::clamp_to_edge},
+      {Wrap::mirrored_repeat, Wrap::mirrored_repeat, MagFilter::linear, MinFilter::nearest},
+      {Wrap::clamp_to_edge, Wrap::mirrored_repeat},
+      {Wrap::repeat, Wrap::repeat, MagFilter::nearest, MinFilter::linear_mipmap_nearest},
+      {Wrap::clamp_to_edge, Wrap::repeat, MagFilter::nearest, MinFilter::nearest}};
   const int gl_wrap[] = {TINYGLTF_TEXTURE_WRAP_REPEAT, TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE,
                          TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT};
+  const int gl_min[] = {TINYGLTF_TEXTURE_FILTER_NEAREST,
+                        TINYGLTF_TEXTURE_FILTER_LINEAR,
+                        TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST,
+                        TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST,
+                        TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR,
+                        TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR};
   Camera cam(glm::dvec3(0, 0, 2.5), glm::dvec3(0));
   sn::gl::RenderTarget target(128, 128);
   for (const Sampler& want : samplers) {
     Fixture f;
     tinygltf::Sampler s;
     s.wrapS = gl_wrap[int(want.s)], s.wrapT = gl_wrap[int(want.t)];
+    s.magFilter = want.mag == MagFilter::nearest ? TINYGLTF_TEXTURE_FILTER_NEAREST : TINYGLTF_TEXTURE_FILTER_LINEAR;
+    s.minFilter = gl_min[int(want.min)];
+    for (int i = 0; i < 6; ++i) EXPECT_EQ(gl_value(MinFilter(i)), gl_min[i]);
     f.model.samplers.push_back(s);
     tinygltf::Primitive quad = primitive(TINYGLTF_MODE_TRIANGLES, f.vec3s({-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0}),
                                          f.vec3s({0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1}),
@@ -156,7 +168,8 @@ TEST(GltfTexture, TheSamplersWrapModesReachTheGpuAndTheCpuTwin) {
     mesh.primitives = {quad};
     f.model.meshes.push_back(mesh);
     f.place(0);
-    const std::string name = "wrap_" + std::to_string(int(want.s)) + std::to_string(int(want.t));
+    const std::string name = "sampler_" + std::to_string(int(want.s)) + std::to_string(int(want.t)) +
+                             std::to_string(int(want.mag)) + std::to_string(int(want.min));
     Mesh m = load_mesh(f.write(temp_dir() / (name + ".gltf")));
     ASSERT_TRUE(m.base_color.sampler == want) << name;
     // A .glb the mesh is saved as keeps its sampler.
@@ -180,8 +193,8 @@ TEST(GltfTexture, TheSamplersWrapModesReachTheGpuAndTheCpuTwin) {
         ++covered;
         for (int c = 0; c < 3; ++c) {
           double u = uv.at(x, y, 0), v = uv.at(x, y, 1);
-          max_err = std::max(max_err, std::abs(color.at(x, y, c) - sample_bilinear(*m.base_color, want, u, v, c)));
-          repeat_err += std::abs(color.at(x, y, c) - sample_bilinear(*m.base_color, Sampler(), u, v, c));
+          max_err = std::max(max_err, std::abs(color.at(x, y, c) - sample_lod0(*m.base_color, want, u, v, c)));
+          repeat_err += std::abs(color.at(x, y, c) - sample_lod0(*m.base_color, Sampler(), u, v, c));
         }
       }
     ASSERT_GT(covered, 4000) << name;

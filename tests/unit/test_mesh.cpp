@@ -701,7 +701,7 @@ TEST(GpuMesh, UploadsOnceAndDrawsFromTheCache) {
 
 // The texture reaches the shader the glTF way round (uv (0,0) = the image's top-left): the
 // colour drawn at each pixel equals the CPU twin's bilinear lookup of mesh.base_color at the uv
-// drawn there (sample_bilinear: level 0, the file's wrap, texel centres at (i + 0.5) / size).
+// drawn there (sample_lod0: level 0, the file's wrap, texel centres at (i + 0.5) / size).
 TEST(GpuMesh, BaseColorTextureIsSampledAtTheMeshUvs) {
   sn::gl::current();
   Mesh duck = load_mesh(shared_meshes() + "Duck.gltf");
@@ -727,7 +727,7 @@ TEST(GpuMesh, BaseColorTextureIsSampledAtTheMeshUvs) {
       if (uv.at(x, y, 3) < 0.5) continue;
       ASSERT_EQ(color.at(x, y, 3), 1.f) << "u_has_base_color";
       for (int c = 0; c < 3; ++c) {
-        double want = sample_bilinear(tex, duck.base_color.sampler, uv.at(x, y, 0), uv.at(x, y, 1), c);
+        double want = sample_lod0(tex, duck.base_color.sampler, uv.at(x, y, 0), uv.at(x, y, 1), c);
         double err = std::abs(color.at(x, y, c) - want);
         max_err = std::max(max_err, err);
         sum_err += err;
