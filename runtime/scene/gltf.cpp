@@ -413,8 +413,6 @@ class GltfLoader {
         throw FileError(path_, what + ": NORMAL has " + std::to_string(nrm.size() / 3) + " elements, POSITION " +
                                    std::to_string(count));
     }
-    // The rest shape includes the morph targets at their default weights (they were ignored).
-    add_morph_targets(reader_, prim, morph_weights, what, path_, pos, nrm);
     std::vector<double> tan;
     if (auto it = prim.attributes.find("TANGENT"); it != prim.attributes.end()) {
       tan = reader_.read(it->second, 4, what + " TANGENT");
@@ -422,6 +420,8 @@ class GltfLoader {
         throw FileError(path_, what + ": TANGENT has " + std::to_string(tan.size() / 4) + " elements, POSITION " +
                                    std::to_string(count));
     }
+    // The rest shape includes the morph targets at their default weights (they were ignored).
+    add_morph_targets(reader_, prim, morph_weights, what, path_, pos, nrm, tan);
     // The set the material's base-colour texture names (texCoord n: TEXCOORD_n); it was always 0.
     const tinygltf::TextureInfo* texture = base_color_texture(prim);
     const std::string uv_set = "TEXCOORD_" + std::to_string(texture ? texture->texCoord : 0);

@@ -8,22 +8,26 @@ namespace sn::scene {
 
 void add_morph_targets(const AccessorReader& reader, const tinygltf::Primitive& prim,
                        const std::vector<double>& weights, const std::string& what, const std::string& path,
-                       std::vector<double>& pos, std::vector<double>& nrm) {
+                       std::vector<double>& pos, std::vector<double>& nrm, std::vector<double>& tan) {
+  const std::size_t count = pos.size() / 3;
   for (std::size_t t = 0; t < prim.targets.size() && t < weights.size(); ++t) {
     const double w = weights[t];
     if (w == 0.0) continue;
     const std::string name = what + " morph target " + std::to_string(t);
-    auto add = [&](const char* attribute, std::vector<double>& base) {
+    // A target's displacements are 3 components, also a tangent's (its w, the handedness, stays).
+    auto add = [&](const char* attribute, std::vector<double>& base, std::size_t stride) {
       auto it = prim.targets[t].find(attribute);
       if (it == prim.targets[t].end() || base.empty()) return;
       const std::vector<double> d = reader.read(it->second, 3, name + " " + attribute);
-      if (d.size() != base.size())
+      if (d.size() != count * 3)
         throw FileError(path, name + ": " + attribute + " has " + std::to_string(d.size() / 3) +
-                                  " elements, the primitive " + std::to_string(base.size() / 3));
-      for (std::size_t i = 0; i < d.size(); ++i) base[i] += w * d[i];
+                                  " elements, the primitive " + std::to_string(count));
+      for (std::size_t i = 0; i < count; ++i)
+        for (std::size_t c = 0; c < 3; ++c) base[i * stride + c] += w * d[i * 3 + c];
     };
-    add("POSITION", pos);
-    add("NORMAL", nrm);
+    add("POSITION", pos, 3);
+    add("NORMAL", nrm, 3);
+    add("TANGENT", tan, 4);
   }
 }
 

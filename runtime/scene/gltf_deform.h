@@ -11,13 +11,13 @@
 
 namespace sn::scene {
 
-// Adds sum_i weights[i] * target_i to `pos` (3 per vertex) and, when `nrm` is not empty and a
-// target has NORMAL, to `nrm`; TANGENT displacements are not read (tangents are generated or
-// taken from the base). Targets past the end of `weights` weigh 0 (glTF's default). Throws naming
+// Adds sum_i weights[i] * target_i to `pos` (3 per vertex) and, where they are not empty and a
+// target has NORMAL or TANGENT, to `nrm` (3 per vertex) and `tan` (4 per vertex: its xyz; w, the
+// handedness, stays). Targets past the end of `weights` weigh 0 (glTF's default). Throws naming
 // the target when its accessor does not match the primitive's vertex count.
 void add_morph_targets(const AccessorReader& reader, const tinygltf::Primitive& prim,
                        const std::vector<double>& weights, const std::string& what, const std::string& path,
-                       std::vector<double>& pos, std::vector<double>& nrm);
+                       std::vector<double>& pos, std::vector<double>& nrm, std::vector<double>& tan);
 
 // One skin matrix per vertex: sum_i w_i * global(joint_i) * inverseBind_i over every JOINTS_n /
 // WEIGHTS_n set of the primitive (linear blend skinning), `globals` holding each node's world

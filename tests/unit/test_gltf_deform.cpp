@@ -27,12 +27,17 @@ std::filesystem::path temp_dir() {
 TEST(GltfDeform, MorphTargetsAddAtTheirDefaultWeightsAndANodesWeightsOverrideTheMeshs) {
   // Target 0 lifts every vertex by 2 in z and tips the normals towards +y; target 1 moves vertex
   // 1 by 1 in x. The mesh weighs them 0.5 and 0.25; a second node placing it (moved by 10 in x)
-  // weighs them 0 and 1. The targets were ignored: the rest shape was the base.
+  // weighs them 0 and 1. The targets were ignored: the rest shape was the base. Target 0 also turns
+  // the tangents (1, 0, 0) by (0, 2, -2), across the tipped normal; their handedness -1 stays (a
+  // target's TANGENT was ignored).
   Fixture f;
   tinygltf::Primitive p = primitive(TINYGLTF_MODE_TRIANGLES, f.vec3s({0, 0, 0, 1, 0, 0, 0, 1, 0}),
                                     f.vec3s({0, 0, 1, 0, 0, 1, 0, 0, 1}));
+  p.attributes["TANGENT"] = f.accessor(f.view(std::vector<float>{1, 0, 0, -1, 1, 0, 0, -1, 1, 0, 0, -1}),
+                                       TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC4, 3);
   p.targets.push_back({{"POSITION", f.vec3s({0, 0, 2, 0, 0, 2, 0, 0, 2})},
-                       {"NORMAL", f.vec3s({0, 2, 0, 0, 2, 0, 0, 2, 0})}});
+                       {"NORMAL", f.vec3s({0, 2, 0, 0, 2, 0, 0, 2, 0})},
+                       {"TANGENT", f.vec3s({0, 2, -2, 0, 2, -2, 0, 2, -2})}});
   p.targets.push_back({{"POSITION", f.vec3s({0, 0, 0, 1, 0, 0, 0, 0, 0})}});
   tinygltf::Mesh mesh;
   mesh.primitives = {p};
@@ -49,6 +54,11 @@ TEST(GltfDeform, MorphTargetsAddAtTheirDefaultWeightsAndANodesWeightsOverrideThe
   expect_near(m.positions[3], {10, 0, 0}, 1e-7, "node weights, vertex 0");
   expect_near(m.positions[4], {12, 0, 0}, 1e-7, "node weights, vertex 1");
   expect_near(m.normals[3], {0, 0, 1}, 1e-6, "node weights, normal");
+  ASSERT_EQ(m.tangents.size(), 6u);
+  expect_near(glm::dvec3(m.tangents[0]), glm::normalize(glm::dvec3(1, 1, -1)), 1e-6, "mesh weights, tangent");
+  expect_near(glm::dvec3(m.tangents[3]), {1, 0, 0}, 1e-6, "node weights, tangent");
+  EXPECT_EQ(m.tangents[0].w, -1.0f);
+  EXPECT_EQ(m.tangents[3].w, -1.0f);
 }
 
 TEST(GltfDeform, ASparseMorphTargetMovesOnlyTheVerticesItNames) {
