@@ -165,14 +165,14 @@ void check_required_extensions(const std::vector<std::string>& required, const s
                             ", which shadenet does not read (of those a file may require, it reads KHR_mesh_quantization)");
 }
 
-// Throws naming the first property of `json` (the file's JSON text or a .glb's JSON chunk) that
-// glTF requires to be a non-negative integer and is not, or an extension it requires that the
-// loader lacks. JSON that does not parse throws nothing here.
-void check_json(const char* json, std::size_t size, const std::string& path) {
+// Throws naming an extension `json` (the file's JSON text or a .glb's JSON chunk) requires that
+// the loader lacks or, unless `extensions_only`, the first property that glTF requires to be a
+// non-negative integer and is not. JSON that does not parse throws nothing here.
+void check_json(const char* json, std::size_t size, const std::string& path, bool extensions_only = false) {
   JsonCheck check;
   nlohmann::json::sax_parse(json, json + size, &check, nlohmann::json::input_format_t::json, false);
   check_required_extensions(check.required(), path);
-  if (!check.problem().empty()) throw FileError(path, check.problem());
+  if (!extensions_only && !check.problem().empty()) throw FileError(path, check.problem());
 }
 
 // tinygltf's reasons can quote kilobytes of the file (a cut base64 buffer); keep the start.
@@ -736,11 +736,7 @@ Mesh load_mesh(const std::string& path) {
   };
   const auto [json_text, json_size] = json();
   if (!ok) {
-    if (json_text) {
-      JsonCheck scan;
-      nlohmann::json::sax_parse(json_text, json_text + json_size, &scan, nlohmann::json::input_format_t::json, false);
-      check_required_extensions(scan.required(), path);
-    }
+    if (json_text) check_json(json_text, json_size, path, true);
     throw FileError(path, std::string("is not a valid ") + (binary ? "binary glTF" : "glTF") + " file (" +
                               (err.empty() ? "tinygltf gave no reason" : "tinygltf: " + short_reason(err)) + ")");
   }
