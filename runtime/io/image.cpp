@@ -86,13 +86,34 @@ std::vector<unsigned char> encode_image(const Image& img, const std::string& nam
   if (!(is_float || ext == ".png" || ext == ".jpg" || ext == ".jpeg" || ext == ".bmp"))
     throw std::runtime_error("cannot save '" + name + "': unknown image extension '" + ext +
                              "' (valid: .png, .exr, .jpg, .bmp, .tif, .hdr)");
-  if (ext == ".hdr" && img.channels != 3) {
-    // Radiance HDR holds RGB only: alpha is dropped, a grey image's value goes to all three.
-    Image rgb(img.width, img.height, 3);
+  // Radiance HDR holds RGB only and JPEG no alpha: alpha is dropped, a grey image's value goes to
+  // all three (.hdr) or stays grey (.jpg, .bmp).
+  const int keep = ext == ".hdr" ? 3 : img.channels == 2 && !is_float && ext != ".png" ? 1 : img.channels;
+  if (keep != img.channels) {
+    Image out(img.width, img.height, keep);
     const std::size_t channels = std::size_t(img.channels);
     for (std::size_t p = 0; p < std::size_t(img.width) * std::size_t(img.height); ++p)
-      for (std::size_t c = 0; c < 3; ++c) rgb.pixels[3 * p + c] = img.pixels[p * channels + (channels < 3 ? 0 : c)];
-    return image_codec().encode(rgb, nullptr, name);
+      for (std::size_t c = 0; c < std::size_t(keep); ++c)
+        out.pixels[p * std::size_t(keep) + c] = img.pixels[p * channels + (channels < 3 ? 0 : c)];
+    return encode_image(out, name);
+  }
+  if (ext == ".hdr") {
+    // RGBE holds neither negative nor non-finite values (its encoder turned -0.35 into 0.65 and a
+    // pixel with one NaN or Inf black): stored as 0, +Inf as the largest float, said aloud.
+    constexpr float kRgbeMax = 1e38f;  // FLT_MAX's exponent overflows RGBE's byte: black
+    Image out = img;
+    std::size_t bad = 0;
+    for (float& v : out.pixels) {
+      if (std::isfinite(v) && v >= 0.f) continue;
+      ++bad;
+      v = v == INFINITY ? kRgbeMax : 0.f;
+    }
+    if (bad)
+      std::fprintf(stderr,
+                   "warning: %s: %zu negative, NaN or infinite values stored as 0 (+Inf as 1e38, near the largest it holds): "
+                   ".hdr cannot hold them; .exr can\n",
+                   name.c_str(), bad);
+    return image_codec().encode(out, nullptr, name);
   }
   if (is_float) return image_codec().encode(img, nullptr, name);
   std::vector<unsigned char> bytes(img.pixels.size());

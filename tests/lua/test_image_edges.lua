@@ -71,5 +71,24 @@ end
 local grey = sn.image.new { width = 1, height = 1, channels = 1, fill = 0.75 }
 grey:save(dir .. "/grey.hdr")
 assert(table.concat(sn.image.load(dir .. "/grey.hdr"):get(1, 1), " ") == "0.75 0.75 0.75", "grey to all three")
+-- RGBE holds no negative or non-finite value: its encoder turned -0.375 into 0.625 and a pixel
+-- with a NaN or Inf black; now they are 0 (+Inf the largest it holds) and the rest stays.
+local odd = sn.image.new { width = 3, height = 1, channels = 3 }
+odd:set(1, 1, { 0.5, -0.375, 0.25 })
+odd:set(2, 1, { 0 / 0, 0.5, 0.5 })
+odd:set(3, 1, { 1 / 0, -1 / 0, 0 })
+odd:save(dir .. "/odd.hdr")
+local back = sn.image.load(dir .. "/odd.hdr")
+assert(table.concat(back:get(1, 1), " ") == "0.5 0 0.25", "negative to 0: " .. table.concat(back:get(1, 1), " "))
+assert(table.concat(back:get(2, 1), " ") == "0 0.5 0.5", "NaN to 0, the rest kept: " .. table.concat(back:get(2, 1), " "))
+assert(back:get(3, 1)[1] > 1e37 and back:get(3, 1)[2] == 0, "+Inf to the largest, -Inf to 0")
+-- Grey and alpha in a format without alpha: grey, alpha dropped (a JPEG held (grey, alpha, 0)).
+local ga = sn.image.new { width = 8, height = 8, channels = 2 }
+for y = 1, 8 do for x = 1, 8 do ga:set(x, y, { 0.8, 0.2 }) end end
+for _, ext in ipairs { "jpg", "bmp" } do
+  ga:save(dir .. "/ga." .. ext)
+  local g2 = sn.image.load(dir .. "/ga." .. ext)
+  assert(select(3, g2:size()) == 1 and math.abs(g2:get(4, 4)[1] - 0.8) < 0.01, ext .. ": " .. table.concat(g2:get(4, 4), " "))
+end
 C.rm(dir)
 print("ok")
