@@ -39,6 +39,13 @@ Camera::Camera(glm::dvec3 eye, glm::dvec3 target, glm::dvec3 up, double fov_y, d
   if (!(near > 0 && std::isfinite(near))) throw std::invalid_argument("camera: near must be > 0, got " + io::number_text(near));
   if (!(far > near && std::isfinite(far)))
     throw std::invalid_argument("camera: far (" + io::number_text(far) + ") must be greater than near (" + io::number_text(near) + ")");
+  // A depth is 1 - near / distance, nearly: past near * 2^24 it rounds to 1 in a float depth
+  // buffer, fails the depth test against the cleared 1, and the surface vanishes without a word.
+  constexpr double kDepthSteps = 16777216.0;  // 2^24
+  if (near < far / kDepthSteps)
+    throw std::invalid_argument("camera: near (" + io::number_text(near) + ") is too small for far (" + io::number_text(far) +
+                                "): depths past about near * 2^24 round to the far plane's and their surfaces vanish; "
+                                "near must be at least far / 2^24 = " + io::number_text(far / kDepthSteps));
 }
 
 glm::dmat4 Camera::view() const { return glm::lookAt(eye_, target_, up_); }

@@ -112,3 +112,14 @@ end
 
 check("unit sphere", surface({ 0, 0, 0 }, { 1, 1, 1 }, 0))
 check("rotated ellipsoid", surface({ 0.3, -0.2, 0.1 }, { 0.8, 0.5, 0.65 }, 30))
+
+-- The smallest near the camera takes (far / 2^24) still covers what near = 0.5 does: below it a
+-- sphere lost pixels (1e-7) or vanished (3e-8) without a word; now sn.camera refuses it.
+local function covered(near)
+  local view = sn.camera { eye = { 0, 0, 3 }, near = near, far = 10 }
+  return sn.scene { mesh = sn.mesh.sphere {}, size = { 32, 32 }, views = { view } }:gbuffer {}:covered()
+end
+local want = covered(0.5)
+assert(want > 400 and covered(10 / 2 ^ 24) == want, ("covered %d at near 0.5, %d at far / 2^24"):format(want, covered(10 / 2 ^ 24)))
+local ok, err = pcall(sn.camera, { eye = { 0, 0, 3 }, near = 3e-8, far = 10 })
+assert(not ok and err:find("near %(3e%-08%) is too small for far %(10%)"), err)

@@ -138,6 +138,11 @@ TEST(Camera, ImpossibleCamerasAreClearErrors) {
   EXPECT_NE(error_of([] { Camera({0, 0, 3}, {0, 0, 0}, {0, 1, 0}, 45, 1, 2, 1); }).find("far (1) must be greater"),
             std::string::npos);
   EXPECT_NE(error_of([] { Camera({0, 0, NAN}, {0, 0, 0}); }).find("must be finite"), std::string::npos);
+  // Past near * 2^24 depths round to 1 and surfaces vanish (a sphere at distance 3 did at 3e-8).
+  EXPECT_NE(error_of([] { Camera({0, 0, 3}, {0, 0, 0}, {0, 1, 0}, 45, 1, 3e-8, 10); })
+                .find("near (3e-08) is too small for far (10): depths past about near * 2^24"),
+            std::string::npos);
+  EXPECT_EQ(error_of([] { Camera({0, 0, 3}, {0, 0, 0}, {0, 1, 0}, 45, 1, 10.0 / 16777216, 10); }), "");
   OrbitOptions o;
   o.elevation = 90;
   EXPECT_NE(error_of([&] { orbit(o); }).find("elevation must be in (-90, 90)"), std::string::npos);
