@@ -25,17 +25,26 @@ struct Vertex {
 
 // RGBA8 texels of an image with 1-4 channels (grey -> rgb, missing alpha -> 1). Rows stay top
 // first, so texture(v = 0) is the image's top row: glTF's UV convention, no flip needed.
-std::vector<unsigned char> rgba8(const io::Image& img) {
-  std::vector<unsigned char> out(size_t(img.width) * img.height * 4);
-  auto q = [](float v) { return (unsigned char)(std::isfinite(v) ? std::clamp(v, 0.f, 1.f) * 255.f + 0.5f : 0.f); };
+// The texture as RGBA floats (grey to all three, alpha 1 where it has none; NaN and Inf as 0), and
+// whether every value is an 8-bit one (k / 255), as every 8-bit file's are: those upload as
+// RGBA8, the rest (16-bit files, images made in a script) as RGBA32F, unclamped and unrounded as
+// the CPU twin reads them (they were clamped to [0, 1] and rounded to 8 bits).
+std::vector<float> rgba(const io::Image& img, bool& eight_bit) {
+  std::vector<float> out(size_t(img.width) * img.height * 4);
+  eight_bit = true;
+  auto finite = [&](float v) {
+    v = std::isfinite(v) ? v : 0.f;
+    eight_bit = eight_bit && v >= 0.f && v <= 1.f && std::abs(v * 255.f - std::nearbyint(v * 255.f)) < 1e-3f;
+    return v;
+  };
   for (int y = 0; y < img.height; ++y)
     for (int x = 0; x < img.width; ++x) {
-      unsigned char* o = &out[(size_t(y) * img.width + x) * 4];
+      float* o = &out[(size_t(y) * img.width + x) * 4];
       int c = img.channels;
       float r = img.at(x, y, 0);
       float g = c >= 3 ? img.at(x, y, 1) : r, b = c >= 3 ? img.at(x, y, 2) : r;
       float a = c == 2 ? img.at(x, y, 1) : c == 4 ? img.at(x, y, 3) : 1.f;
-      o[0] = q(r), o[1] = q(g), o[2] = q(b), o[3] = q(a);
+      o[0] = finite(r), o[1] = finite(g), o[2] = finite(b), o[3] = finite(a);
     }
   return out;
 }
@@ -76,13 +85,14 @@ unsigned GpuMesh::base_color_texture() const {
   if (texture_) return texture_;
   io::Image white(1, 1, 4, 1.f);
   const io::Image& img = texture_source_ ? *texture_source_ : white;
-  std::vector<unsigned char> texels = rgba8(img);
+  bool eight_bit = true;
+  const std::vector<float> texels = rgba(img, eight_bit);
   int levels = 1;
   for (int s = std::max(img.width, img.height); s > 1; s /= 2) ++levels;
   glCreateTextures(GL_TEXTURE_2D, 1, &texture_);
-  glTextureStorage2D(texture_, levels, GL_RGBA8, img.width, img.height);
+  glTextureStorage2D(texture_, levels, eight_bit ? GL_RGBA8 : GL_RGBA32F, img.width, img.height);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glTextureSubImage2D(texture_, 0, 0, 0, img.width, img.height, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
+  glTextureSubImage2D(texture_, 0, 0, 0, img.width, img.height, GL_RGBA, GL_FLOAT, texels.data());
   glGenerateTextureMipmap(texture_);
   // Wrapped and filtered as the file's sampler says.
   const Sampler& sampler = texture_source_.sampler;
