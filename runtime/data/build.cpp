@@ -143,10 +143,10 @@ std::shared_ptr<Dataset> build_dataset(const scene::Scene& s, const DatasetReque
   std::iota(perm.begin(), perm.end(), 0);
   for (std::size_t i = perm.size(); i > 1; --i) std::swap(perm[i - 1], perm[rng.below(i)]);
   std::size_t m = r.samples == 0 ? covered : std::min(r.samples, covered);
-  std::size_t n_train = std::size_t(std::llround(r.split * double(m)));
-  if (n_train == 0 || n_train == m)
-    throw std::invalid_argument("dataset: " + std::to_string(m) + " samples split " + io::number_text(r.split) +
-                                " leaves no " + (n_train == 0 ? "training" : "validation") + " rows");
+  if (m < 2)
+    throw std::invalid_argument("dataset: " + std::to_string(m) + " covered pixel" + (m == 1 ? "" : "s") +
+                                " cannot be split into training and validation rows");
+  const std::size_t n_train = train_rows(r.split, m);
 
   // The sampled rows: group and slot of each, in sample order.
   struct Pick {

@@ -202,10 +202,10 @@ std::shared_ptr<Dataset> resplit(const Dataset& d, double split, uint64_t seed) 
   if (!(split > 0 && split < 1))
     throw std::invalid_argument("split must lie strictly between 0 and 1 (the training share), got " + io::number_text(split));
   const std::size_t nt = d.train_count(), n = nt + d.val_count();
-  const std::size_t n_train = std::size_t(std::llround(split * double(n)));
-  if (n_train == 0 || n_train == n)
-    throw std::invalid_argument(std::to_string(n) + " rows split " + io::number_text(split) + " leave no " +
-                                set_name(n_train == 0) + " rows");
+  if (n < 2)
+    throw std::invalid_argument(std::to_string(n) + (n == 1 ? " row" : " rows") +
+                                " cannot be split into training and validation rows");
+  const std::size_t n_train = train_rows(split, n);
   SplitMix rng{seed};
   std::vector<std::size_t> perm(n);
   std::iota(perm.begin(), perm.end(), 0);

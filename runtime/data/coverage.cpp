@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "data/input_layout.h"
 #include "scene/gather.h"
 #include "scene/gbuffer.h"
 
@@ -128,22 +129,20 @@ std::vector<DirectionRows> dataset_directions(const Dataset& d, const std::strin
   std::string names;
   for (const auto& n : d.input_names) names += (names.empty() ? "\"" : ", \"") + n + "\"";
   names = "{" + names + "}";
-  // Columns of each named input: attribute widths in order, as scene:dataset lays them out.
-  int at = 0, normal = -1, view = -1;
-  bool known = true;
-  for (const auto& n : d.input_names) {
-    const auto& attrs = scene::gbuffer_attribute_names();
-    if (std::find(attrs.begin(), attrs.end(), n) == attrs.end()) {
-      known = false;
-      break;
+  // Columns of each named input, as scene:dataset lays them out (varied parameters included).
+  int normal = -1, view = -1;
+  std::string why;
+  try {
+    for (const InputSlot& s : input_layout(d)) {
+      if (s.name == "normal") normal = s.offset;
+      if (s.name == "view") view = s.offset;
     }
-    if (n == "normal") normal = at;
-    if (n == "view") view = at;
-    at += scene::attribute_width(n);
+  } catch (const std::exception& e) {
+    why = std::string(" (") + e.what() + ")";
   }
-  if (normal < 0 || view < 0 || !known || at != d.inputs)
+  if (normal < 0 || view < 0)
     throw std::invalid_argument(what + ": the dataset's inputs are " + names + " (" + std::to_string(d.inputs) +
-                                " numbers); " + needed + ", laid out in the widths of scene attributes");
+                                " numbers); " + needed + ", laid out in the widths of scene attributes" + why);
   std::vector<DirectionRows> out;
   for (const auto* x : {&d.train_x, &d.val_x})
     if (!x->empty())

@@ -2,6 +2,8 @@
 // validation rows. Inputs and targets are row-major floats; targets are already in the colour
 // space the networks learn in (`color`).
 #pragma once
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -30,5 +32,14 @@ struct Dataset {
   std::size_t train_count() const { return inputs ? train_x.size() / inputs : 0; }
   std::size_t val_count() const { return inputs ? val_x.size() / inputs : 0; }
 };
+
+// How many of `rows` rows a split of `split` (in (0, 1]) trains: round(split * rows), but at
+// least one row of each set where there are two rows and the split is below 1 (2 rows at 0.8
+// rounded to no validation row, and sn.train refused the dataset). Every dataset splits by it.
+inline std::size_t train_rows(double split, std::size_t rows) {
+  const std::size_t n = std::size_t(std::llround(split * double(rows)));
+  const std::size_t most = split < 1 && rows >= 2 ? rows - 1 : rows;
+  return n < 1 ? std::min<std::size_t>(1, rows) : n > most ? most : n;
+}
 
 }  // namespace sn::data

@@ -73,6 +73,10 @@ std::vector<std::string> csv_columns(const Dataset& d) {
       throw std::invalid_argument(std::string("CSV column names cannot carry these inputs: ") + e.what() +
                                   " (use .json: the NumPy sidecar keeps any names)");
     }
+    // The reader takes G-buffer attributes' columns only, and a column keeps no range.
+    if (!d.conditions.empty())
+      throw std::invalid_argument("CSV column names cannot carry the varied parameter '" + d.conditions[0].name +
+                                  "' and its range (use .json: the NumPy sidecar keeps them)");
     for (const auto& s : layout)
       for (int c = 0; c < s.width; ++c) cols.push_back(s.name + "_" + component_letter(s.name, c));
   }
@@ -238,6 +242,11 @@ std::shared_ptr<Dataset> load_numpy(const DatasetPaths& p) {
         bad();
       d->conditions.push_back({c["name"].get<std::string>(), c["min"].get<double>(), c["max"].get<double>()});
     }
+  }
+  try {
+    input_layout(*d);
+  } catch (const std::exception& e) {
+    s.fail(std::string("field 'inputs': ") + e.what());
   }
   const uint64_t train = s.count("rows", "train", 1), val = s.count("rows", "val", 0);
   if (train > kMaxRows || val > kMaxRows) s.fail("more than 2^31 rows in a set");

@@ -15,7 +15,9 @@ struct InputSlot {
 };
 
 // The slots of d's input names, in order; empty when the dataset has no names. Throws when a
-// name is not a G-buffer attribute or the widths do not add up to d.inputs.
+// name is not a G-buffer attribute nor a varied parameter, is listed twice, or the widths do not
+// add up to d.inputs; or when a varied parameter is not among the names, is an attribute, is
+// listed twice or has no finite range (min <= max).
 std::vector<InputSlot> input_layout(const Dataset& d);
 
 // The letter of component c of an input: u, v for "uv"; x, y, z for the others.

@@ -148,10 +148,6 @@ void validate(const SampleRequest& r) {
   if (!(r.split > 0 && r.split < 1))
     throw std::invalid_argument("dataset split must lie strictly between 0 and 1 (the training share), got " +
                                 io::number_text(r.split));
-  const std::size_t n_train = std::size_t(std::llround(r.split * double(r.n)));
-  if (n_train == 0 || n_train == r.n)
-    throw std::invalid_argument("a sampled dataset of " + std::to_string(r.n) + " rows split " + io::number_text(r.split) +
-                                " leaves no " + (n_train == 0 ? "training" : "validation") + " rows");
   const double len = glm::length(r.axis);
   if (!std::isfinite(len) || len < 1e-12)
     throw std::invalid_argument("the hemisphere's axis must be a non-zero, finite direction, got {" +
@@ -236,7 +232,7 @@ std::shared_ptr<Dataset> sample_dataset(const SampleRequest& r) {
   std::vector<std::size_t> perm(n);
   std::iota(perm.begin(), perm.end(), 0);
   for (std::size_t i = n; i > 1; --i) std::swap(perm[i - 1], perm[rng.below(i)]);
-  const std::size_t n_train = std::size_t(std::llround(r.split * double(n)));
+  const std::size_t n_train = train_rows(r.split, n);
 
   auto d = std::make_shared<Dataset>();
   d->inputs = 6;

@@ -11,6 +11,7 @@
 #include "data/combine.h"
 #include "data/dataset.h"
 #include "data/dataset_file.h"
+#include "data/input_layout.h"
 #include "nn/shuffle.h"
 
 namespace sn::lua {
@@ -86,14 +87,17 @@ int w_new(lua_State* L) {
       d->input_names.push_back(check_string(L, -1, "sn.dataset option 'input_names'"));
       lua_pop(L, 1);
     }
+    // Names that do not fit the rows trained, then made a checkpoint sn.load refused.
+    try {
+      data::input_layout(*d);
+    } catch (const std::exception& e) {
+      throw Error(o.where("input_names") + ": " + e.what());
+    }
   }
   lua_pop(L, 1);
 
   // A seeded random split: rows in the order of a permutation, the first `split` of them train.
-  // At least one row of each set where there are two rows and the split is below 1 (2 rows at
-  // 0.8 rounded to no validation row, and sn.train refused the dataset).
-  const std::size_t most = split < 1 && rows >= 2 ? rows - 1 : rows;
-  const std::size_t train = std::clamp<std::size_t>(std::size_t(std::llround(split * double(rows))), 1, std::max<std::size_t>(most, 1));
+  const std::size_t train = data::train_rows(split, rows);
   nn::EpochShuffle order(seed, 0xffffffffu, uint32_t(rows));
   for (std::size_t k = 0; k < rows; ++k) {
     const std::size_t r = order(uint32_t(k));

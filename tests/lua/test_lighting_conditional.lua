@@ -25,6 +25,23 @@ end
 assert(worst < 2e-5, "targets vs the twin at each row's roughness: " .. worst)
 assert(lo >= 0.1 and hi <= 0.8 and lo < 0.15 and hi > 0.75, ("roughness spread %.3f..%.3f"):format(lo, hi))
 
+-- Coverage finds normal and view beside the varied parameter (it refused every conditioned
+-- dataset), and counts what the same rows without it count.
+local cov = data:coverage {}
+local x, y = {}, {}
+for _, set in ipairs { "train", "val" } do
+  for i = 1, select(set == "train" and 1 or 2, data:counts()) do
+    local r = data:row(set, i)
+    x[#x + 1], y[#y + 1] = { r[1], r[2], r[3], r[4], r[5], r[6] }, { 0, 0, 0 }
+  end
+end
+local plain = sn.dataset { x = x, y = y, input_names = { "normal", "view" } }:coverage {}
+assert(cov.rows == 4000 and cov.invalid == 0 and cov.non_unit == 0, ("coverage rows %d, invalid %d, non-unit %d"):format(
+  cov.rows, cov.invalid, cov.non_unit))
+assert(cov.normal.covered == plain.normal.covered and cov.view.covered == plain.view.covered, "the same bins as without it")
+-- Its CSV export is refused (the reader could not read back the file it wrote); .json keeps it.
+fails(function() data:export("never_written.csv") end, "CSV column names cannot carry the varied parameter 'roughness'")
+
 -- Deterministic per seed; the range is part of the cache key.
 sn.dataset_cache_clear()
 local builds = sn.dataset_stats().builds

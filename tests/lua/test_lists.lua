@@ -50,6 +50,12 @@ expect.fails(function()
 end, "a list expected, got a table with the key 'light'")
 expect.fails(function() return sn.dataset { x = { { 1 }, { 2 } }, y = { { 1 }, { 2 } }, input_names = { "a", b = "b" } } end,
              "sn.dataset option 'input_names': a list expected, got a table with the key 'b'")
+-- Names must fit the rows (5 numbers named as 6 trained, then made a checkpoint sn.load refused).
+local five = { { 0.5, 0, 1, 0, 0 }, { 0.25, 0, 1, 0, 0 } }
+expect.fails(function() return sn.dataset { x = five, y = { { 1 }, { 2 } }, input_names = { "normal", "view" } } end,
+             "sn.dataset option 'input_names': input names {normal, view} describe 6 columns, but the rows have 5 inputs")
+expect.fails(function() return sn.dataset { x = five, y = { { 1 }, { 2 } }, input_names = { "uv", "uv", "x" } } end,
+             "input name 'uv' is listed twice")
 expect.fails(function() return sn.dataset { x = { { 1 }, { 2 }, extra = { 3 } }, y = { { 1 }, { 2 } } } end,
              "got a table with the key 'extra'")
 print("lists: strict")

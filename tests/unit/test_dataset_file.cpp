@@ -193,6 +193,45 @@ TEST(DatasetFile, CsvColumns) {
   Dataset odd = awkward({"normal", "shading"});
   EXPECT_NE(message_of([&] { csv_header(odd); }).find("CSV column names cannot carry these inputs: input name 'shading'"),
             std::string::npos);
+  // A varied parameter's column (it was written as roughness_x, with no range, and the reader
+  // refused the file it had written).
+  Dataset varied = awkward({"normal", "roughness", "k"});
+  varied.conditions = {{"roughness", 0.1, 0.8}, {"k", 0, 1}};
+  EXPECT_EQ(message_of([&] { csv_header(varied); }),
+            "CSV column names cannot carry the varied parameter 'roughness' and its range (use .json: the NumPy "
+            "sidecar keeps them)");
+  const std::string json = scratch("varied.json");
+  export_dataset(varied, json);
+  EXPECT_EQ(load_dataset(json)->conditions, varied.conditions);
+}
+
+// Input names and varied parameters a sidecar gives are checked as sn.dataset{} checks them:
+// names that do not fit the rows trained, then made a checkpoint sn.load refused.
+TEST(DatasetFile, SidecarNamesMustFitTheRows) {
+  Dataset varied = awkward({"normal", "roughness", "k"});
+  varied.conditions = {{"roughness", 0.25, 0.75}, {"k", 0, 1}};
+  const std::string at = scratch("names/s.json");
+  export_dataset(varied, at);
+  const std::string good = io::read_file(at);
+  // Replaces the first `from` after `after` in the sidecar and loads it.
+  auto load_err = [&](const std::string& after, const std::string& from, const std::string& to) {
+    std::string t = good;
+    const auto i = t.find(from, t.find(after));
+    EXPECT_NE(i, std::string::npos) << from;
+    write(at, t.replace(i, from.size(), to));
+    return message_of([&] { load_dataset(at); });
+  };
+  EXPECT_EQ(load_err("\"names\"", "\"k\"", "\"view\""),
+            at + ": field 'inputs': varied parameter 'k' is not among the input names {normal, roughness, view}");
+  EXPECT_EQ(load_err("\"names\"", "\"roughness\"", "\"uv\""),
+            at + ": field 'inputs': varied parameter 'roughness' is not among the input names {normal, uv, k}");
+  EXPECT_EQ(load_err("\"conditions\"", "0.25", "0.9"),
+            at + ": field 'inputs': varied parameter 'roughness' has the range [0.9, 0.75]; a finite range with min <= max expected");
+  EXPECT_EQ(load_err("\"names\"", "\"normal\"", "\"k\""), at + ": field 'inputs': input name 'k' is listed twice");
+  EXPECT_EQ(load_err("\"conditions\"", "\"k\"", "\"normal\""),
+            at + ": field 'inputs': varied parameter 'normal' is a G-buffer attribute, not a parameter");
+  write(at, good);
+  EXPECT_EQ(load_dataset(at)->conditions, varied.conditions);
 }
 
 TEST(DatasetFile, KeyIsTheContentsHash) {

@@ -250,8 +250,20 @@ TEST(DatasetSplit, Refusals) {
   Dataset d = make(1, 1, 1);
   EXPECT_EQ(message_of([&] { resplit(d, 1.0, 1); }), "split must lie strictly between 0 and 1 (the training share), got 1");
   EXPECT_EQ(message_of([&] { resplit(d, 0.0, 1); }), "split must lie strictly between 0 and 1 (the training share), got 0");
-  EXPECT_EQ(message_of([&] { resplit(d, 0.9, 1); }), "2 rows split 0.9 leave no validation rows");
-  EXPECT_EQ(message_of([&] { resplit(d, 0.2, 1); }), "2 rows split 0.2 leave no training rows");
+  // Two rows split one of each, whatever the share (as every dataset splits; these were errors).
+  EXPECT_EQ(resplit(d, 0.9, 1)->train_count(), 1u);
+  EXPECT_EQ(resplit(d, 0.2, 1)->val_count(), 1u);
+  Dataset one = make(1, 0, 1);
+  EXPECT_EQ(message_of([&] { resplit(one, 0.5, 1); }), "1 row cannot be split into training and validation rows");
+}
+
+TEST(DatasetSplit, TrainRowsKeepsARowInEachSet) {
+  EXPECT_EQ(train_rows(0.8, 2), 1u);
+  EXPECT_EQ(train_rows(0.1, 2), 1u);
+  EXPECT_EQ(train_rows(0.95, 10), 9u);
+  EXPECT_EQ(train_rows(0.8, 64149), 51319u);  // the thesis' rows: round(0.8 n), as before
+  EXPECT_EQ(train_rows(1.0, 5), 5u);          // sn.dataset's split = 1: no validation rows
+  EXPECT_EQ(train_rows(0.5, 1), 1u);
 }
 
 }  // namespace

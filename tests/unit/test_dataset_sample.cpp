@@ -304,15 +304,14 @@ TEST(DatasetSample, BadRequestsAreRefusedWithReasons) {
     b.split = split;
     EXPECT_NE(message(b).find("strictly between 0 and 1"), std::string::npos) << split;
   }
-  SampleRequest tiny = r;
-  tiny.n = 2, tiny.split = 0.9;
-  EXPECT_NE(message(tiny).find("leaves no validation rows"), std::string::npos);
   for (dvec3 axis : {dvec3(0), dvec3(std::nan(""), 1, 0), dvec3(INFINITY, 0, 0)}) {
     SampleRequest b = r;
     b.normals = NormalDomain::hemisphere;
     b.axis = axis;
     EXPECT_NE(message(b).find("axis must be a non-zero, finite direction"), std::string::npos);
   }
+  SampleRequest tiny = r;
+  tiny.n = 1;
   EXPECT_THROW(sample_directions(tiny), std::invalid_argument);
   try {
     parse_normal_domain("cube");
