@@ -76,20 +76,31 @@ int w_diff(lua_State* L) {
   return 1;
 }
 
-// What sn.image.mse and sn.image.ssim compare: { channels = all, mask = img, mask_channel = 4 }.
+// What sn.image.mse and sn.image.ssim compare: { channels = the colour ones, mask = img,
+// mask_channel = 4 }. The colour channels are 3 of 3 or 4 and 1 of 1 or 2: alpha (coverage) is
+// not compared unless asked for (it was, by default, and a channel count past the image's meant
+// all of them).
 struct Compared {
-  int channels = -1, mask_channel = 3;
+  int channels = 0, mask_channel = 3;
   const Image* mask = nullptr;
 };
 Compared compared(lua_State* L, const char* what) {
+  const Image& a = check<Image>(L, 1, kType);
   Compared c;
+  c.channels = a.channels >= 3 ? 3 : 1;
   if (lua_isnoneornil(L, 3)) return c;
   Options o(L, 3, what, {"channels", "mask", "mask_channel"});
-  c.channels = o.int32("channels", -1);
+  c.channels = o.int32("channels", c.channels);
+  if (c.channels < 1 || c.channels > a.channels)
+    throw Error(o.where("channels") + " must be 1.." + std::to_string(a.channels) + " (the image's channels), got " +
+                std::to_string(c.channels));
   c.mask_channel = o.int32("mask_channel", 4) - 1;
   int m = o.push("mask");
   if (!lua_isnil(L, m)) c.mask = &check<Image>(L, m, kType);  // stays referenced by the options table
   lua_pop(L, 1);
+  if (c.mask && (c.mask_channel < 0 || c.mask_channel >= c.mask->channels))
+    throw Error(o.where("mask_channel") + " must be 1.." + std::to_string(c.mask->channels) +
+                " (the mask's channels), got " + std::to_string(c.mask_channel + 1));
   return c;
 }
 
@@ -99,9 +110,8 @@ int w_mse(lua_State* L) {
   const Image &a = check<Image>(L, 1, kType), &b = check<Image>(L, 2, kType);
   const double e = io::mse(a, b, c.channels, c.mask, c.mask_channel);
   if (std::isnan(e)) {  // an error naming the pixel, as sn.image.ssim's, not a NaN to carry on with
-    const int channels = c.channels < 1 || c.channels > a.channels ? a.channels : c.channels;
-    io::check_finite(a, channels, "sn.image.mse: image 1");
-    io::check_finite(b, channels, "sn.image.mse: image 2");
+    io::check_finite(a, c.channels, "sn.image.mse: image 1");
+    io::check_finite(b, c.channels, "sn.image.mse: image 2");
   }
   lua_pushnumber(L, e);
   return 1;

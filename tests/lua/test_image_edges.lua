@@ -17,13 +17,23 @@ for _, h in ipairs { 1, 2, 3 } do
 end
 
 local a = sn.image.new { width = 4, height = 4, channels = 4, fill = 0.5 }
-for _, case in ipairs { { { mask = a, mask_channel = 0 }, "mask channel 0 outside the mask's channels 1..4" },
-                        { { mask = a, mask_channel = -3 }, "mask channel -3 outside the mask's channels 1..4" },
-                        { { mask = a, mask_channel = 5 }, "mask channel 5 outside the mask's channels 1..4" },
-                        { { channels = 0 }, "'channels' must be 1..4 (or all)" } } do
-  local ok, err = pcall(sn.image.mse, a, a, case[1])
-  assert(not ok and err:find(case[2], 1, true), tostring(err))
+for _, case in ipairs { { { mask = a, mask_channel = 0 }, "option 'mask_channel' must be 1..4 (the mask's channels), got 0" },
+                        { { mask = a, mask_channel = -3 }, "option 'mask_channel' must be 1..4 (the mask's channels), got -3" },
+                        { { mask = a, mask_channel = 5 }, "option 'mask_channel' must be 1..4 (the mask's channels), got 5" },
+                        { { channels = 0 }, "option 'channels' must be 1..4 (the image's channels), got 0" },
+                        { { channels = 9 }, "option 'channels' must be 1..4 (the image's channels), got 9" } } do
+  for _, f in ipairs { sn.image.mse, sn.image.ssim } do
+    local ok, err = pcall(f, a, a, case[1])
+    assert(not ok and err:find(case[2], 1, true), tostring(err))
+  end
 end
+-- By default the colour channels are compared, not alpha (coverage): it was, and a channel
+-- count past the image's (9) meant all of them.
+local half = sn.image.new { width = 16, height = 16, channels = 4, fill = 0.5 }
+local checker = sn.image.new { width = 16, height = 16, channels = 4, fill = 0.5 }
+for y = 1, 16 do for x = 1, 16 do checker:set(x, y, { 0.5, 0.5, 0.5, (x + y) % 2 }) end end
+assert(sn.image.mse(half, checker) == 0 and sn.image.ssim(half, checker) == 1, "alpha not compared by default")
+assert(sn.image.mse(half, checker, { channels = 4 }) == 0.0625, "alpha compared when asked for")
 -- A NaN compared is an error naming it, in sn.image.mse as in sn.image.ssim, not a NaN to carry
 -- on with; outside the channels or the mask compared it does not count.
 local g = sn.image.new { width = 16, height = 16, channels = 4, fill = 0.5 }
