@@ -2,10 +2,32 @@
 -- root. `check(body, printed)`, if given, sees each example's code and the lines it printed.
 local M = {}
 
+-- Fences pair up: an opening one may name a language, a closing one never does (a ```python
+-- block left open in datasets.md swallowed a section, headings and all, into code).
+function M.check_fences(path, text)
+  if not text then
+    local f = assert(io.open(path, "r"), path .. " missing")
+    text = f:read("*a")
+    f:close()
+  end
+  local fences, at_line = 0, 0
+  for line in (text .. "\n"):gmatch("([^\n]*)\n") do
+    at_line = at_line + 1
+    local info = line:match("^%s*```(.*)$")
+    if info then
+      assert(fences % 2 == 0 or info:match("^%s*$"), ("%s:%d: a fence naming '%s' where the block opened before it "
+                                                     .. "should close"):format(path, at_line, info))
+      fences = fences + 1
+    end
+  end
+  assert(fences % 2 == 0, path .. ": a code block is never closed")
+end
+
 function M.run(path, min_count, check)
   local f = assert(io.open(path, "r"), path .. " missing")
   local text = f:read("*a")
   f:close()
+  M.check_fences(path, text)
   local count, pos = 0, 1
   while true do
     local s, e, body = text:find("```lua\n(.-)\n```", pos)

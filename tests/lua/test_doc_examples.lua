@@ -8,3 +8,9 @@ local counts = {
   docs.run("docs/lua-api/networks.md", 12),
 }
 print(("%s examples ran"):format(table.concat(counts, " + ")))
+-- The Markdown no test runs the examples of: its code blocks are closed.
+for _, path in ipairs { "README.md", "docs/experiments.md", "docs/lighting.md", "docs/live-mode.md",
+                        "docs/performance.md", "docs/reliability.md", "docs/lua-api/ground-truth.md",
+                        "docs/lua-api/live.md", "docs/lua-api/experiments.md", "docs/lua-api/networks-gl.md" } do
+  docs.check_fences(path)
+end
