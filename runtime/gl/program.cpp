@@ -188,12 +188,14 @@ namespace {
 
 std::shared_ptr<Program> build_program(const ProgramDesc& desc) {
   // The key is the preprocessed text, so an edited file or include is a new program.
+  // Checked before the cache: a cached compute program answered for {compute, vertex} too.
+  const bool graphics = !desc.vertex.empty() && !desc.fragment.empty();
+  if (desc.compute.empty() ? !graphics : !desc.vertex.empty() || !desc.fragment.empty())
+    throw std::invalid_argument("a program takes either 'compute' or 'vertex' + 'fragment'");
   std::string key;
   if (!desc.compute.empty()) {
     key = stage_key("compute", preprocess(desc.compute, desc.defines, desc.includes));
   } else {
-    if (desc.vertex.empty() || desc.fragment.empty())
-      throw std::invalid_argument("a program takes either 'compute' or 'vertex' + 'fragment'");
     key = stage_key("vertex", preprocess(desc.vertex, desc.defines, desc.includes)) +
           stage_key("fragment", preprocess(desc.fragment, desc.defines, desc.includes));
   }

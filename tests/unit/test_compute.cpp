@@ -91,6 +91,19 @@ TEST(Compute, ProgramCacheReusesEqualSources) {
   EXPECT_EQ(a.get(), b.get());
   EXPECT_NE(a.get(), c.get());
   EXPECT_EQ(c->local_size(0), 32);
+  // A request that is neither a compute nor a vertex + fragment program is refused, cached
+  // source or not (a cached compute program answered for {compute, vertex}).
+  for (ProgramDesc bad : {ProgramDesc{.compute = "tests/data/shaders/poly.comp", .vertex = "mesh.vert"},
+                          ProgramDesc{.compute = "tests/data/shaders/poly.comp", .fragment = "missing.frag"},
+                          ProgramDesc{.vertex = "mesh.vert"}}) {
+    bad.defines = {{"LOCAL_SIZE", "64"}};
+    try {
+      get_program(bad);
+      ADD_FAILURE() << bad.vertex << bad.fragment;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_STREQ(e.what(), "a program takes either 'compute' or 'vertex' + 'fragment'");
+    }
+  }
 }
 
 TEST(Buffer, UploadDownloadFillAndRange) {
