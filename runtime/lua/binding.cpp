@@ -142,7 +142,11 @@ std::string type_name_at(lua_State* L, int idx) {
   // An object's constructor left uncalled (target = sn.lighting.phong): say how to call it.
   if (lua_type(L, idx) == LUA_TFUNCTION) {
     const std::string name = shadenet_name_of(L, idx);
-    if (!name.empty()) return "the function " + name + " (call it: " + name + " {...}, or " + name + " {} for its defaults)";
+    // Lighting models and mesh shapes have a default for every option; sn.mlp{} and the like do not.
+    const bool defaults = name.rfind("sn.lighting.", 0) == 0 || name.rfind("sn.mesh.", 0) == 0;
+    if (!name.empty())
+      return "the function " + name + " (call it: " + name + " {...}" + (defaults ? ", or " + name + " {} for its defaults" : "") +
+             ")";
   }
   if (lua_getmetatable(L, idx)) {
     lua_getfield(L, -1, "__name");

@@ -17,9 +17,20 @@ const Embedded* find_embedded(const char* name);  // generated from runtime/lua/
 
 namespace {
 
+// registry["shadenet.type_name"](x): what an error calls x (type_name_at), for the Lua-side
+// bindings' messages; an uncalled constructor gets its how-to-call hint there too.
+int w_type_name(lua_State* L) {
+  luaL_checkany(L, 1);
+  const std::string name = type_name_at(L, 1);
+  lua_pushlstring(L, name.data(), name.size());
+  return 1;
+}
+
 // The C part of the module: every open_* adds its functions to one table.
 int open_core(lua_State* L) {
   gl::current();  // every binding below may touch GL: make sure a context exists (headless by default)
+  lua_pushcfunction(L, w_type_name);
+  lua_setfield(L, LUA_REGISTRYINDEX, "shadenet.type_name");
   lua_newtable(L);
   open_context(L);
   open_buffer(L);

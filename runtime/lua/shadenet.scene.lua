@@ -96,7 +96,8 @@ function Scene.render(scene, what, options)
     if not ok then error(img, 2) end
     return img
   end
-  error("scene:render: a lighting model (sn.lighting.*) or a network (sn.mlp) expected, got " .. kind, 2)
+  error("scene:render: a lighting model (sn.lighting.*) or a network (sn.mlp) expected, got "
+        .. registry["shadenet.type_name"](what), 2)
 end
 
 return Scene

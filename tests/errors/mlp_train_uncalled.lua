@@ -1,4 +1,4 @@
--- expect: mlp_train_uncalled\.lua:6: sn\.train option 'nets': element 1 is the function sn\.mlp \(call it: sn\.mlp {\.\.\.}, or sn\.mlp {} for its defaults\), not an Mlp
+-- expect: mlp_train_uncalled\.lua:6: sn\.train option 'nets': element 1 is the function sn\.mlp \(call it: sn\.mlp {\.\.\.}\), not an Mlp
 -- Any object's constructor passed uncalled is named, wherever an object of a type is checked.
 local sn = require "shadenet"
 
