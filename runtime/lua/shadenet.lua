@@ -32,25 +32,41 @@ require "shadenet.vec3"  -- sn.vec3 (for lighting twins)
 -- Reading a name shadenet does not have (sn.tain, or sn.mse for sn.image.mse) is an error naming
 -- it and what is near, where the script reads it, instead of "attempt to call a nil value" (or a
 -- nil passed on). rawget(sn, name) tests for a name without the error.
-local function distance(a, b)  -- edits between two short names (Levenshtein)
-  local prev = {}
+-- Edits between two short names: insertions, deletions, substitutions and swaps of two
+-- neighbours ("sampels" is one edit from "samples"; Damerau-Levenshtein, optimal alignment).
+local function distance(a, b)
+  local before, prev = nil, {}
   for j = 0, #b do prev[j] = j end
   for i = 1, #a do
     local cur = { [0] = i }
     for j = 1, #b do
       cur[j] = math.min(prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (a:byte(i) == b:byte(j) and 0 or 1))
+      if before and j > 1 and a:byte(i) == b:byte(j - 1) and a:byte(i - 1) == b:byte(j) then
+        cur[j] = math.min(cur[j], before[j - 2] + 1)
+      end
     end
-    prev = cur
+    before, prev = prev, cur
   end
   return prev[#b]
 end
+-- sn.near(name, names) -> the names of the list `names` near `name` (a typo of one of them:
+-- at most one edit in four characters), sorted; for "did you mean" in scripts' own errors.
+function sn.near(name, names)
+  local out = {}
+  for _, k in ipairs(names) do
+    if type(k) == "string" and distance(k, name) <= math.max(1, math.floor(#name / 4)) then out[#out + 1] = k end
+  end
+  table.sort(out)
+  return out
+end
 setmetatable(sn, { __index = function(_, name)
   if type(name) ~= "string" then return nil end
-  local near = {}
+  local names, near = {}, {}
   for k, v in pairs(sn) do
-    if type(k) == "string" and distance(k, name) <= math.max(1, math.floor(#name / 4)) then near[#near + 1] = "sn." .. k end
+    if type(k) == "string" then names[#names + 1] = k end
     if type(v) == "table" and type(k) == "string" and rawget(v, name) ~= nil then near[#near + 1] = "sn." .. k .. "." .. name end
   end
+  for _, k in ipairs(sn.near(name, names)) do near[#near + 1] = "sn." .. k end
   table.sort(near)
   error("sn." .. name .. " is not part of shadenet" .. (#near > 0 and " (did you mean " .. table.concat(near, ", ") .. "?)" or
         " (the API: docs/lua-api.md)"), 2)
