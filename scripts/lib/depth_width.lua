@@ -4,11 +4,13 @@
 local exp = require "lib.experiment"
 local thesis = require "lib.thesis"
 local stats = require "lib.stats"
+local options = require "lib.options"
 
 local M = {}
 
 -- M.run(E, { model = "phong", thesis = thesis.table_4_1, title = "...", sizes = {...} })
 function M.run(E, o)
+  options.check(o, "depth_width.run", { "model", "thesis", "title", "sizes" }, { "model", "thesis" })
   local sizes = o.sizes or thesis.sizes
   local seeds = E:pick(2, 10)
   local epochs = E:pick(10, exp.epochs)

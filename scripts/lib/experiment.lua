@@ -13,6 +13,7 @@ local stats = require "lib.stats"
 local json = require "lib.json"
 local plot = require "lib.plot"
 local Progress = require "lib.progress"
+local options = require "lib.options"
 
 local exp = {}
 local E = {}
@@ -34,7 +35,7 @@ end
 
 -- exp.start(name, arg [, { flags = {...extra cli flags}, backend = "auto" }]) -> E
 function exp.start(name, args, o)
-  o = o or {}
+  o = options.check(o or {}, "exp.start", { "flags", "backend" })
   local list = {}
   for i = 1, #(args or {}) do list[i] = args[i] end
   -- scripts/merge.lua reports on every run: a Slurm array task it runs in picks no shard.
@@ -138,8 +139,9 @@ function exp.make_scene(so)
 end
 
 -- The scene for options `o` (cached per process by its options).
+exp.scene_keys = { "mesh", "size", "views", "elevation", "light", "poses" }
 function E:scene(o)
-  local so = self:scene_options(o)
+  local so = self:scene_options(options.check(o or {}, "E:scene", exp.scene_keys))
   local key = json.encode(so)
   if not self.scenes[key] then
     self.scenes[key] = self:time("scene", exp.make_scene, so)
@@ -177,11 +179,18 @@ exp.model_params = {
   textured_phong = {},
 }
 
--- E:data_desc{ model = "phong", inputs = {"normal", "view"}, color = "rgb", samples = N, seed = 1,
---              mesh, size, views } -> the dataset's description (what a run's config records)
+-- E:data_desc{ model = "phong", inputs = {"normal", "view"}, color = "rgb", samples = N, split = 0.8,
+--              seed = 1, data = "poses"|"cloth", mesh, size, views, elevation, light, poses }
+--   -> the dataset's description (what a run's config records); given a description, returns it.
+exp.data_keys = { "model", "inputs", "color", "samples", "split", "seed", "data", "mesh", "size", "views",
+                  "elevation", "light", "poses" }
+exp.desc_keys = { "model", "truth", "inputs", "color", "samples", "split", "seed", "scene" }
 function E:data_desc(o)
   o = o or {}
-  if o.scene then return o end  -- already a description
+  if type(o) == "table" and o.scene then  -- already a description
+    return options.check(o, "E:data_desc (a description)", exp.desc_keys, exp.desc_keys)
+  end
+  options.check(o, "E:data_desc", exp.data_keys)
   local model = o.model or "phong"
   return {
     model = model,
@@ -446,9 +455,19 @@ end
 
 -- A run: { id, config }. The config holds the network, the training settings and the dataset's
 -- description, so a finished run is reused only for exactly the same experiment.
--- o = { id, hidden, seed, activation, slope, omega, alpha, output_activation, init, color, epochs,
---       batch, adam, data (desc), keep_params, encoding (sn.mlp's, by input name) }
+-- o = { id, hidden, data (desc), seed, epochs, batch, adam, outputs, activation, slope, omega, alpha,
+--       output_activation, init, encoding (sn.mlp's, by input name), keep_params, tag, backend,
+--       alone, copies } (docs/lua-api/experiments.md says what each does)
+exp.run_keys = { "id", "hidden", "data", "seed", "epochs", "batch", "adam", "outputs", "activation", "slope", "omega",
+                 "alpha", "output_activation", "init", "encoding", "keep_params", "tag", "backend", "alone", "copies" }
 function exp.run(o)
+  options.check(o, "exp.run", exp.run_keys, { "id", "hidden", "data", "seed" },
+                { id = "the run's name", hidden = "the hidden layers' widths", data = "a dataset description: E:data_desc{...}",
+                  seed = "its initial weights' and its shuffle's seed" })
+  if type(o.data) ~= "table" or not o.data.scene then
+    options.error("exp.run option 'data' is " .. (type(o.data) == "table" and "not a dataset description" or "a " .. type(o.data))
+                  .. " (give E:data_desc{...}'s result)")
+  end
   local adam = o.adam or exp.adam
   return {
     id = o.id,
@@ -631,7 +650,7 @@ end
 -- E:sweep(runs [, { chunk = N, label }]) -> records by id (every finished run found, this shard's
 -- and any merged in), interrupted
 function E:sweep(runs, o)
-  o = o or {}
+  o = options.check(o or {}, "E:sweep", { "chunk", "label" })
   -- A finished run is reused when it was trained on the backend asked for: --backend auto (the
   -- default) takes any; --backend cpu or gl trains again the runs another backend trained.
   local function wanted(run) return run.config.backend or self.backend end
@@ -754,6 +773,7 @@ end
 
 -- E:plot("plots/NAME.png", spec for lib.plot.lines) -> path; the CSV lands beside it.
 function E:plot(rel, p)
+  options.check(p, "E:plot", plot.keys)
   p.path = self.R:path(rel)
   local path, dropped = plot.lines(p)
   local w = self.R.written
@@ -819,7 +839,10 @@ function exp.crop(img, box) return sn.image.crop(img, box[1], box[2], box[3], bo
 -- MSE over the covered pixels, then the |error| heatmaps under them. Network renders are
 -- clamped to [0, 1] as a display shows them (the truth is). Writes the PNG and a CSV of the
 -- MSEs beside it; returns the MSE rows.
+exp.compare_keys = { "file", "title", "model", "nets", "meshes", "size", "view_count", "max", "colour_shift" }
 function E:compare(o)
+  options.check(o, "E:compare", exp.compare_keys, { "file", "model", "nets", "meshes" })
+  options.check_list(o.meshes, "E:compare meshes", { "mesh", "label", "views", "view_count" }, { "mesh", "label" })
   local truth_model = exp.model(o.model)
   local size = o.size or self:pick({ 200, 150 }, { 480, 360 })
   local renders, rows = {}, {}
@@ -939,7 +962,7 @@ end
 -- E:finish{ config = {...}, summary = {...} }: writes run.json and prints where everything is.
 -- When Ctrl-C stopped a sweep, the partial results are written and the process exits with 130.
 function E:finish(o)
-  o = o or {}
+  o = options.check(o or {}, "E:finish", { "records", "config", "summary" })
   local total = sn.clock() - self.t0
   self.timings.total = total
   -- The backends and devices of every record the tables used (all of them when they differ,

@@ -6,10 +6,12 @@
 --              nets = { { layers = 8, width = 6, label = "8 layers" }, ... } }, ... },
 --              table_title = "..." })
 local exp = require "lib.experiment"
+local options = require "lib.options"
 
 local M = {}
 
 function M.run(E, o)
+  options.check(o, "grids.run", { "model", "figures", "table_title" }, { "model", "figures" })
   local epochs = E:pick(10, exp.epochs)
   local desc = E:data_desc { model = o.model }
   local runs, seen = {}, {}

@@ -2,6 +2,7 @@
 -- beside the PNG (series,x,y[,label]) and gnuplot reads that very file, so the CSV is exactly
 -- what the picture shows.
 local results = require "lib.results"
+local options = require "lib.options"
 
 local plot = {}
 
@@ -42,7 +43,12 @@ local styles = { lines = "lines lw 2", linespoints = "linespoints lw 2 pt %d ps 
 -- Non-finite y values are dropped (gnuplot cannot draw them) and counted in the returned
 -- second value, so a diverged curve shows as a gap, never as a silent zero. With
 -- SHADENET_PLOTS=later the first value is the gnuplot script's path: no PNG yet.
+plot.keys = { "path", "title", "xlabel", "ylabel", "logx", "logy", "width", "height", "key", "series", "xtics", "xrange",
+              "yrange" }
+plot.series_keys = { "name", "x", "y", "style", "color", "dash", "point", "labels" }
 function plot.lines(p)
+  options.check(p, "plot.lines", plot.keys, { "path", "series" })
+  options.check_list(p.series, "plot.lines series", plot.series_keys, { "name", "x", "y" })
   assert(p.path and p.path:match("%.png$"), "plot.lines: path must end in .png")
   assert(p.series and #p.series > 0, "plot.lines: no series")
   local csv_path = p.path:gsub("%.png$", ".csv")

@@ -2,6 +2,7 @@
 -- On a terminal it redraws one line with \r; otherwise (CI logs, Slurm output files, pipes) it
 -- prints a plain line at most every `every` seconds and at the end.
 local sn = require "shadenet"
+local options = require "lib.options"
 
 local Progress = {}
 Progress.__index = Progress
@@ -18,8 +19,10 @@ end
 Progress.duration = duration
 
 -- Progress.new{ total = N, label = "table_4_1_phong", tty = (default: stdout is a terminal),
---               every = 10 (seconds between plain lines), out = io.stdout, clock = (tests) }
+--               every = 10 (seconds between plain lines), out = io.stdout, clock = (tests),
+--               already = runs finished before this process (resumed) }
 function Progress.new(o)
+  options.check(o, "Progress.new", { "total", "label", "tty", "every", "out", "clock", "already" }, { "total" })
   local tty = o.tty
   if tty == nil then tty = sn.isatty("stdout") end
   local c = o.clock or clock

@@ -4,6 +4,7 @@
 -- Ctrl-C never leaves a half-written result.
 local sn = require "shadenet"
 local json = require "lib.json"
+local options = require "lib.options"
 
 local results = {}
 
@@ -115,7 +116,9 @@ end
 
 -- A 2-D view of rows: one table row per value of g.rows (e.g. layers), one column per value of
 -- g.cols (e.g. width); each cell "ours (thesis)" when g.thesis names a field.
+results.grid_keys = { "title", "rows", "cols", "value", "thesis", "format", "row_header", "col_header" }
 function results.markdown_grid(g, rows)
+  options.check(g, "results.markdown_grid", results.grid_keys, { "rows", "cols", "value" })
   local rvals, cvals, seen_r, seen_c, cell = {}, {}, {}, {}, {}
   for _, r in ipairs(rows) do
     local a, b = r[g.rows], r[g.cols]
@@ -183,11 +186,15 @@ function Results:json(rel, value)
   return results.write_json(self:path(rel), value)
 end
 
--- R:table{ file = "table", title = "...", columns = {{key, header, format}...}, rows = {...},
---          grids = {{title, rows, cols, value, thesis, format}...}, notes = {"..."} }
+-- R:table{ file = "table", title = "...", columns = {{key, header, format, align}...}, rows = {...},
+--          grids = {{title, rows, cols, value, thesis, format, row_header, col_header}...}, notes = {"..."} }
 -- writes FILE.md (title, grids, the long table, notes) and FILE.csv (the long table). Under its
 -- title FILE.md prints R.notices (lines: quick mode, one shard) and R.partial (a stopped sweep).
+results.column_keys = { "key", "header", "format", "align" }
 function Results:table(t)
+  options.check(t, "R:table", { "file", "title", "columns", "rows", "grids", "notes" }, { "columns", "rows" })
+  options.check_list(t.columns, "R:table columns", results.column_keys, { "key" })
+  options.check_list(t.grids, "R:table grids", results.grid_keys, { "rows", "cols", "value" })
   local file = t.file or "table"
   local md = {}
   if t.title then md[#md + 1] = "## " .. t.title .. "\n" end

@@ -7,6 +7,7 @@ local sn = require "shadenet"
 local json = require "lib.json"
 local results = require "lib.results"
 local Progress = require "lib.progress"
+local options = require "lib.options"
 
 local Sweep = {}
 Sweep.__index = Sweep
@@ -16,7 +17,8 @@ Sweep.__index = Sweep
 --            accept = function(record, run) -> false when a finished record may not be reused
 --                     (lib.experiment: trained on another backend than --backend asks for) }
 function Sweep.new(o)
-  assert(o.dir and o.runs, "sweep.new: dir and runs are required")
+  options.check(o, "Sweep.new", { "dir", "runs", "shard", "label", "accept" }, { "dir", "runs" },
+                { dir = "the results folder", runs = "a list of { id, config }" })
   local ids = {}
   for k, r in ipairs(o.runs) do
     if type(r.id) ~= "string" or not r.id:match("^[%w._-]+$") then
@@ -127,6 +129,8 @@ end
 -- at its next step: a result flagged `interrupted` is a run stopped part-way, not written, so
 -- the next run of the same command trains it again from the start.
 function Sweep:run(o)
+  options.check(o, "sweep:run", { "train", "group_key", "chunk", "score", "describe" }, { "train" },
+                { train = "function(group, tick) -> one result table per run of the group" })
   local slice = self:slice()
   local pending = self:pending()
   local done = #slice - #pending
