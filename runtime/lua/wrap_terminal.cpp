@@ -70,6 +70,13 @@ void (*current_handler())(int) {
 }  // namespace
 
 TrainInterrupt::TrainInterrupt(std::atomic<bool>* stop) : previous_(g_train_stop.exchange(stop)) {
+  // A Ctrl-C counted before this training began (while a sweep built its dataset) stops it at
+  // once: it trained the whole group. The handler is the default again, so the next one ends
+  // the process, as promised.
+  if (g_interrupts > 0) {
+    stop->store(true);
+    return;
+  }
   if (current_handler() == SIG_DFL) {
     set_handler(on_sigint, false);
     installed_ = true;

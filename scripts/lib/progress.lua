@@ -29,7 +29,7 @@ function Progress.new(o)
   local self = setmetatable({ total = o.total, label = o.label or "", tty = tty, every = o.every or 10,
                               out = o.out or io.stdout, done = 0, start_done = o.already or 0, clock = c,
                               t0 = c(), last_print = -math.huge, width = sn.terminal_width() or 100 }, Progress)
-  self.done = self.start_done
+  self.done, self.finished = self.start_done, self.start_done
   Progress.active = self
   return self
 end
@@ -49,7 +49,13 @@ function Progress:text()
     if work >= enough and seconds >= 1 then eta = seconds / work * remaining end
   end
   -- Most useful first: a narrow terminal cuts the end of the line.
-  local parts = { string.format("%s %d/%d runs", self.label, math.floor(self.done + 1e-9), self.total) }
+  -- Runs finished (kept on disk), and the share of the work done where a group in flight adds to
+  -- it: "288/360 runs" for a group 80% trained let Ctrl-C look as if it would keep 288.
+  local runs = string.format("%s %d/%d runs", self.label, self.finished, self.total)
+  if self.done > self.finished + 1e-9 and self.total > 0 then
+    runs = runs .. string.format(" (%d%% done)", math.floor(100 * self.done / self.total))
+  end
+  local parts = { runs }
   if remaining > 0 then parts[#parts + 1] = "ETA " .. (eta and duration(eta) or "?") end
   parts[#parts + 1] = "elapsed " .. duration(elapsed)
   if self.best then parts[#parts + 1] = "best " .. self.best end
@@ -61,9 +67,11 @@ local function bar(frac, n)
   return "[" .. string.rep("#", full) .. string.rep(".", n - full) .. "]"
 end
 
--- p:update(done [, best_text]): `done` runs finished so far (including resumed ones).
-function Progress:update(done, best)
+-- p:update(done [, best_text [, finished]]): `done` runs' worth of work so far (including resumed
+-- runs; a fraction for a group in flight), `finished` the runs finished and kept (default: done).
+function Progress:update(done, best, finished)
   self.done = done
+  self.finished = math.floor((finished or done) + 1e-9)
   if best then self.best = best end
   local now = self.clock()
   if not self.anchor and done > self.start_done then self.anchor = { t = now, done = done } end

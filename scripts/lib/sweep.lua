@@ -176,7 +176,7 @@ function Sweep:run(o)
     local t0 = sn.clock()
     -- tick(f): the group is fraction f done (for the ETA while a long group trains).
     local base = done
-    local function tick(f) progress:update(base + math.max(0, math.min(1, f)) * #group, best_text) end
+    local function tick(f) progress:update(base + math.max(0, math.min(1, f)) * #group, best_text, base) end
     local out = o.train(group, tick)
     assert(type(out) == "table" and #out == #group,
            string.format("sweep: train returned %s results for %d runs", type(out) == "table" and #out or type(out), #group))

@@ -220,6 +220,10 @@ assert(pe:text():find("ETA ?", 1, true), "no ETA before 2% of the work: " .. pe:
 now = 110
 pe:update(1.01)
 assert(pe:text():find("ETA 1m30s", 1, true), "ETA from the training's rate (1 run per 10 s, 8.99 left): " .. pe:text())
+-- A group in flight counts as work, not as runs finished (288/360 showed for a group 80% done,
+-- and Ctrl-C kept 0 of them).
+pe:update(4.5, nil, 2)
+assert(pe:text():find("e 2/10 runs (45% done)", 1, true), "runs finished and work done apart: " .. pe:text())
 sink.text = ""
 local prt = Progress.new { total = 10, label = "x", tty = true, out = sink }
 prt:update(5)

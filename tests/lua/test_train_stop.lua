@@ -65,6 +65,10 @@ for _, backend in ipairs(sn.backends()) do
   code, out = C.run("tests/lua/train_interrupt_child.lua", { backend, "twice", tmp .. "/net2.snmlp" })
   assert(code == 130 and not out:find("SURVIVED"), backend .. ": the second Ctrl-C ends the process (" ..
          tostring(code) .. "):\n" .. out)
+  code, out = C.run("tests/lua/train_interrupt_child.lua", { backend, "before", tmp .. "/net3.snmlp" })
+  assert(code == 130 and out:find("OK before") and not out:find("SURVIVED"),
+         backend .. ": a Ctrl-C before sn.train stops it at once, the next ends the process (" .. tostring(code) .. "):\n" .. out)
+  print(backend .. ": " .. out:match("OK before[^\n]*"))
   C.rm(tmp)
 end
 print("train stop: ok")

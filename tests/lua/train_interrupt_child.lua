@@ -5,6 +5,9 @@
 --                 prints "OK ...".
 --   mode "twice": two Ctrl-Cs; the second must end the process (exit status 130), so reaching
 --                 the end prints "SURVIVED".
+--   mode "before": under sn.catch_interrupt(), a Ctrl-C before sn.train begins (a sweep building
+--                 its dataset): the training stops at once, prints "OK before ...", and the next
+--                 Ctrl-C ends the process (130; it trained the whole group, and caught the next).
 local sn = require "shadenet"
 local ffi = require "ffi"
 ffi.cdef [[
@@ -31,6 +34,26 @@ local delay = math.max(1.0, 3 * (sn.clock() - w0))
 local net = make()
 local before = net:params()
 local steps_per_epoch = math.floor(select(1, data:counts()) / batch)
+if mode == "before" then
+  sn.catch_interrupt()
+  -- From a background shell, a moment later: system() ignores SIGINT until its child has ended.
+  os.execute(string.format("(sleep 0.2; kill -INT %d) &", ffi.C.getpid()))
+  local w = sn.clock()
+  while not sn.interrupted() and sn.clock() - w < 20 do end
+  assert(sn.interrupted(), "the Ctrl-C arrived")
+  local t0 = sn.clock()
+  local r = sn.train { nets = net, data = data, epochs = 100, batch = batch, backend = backend }[1]
+  local seconds = sn.clock() - t0
+  assert(r.interrupted and r.steps == 0 and net:trained_steps() == 0, "stopped before its first step: " .. r.steps)
+  for i, v in ipairs(net:params()) do assert(v == before[i], "the weights as they were") end
+  print(string.format("OK before: stopped in %.2f s", seconds))
+  io.stdout:flush()
+  os.execute(string.format("(sleep 0.2; kill -INT %d) &", ffi.C.getpid()))
+  local t1 = sn.clock()
+  while sn.clock() - t1 < 20 do end
+  print("SURVIVED")
+  os.exit(0)
+end
 -- (Two signals sent at once would merge into one pending signal; a person's second Ctrl-C
 -- comes later.)
 local kills = mode == "twice" and "kill -INT %d; sleep 0.3; kill -INT %d" or "kill -INT %d"
