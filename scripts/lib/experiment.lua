@@ -41,6 +41,17 @@ function exp.start(name, args, o)
   -- scripts/merge.lua reports on every run: a Slurm array task it runs in picks no shard.
   local opts = cli.parse_or_exit(list, name, o.flags, exp.report_only and function() return nil end or nil)
   local R = results.open(opts, name)
+  -- A quick run and a full one share run ids: in one folder, one would overwrite the other's
+  -- records and tables (a smoke test after a full run retrained 72 of Table 4.1's 360 runs).
+  if sn.fs.exists(R:path("run.json")) == "file" then
+    local ok, before = pcall(json.decode, results.read_file(R:path("run.json")), R:path("run.json"))
+    if ok and type(before) == "table" and before.quick ~= nil and before.quick ~= opts.quick then
+      io.stderr:write(string.format("%s holds a %s run's results; a %s run there would overwrite them: give it its own "
+                                    .. "--out DIR\n", R.dir, before.quick and "quick" or "full",
+                                    opts.quick and "quick" or "full"))
+      os.exit(2)
+    end
+  end
   local self = setmetatable({
     name = name, opts = opts, quick = opts.quick, R = R, dir = R.dir, args = list,
     -- the script as it was run (a user's own experiment may live anywhere); merge.lua runs it

@@ -160,12 +160,13 @@ end
 local Results = {}
 Results.__index = Results
 
--- results.open(options, name) with options from lib.cli: results/NAME, results/NAME/shard-i-of-n
--- when sharded without --out, or --out DIR.
+-- results.open(options, name) with options from lib.cli: results/NAME (results/NAME-quick in
+-- quick mode, so a smoke run never overwrites a full run's records and tables: their run ids are
+-- the same), results/NAME/shard-i-of-n when sharded without --out, or --out DIR.
 function results.open(o, name)
   local dir = o.out
   if not dir then
-    dir = "results/" .. name
+    dir = "results/" .. name .. (o.quick and "-quick" or "")
     if o.shard then dir = string.format("%s/shard-%d-of-%d", dir, o.shard.index, o.shard.count) end
   end
   dir = dir:gsub("/+$", "")
