@@ -41,7 +41,7 @@ for _, backend in ipairs(backends) do
                               epochs = math.max(1, math.ceil(min_batches / math.floor(train_rows / 8))), data = desc,
                               backend = backend, alone = true, copies = 36 }
 end
-local records = E:sweep(runs)
+local records, interrupted = E:sweep(runs)
 
 local train_rows_out = {}
 for _, backend in ipairs(backends) do
@@ -82,7 +82,8 @@ for _, L in ipairs { 4, 8, 12, 16 } do
 end
 local truth = exp.model("ggx")
 local render_rows = {}
-for _, size in ipairs(sizes) do
+-- After Ctrl-C the script stops: the rendering benchmark (8 s of a full run) is not timed.
+for _, size in ipairs(interrupted and {} or sizes) do
   -- One view, the cloth filling it: the thesis' screen-space setting.
   local scene = E:scene { mesh = exp.meshes.train, size = size, views = 8 }
   local g = scene:gbuffer { view = 1, attributes = { "normal", "view" } }
@@ -167,6 +168,7 @@ E.R:table {
                   .. "Renderer: %s; the backend column is what net:render's auto chose (cpu: the network's kernels over the covered G-buffer pixels, "
                   .. "attribute read-back included; gl: the fragment shader).", frames, info.renderer),
     "A call: one frame drawn and read back into an image; the GGX truth pass over the same G-buffer, for scale (median of the same number of calls).",
+    interrupted and "Rendering: not timed (the training sweep was stopped; run the same command to finish both)." or nil,
   },
 }
 
@@ -214,9 +216,11 @@ for _, n in ipairs(nets) do
   series[#series + 1] = s
   if #t.x > 0 then series[#series + 1] = t end
 end
-E:plot("plots/render_time.png", { title = "Table 4.6 — rendering time per frame, ours and the thesis'",
-  xlabel = "image size (megapixels)", ylabel = "ms per frame", logy = true, series = series, key = "outside right",
-  width = 1000 })
+if #render_rows > 0 then  -- none when the sweep was stopped
+  E:plot("plots/render_time.png", { title = "Table 4.6 — rendering time per frame, ours and the thesis'",
+    xlabel = "image size (megapixels)", ylabel = "ms per frame", logy = true, series = series, key = "outside right",
+    width = 1000 })
+end
 
 E:finish {
   records = records,

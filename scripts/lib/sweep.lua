@@ -204,9 +204,13 @@ function Sweep:run(o)
   sn.catch_interrupt(false)
   progress:finish()
   if interrupted then
-    print(string.format("%s: stopped (Ctrl-C or SIGTERM); %d of %d runs finished and kept in %s%s (run the same command to resume)",
-                        self.label, done, #slice, self.runs_dir,
-                        stopped_part_way > 0 and string.format("; %d stopped part-way will train again", stopped_part_way) or ""))
+    local never = #slice - done - stopped_part_way
+    local left = {}
+    if stopped_part_way > 0 then left[#left + 1] = "the " .. stopped_part_way .. " stopped part-way" end
+    if never > 0 then left[#left + 1] = "the " .. never .. " not started" end
+    print(string.format("%s: stopped (Ctrl-C or SIGTERM); %d of %d runs finished and kept in %s; run the same command "
+                        .. "to resume%s", self.label, done, #slice, self.runs_dir,
+                        #left > 0 and " (it trains " .. table.concat(left, " and ") .. ")" or ""))
   end
   return done, interrupted
 end

@@ -138,7 +138,8 @@ end
 -- Runs a script in a child shadenet with a Ctrl-C sent to itself after its first training
 -- group: a deterministic stand-in for a person pressing Ctrl-C mid-sweep. With `in_training`
 -- = n, the Ctrl-C comes inside the n-th sn.train call instead, after its first epoch (sn.train
--- then stops at its next step). `signal` (default 2, SIGINT) is the signal sent: 15 is SIGTERM.
+-- then stops at its next step); with `in_training` = 0 it comes as the first group begins, before
+-- its dataset is built. `signal` (default 2, SIGINT) is the signal sent: 15 is SIGTERM.
 function C.run_interrupted(script, args, in_training, signal)
   local wrapper = C.tmpdir("interrupted") .. "/wrapper.lua"
   results.write_file(wrapper, string.format([[
@@ -155,6 +156,7 @@ local function ctrl_c()
   ffi.C.kill(ffi.C.getpid(), signal)  -- SIGINT: as a terminal's Ctrl-C sends
 end
 exp.Experiment.train_group = function(self, group, tick)
+  if in_training == 0 and not sent then ctrl_c() end
   local out = train_group(self, group, tick)
   if not sent and not in_training then ctrl_c() end
   return out

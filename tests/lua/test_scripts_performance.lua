@@ -86,4 +86,17 @@ assert(md:find("**Partial results:** the sweep was stopped (Ctrl-C or SIGTERM) w
 local run = C.read(dir .. "/run.json")
 assert(not run:find('"render": %d'), "no render timing after the stop:\n" .. run)  -- timings.render, seconds
 C.rm(dir)
+
+-- Stopped as its first group begins (its dataset not yet built): no run trains (the whole group
+-- trained after the Ctrl-C), the rendering benchmark is not timed, and the message counts the
+-- runs not started.
+dir = C.tmpdir("performance_stopped")
+code, out = C.run_interrupted("scripts/tables_4_5_4_7_performance.lua", { "--quick", "--out", dir }, 0)
+assert(code == 130, "a stopped performance script exits 130, got " .. tostring(code) .. ":\n" .. out)
+assert(out:find("stopped %(Ctrl%-C or SIGTERM%); 0 of %d+ runs finished and kept in [^\n]*; run the same command to "
+                .. "resume %(it trains the 1 stopped part%-way and the %d+ not started%)"), out)
+md = C.read(dir .. "/table_render.md")
+assert(md:find("Rendering: not timed (the training sweep was stopped", 1, true), md)
+assert(not C.read(dir .. "/run.json"):find('"render": %d'), "no render timing after the stop")
+C.rm(dir)
 print("performance scripts: ok")

@@ -170,7 +170,8 @@ local T = root .. "/in_training"
 code, iout = C.run_interrupted(script, { "--quick", "--runs-per-job", "36", "--out", T }, 2)
 assert(code == 130, "interrupted in training: exit 130, got " .. tostring(code) .. ":\n" .. iout)
 assert(iout:find("interrupt: stopping training at the next step", 1, true) and
-       iout:find("stopped %(Ctrl%-C or SIGTERM%); 36 of 72 runs finished and kept in [^\n]*; 36 stopped part%-way will train again"),
+       iout:find("stopped %(Ctrl%-C or SIGTERM%); 36 of 72 runs finished and kept in [^\n]*; run the same command to "
+                 .. "resume %(it trains the 36 stopped part%-way%)"),
        "interrupt message:\n" .. iout)
 out = C.ok(script, { "--quick", "--out", T })
 assert(out:find("resuming, 36 of 72"), "the re-run resumes:\n" .. out)
