@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <set>
+#include <unistd.h>
 
 #include "lua/binding.h"
 #include "lua/mlp_binding.h"
@@ -262,6 +263,18 @@ int w_train(lua_State* L) {
       for (auto& p : nets) training.erase(p.get());
     }
   } busy(hold);
+  // The backend auto picks, said once per process (a sweep calls sn.train many times) when it is
+  // picked, not after the training; on a terminal it clears a progress line drawn on it first.
+  static bool said = false;
+  if (backend == "auto" && !said) {
+    std::string reason;
+    const std::string picked = nn::resolve_backend(backend, &reason, job.nets);
+    const bool same_terminal = isatty(STDOUT_FILENO) == 1 && isatty(STDERR_FILENO) == 1;
+    std::fflush(stdout);
+    std::fprintf(stderr, "%ssn.train: backend auto -> %s (%s)\n", same_terminal ? "\r\033[K" : "", picked.c_str(),
+                 reason.c_str());
+    said = true;
+  }
   nn::JobResult r;
   {
     TrainInterrupt ctrl_c(&stop);
@@ -269,11 +282,6 @@ int w_train(lua_State* L) {
   }
   lua_settop(L, 1);  // the progress and tick functions
 
-  if (backend == "auto") {
-    static bool said = false;  // once per process: a sweep calls sn.train many times
-    if (!said) std::fprintf(stderr, "sn.train: backend auto -> %s (%s)\n", r.backend.c_str(), r.reason.c_str());
-    said = true;
-  }
   lua_createtable(L, int(r.nets.size()), 0);
   for (std::size_t i = 0; i < r.nets.size(); ++i) {
     push_result(L, r.nets[i], r);
