@@ -19,6 +19,7 @@ namespace sn::lua {
 namespace {
 
 volatile std::sig_atomic_t g_interrupts = 0;
+volatile std::sig_atomic_t g_first_signal = 0;  // SIGINT or SIGTERM: the one that stopped the work
 // The running sn.train's stop flag, or nullptr. A pointer atomic is lock-free on every platform
 // we build on, so the handler may read it.
 std::atomic<std::atomic<bool>*> g_train_stop{nullptr};
@@ -31,6 +32,7 @@ void say(const char* msg, std::size_t n) {
 }
 
 extern "C" void on_sigint(int signo) {
+  if (g_interrupts == 0) g_first_signal = signo;
   g_interrupts = g_interrupts + 1;
   // The second signal gets the default action back: the process ends now.
   std::signal(SIGINT, SIG_DFL);
@@ -128,10 +130,13 @@ int w_catch_interrupt(lua_State* L) {
 }
 
 // sn.interrupted() -> true once a Ctrl-C was caught (by sn.catch_interrupt() or a running
-// sn.train) since the last sn.catch_interrupt()
+// sn.train) since the last sn.catch_interrupt(), and the signal's number (2 SIGINT, 15 SIGTERM):
+// a script that stops for it exits 128 + that number, as the shell reports a process it killed.
 int w_interrupted(lua_State* L) {
   lua_pushboolean(L, g_interrupts > 0);
-  return 1;
+  if (g_interrupts == 0) return 1;
+  lua_pushinteger(L, g_first_signal);
+  return 2;
 }
 
 }  // namespace

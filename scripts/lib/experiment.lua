@@ -971,7 +971,8 @@ end
 -- ---- finish ---------------------------------------------------------------------------------
 
 -- E:finish{ config = {...}, summary = {...} }: writes run.json and prints where everything is.
--- When Ctrl-C stopped a sweep, the partial results are written and the process exits with 130.
+-- When Ctrl-C or SIGTERM stopped a sweep, the partial results are written and the process exits
+-- with 130 or 143.
 function E:finish(o)
   o = options.check(o or {}, "E:finish", { "records", "config", "summary" })
   local total = sn.clock() - self.t0
@@ -1006,7 +1007,10 @@ function E:finish(o)
   self.R:json("run.json", info)
   print(string.format("%s: done in %.1f s; wrote %s/{%s}", self.name, total, self.dir,
                       table.concat(self.R.written, ",")))
-  if self.interrupted then os.exit(130) end
+  if self.interrupted then
+    local _, signal = sn.interrupted()
+    os.exit(128 + (signal or 2))  -- 130 after Ctrl-C, 143 after SIGTERM, as the shell reports a killed process
+  end
   return info
 end
 

@@ -160,7 +160,7 @@ assert(C.read(I .. "/table.csv") == C.read(A .. "/table.csv"), "interrupted + re
 -- SIGTERM (a scheduler's time limit) after the first training job: the same graceful stop.
 local K = root .. "/terminated"
 code, iout = C.run_interrupted(script, { "--quick", "--runs-per-job", "36", "--out", K }, nil, 15)
-assert(code == 130, "a terminated sweep exits 130, got " .. tostring(code) .. ":\n" .. iout)
+assert(code == 143, "a terminated sweep exits 143 (128 + SIGTERM), got " .. tostring(code) .. ":\n" .. iout)
 assert(iout:find("terminate (SIGTERM): finishing the work in flight", 1, true) and
        iout:find("stopped %(Ctrl%-C or SIGTERM%); 36 of 72 runs finished and kept"), "terminate message:\n" .. iout)
 
