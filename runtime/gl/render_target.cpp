@@ -141,6 +141,12 @@ Pool<RenderTarget>& pool() {
 }  // namespace
 
 std::shared_ptr<RenderTarget> pooled_target(int width, int height, int n) {
+  // A large target is not kept idle: two of a 4096x4096 render held 1 GB for the rest of the
+  // process. Up to 128 MiB of colour (1920x1080 with 3 attachments) is pooled, as frames and
+  // dataset views need.
+  constexpr double kPooledBytes = 128.0 * 1024 * 1024;
+  if (double(width) * double(height) * double(n) * 16.0 > kPooledBytes)
+    return std::make_shared<RenderTarget>(width, height, n);
   return pool().take(
       [&](const RenderTarget& t) { return t.width() == width && t.height() == height && t.attachments() == n; },
       [](const RenderTarget&, const RenderTarget&) { return false; },  // the first that fits

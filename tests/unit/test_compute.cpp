@@ -8,6 +8,7 @@
 #include "gl/buffer_texture.h"
 #include "gl/context.h"
 #include "gl/program.h"
+#include "gl/render_target.h"
 
 #include <epoxy/gl.h>
 
@@ -145,6 +146,21 @@ TEST(Buffer, PooledBuffersAreReusedOnlyWhenIdle) {
   c.reset();
   EXPECT_EQ(pooled_buffer(ElemType::vec4, 45).get(), small);  // the smallest that is large enough
   clear_buffer_pool();
+}
+
+// The render target pool keeps a small idle target for the next view or frame, but not a large
+// one: two idle 4096x4096 renders' targets held 1 GB for the rest of the process.
+TEST(RenderTarget, OnlySmallTargetsArePooled) {
+  current();
+  clear_target_pool();
+  std::weak_ptr<RenderTarget> small = pooled_target(640, 480, 2);
+  EXPECT_FALSE(small.expired());  // idle, kept
+  RenderTarget* again = pooled_target(640, 480, 2).get();
+  EXPECT_EQ(again, small.lock().get());
+  std::weak_ptr<RenderTarget> large = pooled_target(2048, 1100, 4);  // 144 MB of colour
+  EXPECT_TRUE(large.expired());
+  clear_target_pool();
+  EXPECT_TRUE(small.expired());
 }
 
 // y of poly.comp with u_scale = 1, in double.
