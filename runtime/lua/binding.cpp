@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <new>
 #include <stdexcept>
 #include <string>
 
@@ -44,6 +45,12 @@ int guarded(lua_State* L, int (*f)(lua_State*)) {
   int results = 0;
   try {
     results = f(L);
+  } catch (const std::bad_alloc&) {  // its what() says only "std::bad_alloc"
+    luaL_where(L, 1);
+    lua_pushstring(L, "out of memory: the process could not allocate what this call needs (a smaller image or "
+                      "dataset, fewer networks, or a higher memory limit, ulimit -v, would help)");
+    lua_concat(L, 2);
+    failed = true;
   } catch (const std::exception& e) {
     luaL_where(L, 1);
     lua_pushstring(L, e.what());
