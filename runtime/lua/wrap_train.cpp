@@ -91,13 +91,14 @@ nn::Loss read_loss(lua_State* L, int idx) {
   if (lua_type(L, idx) == LUA_TSTRING) return nn::parse_loss(lua_tostring(L, idx));
   if (!lua_istable(L, idx)) throw Error(std::string(where) + ": a name or { name, delta = ... } expected, got " + type_name_at(L, idx));
   double delta = 1.0;
+  bool has_delta = false;
   std::string name;
   lua_pushnil(L);
   while (lua_next(L, idx) != 0) {
     const bool first = lua_type(L, -2) == LUA_TNUMBER && lua_tonumber(L, -2) == 1;
     const bool is_delta = lua_type(L, -2) == LUA_TSTRING && std::string(lua_tostring(L, -2)) == "delta";
     if (first && lua_type(L, -1) == LUA_TSTRING) name = lua_tostring(L, -1);
-    else if (is_delta && lua_type(L, -1) == LUA_TNUMBER) delta = lua_tonumber(L, -1);
+    else if (is_delta && lua_type(L, -1) == LUA_TNUMBER) delta = lua_tonumber(L, -1), has_delta = true;
     else {
       lua_pop(L, 2);
       throw Error(std::string(where) + ": valid entries are [1] = the loss's name and delta = a number (huber)");
@@ -106,7 +107,8 @@ nn::Loss read_loss(lua_State* L, int idx) {
   }
   if (name.empty()) throw Error(std::string(where) + ": the table's first entry must be the loss's name");
   nn::Loss loss = nn::parse_loss(name, delta);
-  if (loss.kind != nn::LossKind::huber && delta != 1.0) throw Error(std::string(where) + ": only huber takes a delta");
+  // Given at all, not only where it differs from the default: {"l2", delta = 1} was taken.
+  if (loss.kind != nn::LossKind::huber && has_delta) throw Error(std::string(where) + ": only huber takes a delta");
   return loss;
 }
 
