@@ -229,6 +229,12 @@ int w_shade(lua_State* L) {
   Light light = check_light(L, li, "model:shade option 'light'");
   lua_pop(L, 1);
   if (!o.has("normal") || !o.has("view")) throw Error("model:shade needs 'normal' and 'view'");
+  // What the model reads must be given (a textured model without `base` shaded white).
+  for (const std::string& a : p.spec().attributes) {
+    const std::string key = a == "base_color" ? "base" : a;
+    if (!o.has(key.c_str()))
+      throw Error("model:shade: the model " + p.spec().name + " reads the attribute '" + a + "': give " + key + " = {...}");
+  }
   shading::Surface s = shading::make_surface(light, vec3_option(o, "normal", {0, 0, 0}), vec3_option(o, "view", {0, 0, 0}));
   s.base_color = vec3_option(o, "base", glm::dvec3(1.0));
   if (o.has("uv")) {
