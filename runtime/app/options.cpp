@@ -51,6 +51,8 @@ Options parse_options(int argc, char** argv) {
     for (; i < argc; ++i) o.script_args.push_back(argv[i]);
   }
   if (o.script.empty() && !o.help && !o.version && !o.gl_info) throw std::invalid_argument("no script given");
+  if (o.size_given && !o.window && !o.watch)
+    throw std::invalid_argument("--size is the window's (or live mode's view's) size: give --window or --watch with it");
   return o;
 }
 
