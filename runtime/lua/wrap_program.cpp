@@ -10,6 +10,7 @@
 #include "gl/render_target.h"
 #include "lua/binding.h"
 #include "lua/module.h"
+#include "io/text.h"
 #include "lua/program_bindings.h"
 
 namespace sn::lua {
@@ -111,12 +112,27 @@ void apply_bindings(lua_State* L, const Options& o, gl::Program& p) {
     if (!lua_istable(L, bi)) throw Error(o.where("buffers") + ": table expected");
     if (std::string shared = p.shared_storage_binding(); !shared.empty())
       throw Error(o.where("buffers") + ": " + p.name() + ": " + shared + "; give each block its own binding");
+    // Every block gets a buffer of this call, and every buffer a block: a block left out read
+    // whatever an earlier dispatch had bound there, and an extra buffer was dropped.
+    const auto& blocks = p.storage_blocks();
+    auto block_list = [&] {
+      std::string s;
+      for (const auto& b : blocks) s += (s.empty() ? "" : ", ") + b.name + " at " + std::to_string(b.binding);
+      return s.empty() ? std::string("none") : s;
+    };
+    std::set<GLuint> bound;
     lua_pushnil(L);
     while (lua_next(L, bi)) {
       auto& buf = check<gl::Buffer>(L, -1, "Buffer");
       GLuint binding;
       if (lua_type(L, -2) == LUA_TNUMBER) {
         binding = GLuint(lua_tonumber(L, -2) - 1);
+        bool found = false;
+        for (const auto& b : blocks) found = found || GLuint(b.binding) == binding;
+        if (!found)
+          throw Error(o.where("buffers") + ": buffer " + io::number_text(lua_tonumber(L, -2)) + " binds binding " +
+                      std::to_string(binding) + ", where " + p.name() + " has no buffer block (its blocks and bindings: " +
+                      block_list() + ")");
       } else {
         std::string name = lua_tostring(L, -2);
         GLuint index = glGetProgramResourceIndex(p.id(), GL_SHADER_STORAGE_BLOCK, name.c_str());
@@ -127,8 +143,14 @@ void apply_bindings(lua_State* L, const Options& o, gl::Program& p) {
         binding = GLuint(b);
       }
       glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, buf.id());
+      bound.insert(binding);
       lua_pop(L, 1);
     }
+    for (const auto& b : blocks)
+      if (!bound.count(GLuint(b.binding)))
+        throw Error(o.where("buffers") + ": " + p.name() + "'s buffer block '" + b.name + "' (binding " +
+                    std::to_string(b.binding) + ") has no buffer: give it one, as buffers[" + std::to_string(b.binding + 1) +
+                    "] or buffers." + b.name);
   }
   lua_pop(L, 1);
 
