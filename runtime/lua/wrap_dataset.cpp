@@ -260,7 +260,11 @@ int w_subset(lua_State* L) {
       const auto at = a.size() == 1 ? letters.find(a[0]) : std::string::npos;
       if (at == std::string::npos)
         throw Error(w.where("axis") + ": unknown axis '" + a + "' (valid: x, y, z, u, v or a 1-based index)");
-      f.component = int(at % 3);  // u, v are components 1, 2 like x, y
+      // u, v name uv's components 1, 2 as x, y (and z) name the others' ('u' of a normal was taken as x).
+      if ((f.input == "uv") != (at >= 3))
+        throw Error(w.where("axis") + ": input '" + f.input + "' has the axes " + (f.input == "uv" ? "u, v" : "x, y, z") +
+                    " (or a 1-based index), not '" + a + "'");
+      f.component = int(at % 3);
     } else if (lua_isnil(L, ai)) {
       throw Error(w.where("axis") + " is required (x, y, z, u, v or a 1-based index)");
     } else {
