@@ -77,7 +77,7 @@ function Progress:update(done, best, finished)
   if not self.anchor and done > self.start_done then self.anchor = { t = now, done = done } end
   if self.tty then
     -- Redraw at most 10 times a second (and always at the end).
-    if now - self.last_print < 0.1 and self.done < self.total then return end
+    if now - self.last_print < 0.1 and self.finished < self.total then return end
     self.last_print = now
     local line = bar(self.total > 0 and self.done / self.total or 1, 20) .. " " .. self:text()
     if #line > self.width - 1 then line = line:sub(1, self.width - 1) end
@@ -85,7 +85,7 @@ function Progress:update(done, best, finished)
     self.last_len = #line
     self.out:flush()
   else
-    local final = self.done >= self.total
+    local final = self.finished >= self.total  -- runs finished: work done in flight is not the end
     if now - self.last_print >= self.every or (final and not self.final_printed) then
       self.out:write(self:text(), "\n")
       self.out:flush()

@@ -224,6 +224,13 @@ assert(pe:text():find("ETA 1m30s", 1, true), "ETA from the training's rate (1 ru
 -- and Ctrl-C kept 0 of them).
 pe:update(4.5, nil, 2)
 assert(pe:text():find("e 2/10 runs (45% done)", 1, true), "runs finished and work done apart: " .. pe:text())
+-- The last line is printed when the runs have finished, not when the work in flight reaches the
+-- end (a log ended "0/12 runs (100% done)" and never said 12/12).
+sink.text = ""
+local pf = Progress.new { total = 2, label = "f", tty = false, every = 1e9, out = sink }
+pf:update(2, nil, 0)
+pf:update(2)
+assert(sink.text:find("f 2/2 runs", 1, true), "the final line: " .. sink.text)
 sink.text = ""
 local prt = Progress.new { total = 10, label = "x", tty = true, out = sink }
 prt:update(5)
