@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "io/hash.h"
 #include "io/text.h"
 
 namespace sn::lua {
@@ -144,6 +145,21 @@ std::string shadenet_name_of(lua_State* L, int idx) {
 }
 
 }  // namespace
+
+void push_definition_key(lua_State* L, const std::vector<std::string>& parts) {
+  if (parts.empty()) {
+    lua_pushnil(L);
+    return;
+  }
+  io::Fnv1a f;
+  for (const std::string& p : parts) {
+    const uint64_t n = p.size();
+    f.bytes(&n, sizeof n);
+    f.text(p);
+  }
+  const std::string key = io::hex64(f.h);
+  lua_pushlstring(L, key.data(), key.size());
+}
 
 std::string type_name_at(lua_State* L, int idx) {
   // An object's constructor left uncalled (target = sn.lighting.phong): say how to call it.

@@ -78,6 +78,11 @@ void push(lua_State* L, std::shared_ptr<T> p, const char* type) {
 void* test_type(lua_State* L, int idx, const char* type);
 std::string type_name_at(lua_State* L, int idx);
 
+// Pushes a user definition's key (16 hex digits hashing `parts`, each length-prefixed), or nil
+// for a built-in (`parts` empty): what sn.lighting.key and the like return, so an experiment's
+// run records tell a changed definition from the one they were trained with.
+void push_definition_key(lua_State* L, const std::vector<std::string>& parts);
+
 template <class T>
 std::shared_ptr<T>& check_box(lua_State* L, int idx, const char* type) {
   void* ud = test_type(L, idx, type);

@@ -63,10 +63,19 @@ int w_names(lua_State* L) {
   return 1;
 }
 
+// sn.activation.key(name) -> a user definition's key (its GLSL hashed), nil for a built-in
+int w_key(lua_State* L) {
+  const nn::ActivationDef& d = nn::activation_def(nn::parse_activation(check_string(L, 1, "sn.activation.key name")));
+  push_definition_key(L, d.simd >= 0 ? std::vector<std::string>{}
+                                      : std::vector<std::string>{d.glsl, d.grad, d.grad_from_output});
+  return 1;
+}
+
 }  // namespace
 
 void open_activation(lua_State* L) {
-  static const luaL_Reg fns[] = {SN_FN("define", w_define), SN_FN("names", w_names), {nullptr, nullptr}};
+  static const luaL_Reg fns[] = {SN_FN("define", w_define), SN_FN("names", w_names), SN_FN("key", w_key),
+                                 {nullptr, nullptr}};
   lua_newtable(L);
   luaL_register(L, nullptr, fns);
   lua_setfield(L, -2, "activation");

@@ -288,8 +288,21 @@ void push_encodings(lua_State* L, const std::vector<nn::InputEncoding>& encoding
   }
 }
 
+// sn.encoding.key(name) -> a user definition's key (its GLSL and count hashed), nil for a built-in
+int w_key(lua_State* L) {
+  const nn::Encoding e = nn::parse_encoding(check_string(L, 1, "sn.encoding.key name"));
+  const nn::EncodingDef& d = nn::encoding_def(e);
+  push_definition_key(L, nn::is_builtin(e) ? std::vector<std::string>{}
+                                           : std::vector<std::string>{d.glsl, d.count, std::to_string(d.count_min),
+                                                                      std::to_string(d.count_max),
+                                                                      std::to_string(d.count_default),
+                                                                      std::to_string(d.input_width)});
+  return 1;
+}
+
 void open_encoding(lua_State* L) {
-  static const luaL_Reg fns[] = {SN_FN("define", w_define), SN_FN("names", w_names), {nullptr, nullptr}};
+  static const luaL_Reg fns[] = {SN_FN("define", w_define), SN_FN("names", w_names), SN_FN("key", w_key),
+                                 {nullptr, nullptr}};
   lua_newtable(L);
   luaL_register(L, nullptr, fns);
   lua_setfield(L, -2, "encoding");

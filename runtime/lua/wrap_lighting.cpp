@@ -387,8 +387,16 @@ int w_convert(lua_State* L) {
   return 0;
 }
 
+// sn.lighting.key(name) -> a user definition's key (its GLSL hashed), nil for a built-in
+int w_key(lua_State* L) {
+  const shading::ModelPtr m = shading::find_model(check_string(L, 1, "sn.lighting.key name"));
+  push_definition_key(L, m->builtin ? std::vector<std::string>{} : std::vector<std::string>{m->glsl_text()});
+  return 1;
+}
+
 const luaL_Reg kLightingFns[] = {
     SN_FN("define", w_define),
+    SN_FN("key", w_key),
     SN_FN("check", w_check),
     SN_FN("new", w_new),
     SN_FN("models", w_models),

@@ -151,21 +151,39 @@ end
 
 -- The scene for options `o` (cached per process by its options).
 exp.scene_keys = { "mesh", "size", "views", "elevation", "light", "poses" }
+-- A mesh given as a value (not a path) is keyed by its identity: JSON cannot hold it.
+local mesh_ids, mesh_count = setmetatable({}, { __mode = "k" }), 0
 function E:scene(o)
   local so = self:scene_options(options.check(o or {}, "E:scene", exp.scene_keys))
-  local key = json.encode(so)
+  local key_options = so
+  if type(so.mesh) == "userdata" then
+    if not mesh_ids[so.mesh] then
+      mesh_count = mesh_count + 1
+      mesh_ids[so.mesh] = "mesh value " .. mesh_count
+    end
+    key_options = { mesh = mesh_ids[so.mesh] }
+    for k, v in pairs(so) do if k ~= "mesh" then key_options[k] = v end end
+  end
+  local key = json.encode(key_options)
   if not self.scenes[key] then
     self.scenes[key] = self:time("scene", exp.make_scene, so)
   end
   return self.scenes[key], so
 end
 
--- The lighting model `spec` names: "phong", "ggx", "toon3", "textured_phong" or
--- { name = "ggx", params = {...} }.
+-- The lighting model `spec` names: "phong", "ggx", "toon3", "textured_phong" (or a model of
+-- one's own, by name), { name = "ggx", params = {...} } (or { "ggx", {...} }), or a Lighting
+-- value itself.
 function exp.model(spec)
-  if (type(spec) == "string" and spec or spec.name) == "ggx" then exp.ggx_used = true end
-  if type(spec) == "string" then return sn.lighting.new(spec, exp.model_params[spec] or {}) end
-  return sn.lighting.new(spec.name, spec.params or exp.model_params[spec.name] or {})
+  if type(spec) == "userdata" then return spec end
+  local name = type(spec) == "string" and spec or type(spec) == "table" and (spec.name or spec[1])
+  if type(name) ~= "string" then
+    options.error("a lighting model expected (a name, { name = ..., params = {...} } or a Lighting value), got "
+                  .. type(spec))
+  end
+  if name == "ggx" then exp.ggx_used = true end
+  local params = type(spec) == "table" and (spec.params or spec[2]) or nil
+  return sn.lighting.new(name, params or exp.model_params[name] or {})
 end
 
 -- GGX ground truths (--ggx). The thesis prints no GGX parameters; the one number it gives about
@@ -195,19 +213,25 @@ exp.model_params = {
 --   -> the dataset's description (what a run's config records); given a description, returns it.
 exp.data_keys = { "model", "inputs", "color", "samples", "split", "seed", "data", "mesh", "size", "views",
                   "elevation", "light", "poses" }
-exp.desc_keys = { "model", "truth", "inputs", "color", "samples", "split", "seed", "scene" }
+exp.desc_required = { "model", "truth", "inputs", "color", "samples", "split", "seed", "scene" }
+exp.desc_keys = { "model", "truth", "truth_definition", "inputs", "color", "samples", "split", "seed", "scene" }
 function E:data_desc(o)
   o = o or {}
   if type(o) == "table" and o.scene then  -- already a description
-    return options.check(o, "E:data_desc (a description)", exp.desc_keys, exp.desc_keys)
+    return options.check(o, "E:data_desc (a description)", exp.desc_keys, exp.desc_required)
   end
   options.check(o, "E:data_desc", exp.data_keys)
-  local model = o.model or "phong"
+  local truth = exp.model(o.model or "phong")
+  -- A Lighting value is recorded as its name and parameters (a run's config is JSON).
+  local model = type(o.model) == "userdata" and { name = truth:name(), params = truth:params() } or o.model or "phong"
   return {
     model = model,
     -- Every parameter of the ground truth as the runtime has it: a changed default is a new
     -- experiment, never a reused result.
-    truth = tostring(exp.model(model)),
+    truth = tostring(truth),
+    -- A user's model by its GLSL too (nil for a built-in): redefined under the same name, its
+    -- runs' records were reused.
+    truth_definition = sn.lighting.key(truth:name()),
     inputs = o.inputs or { "normal", "view" },
     color = o.color or "rgb",
     samples = o.samples or self:pick(8000, 64149),
@@ -480,6 +504,16 @@ function exp.run(o)
                   .. " (give E:data_desc{...}'s result)")
   end
   local adam = o.adam or exp.adam
+  -- The keys of a user's activations and encodings (their GLSL; nil for built-ins): redefined
+  -- under the same names, their runs' records were reused. (A name sn.mlp will refuse is left to it.)
+  local definitions = {}
+  local function note(kind, name)
+    local ok, key = pcall(sn[kind].key, name)
+    if ok and key then definitions[kind .. " " .. name] = key end
+  end
+  note("activation", o.activation or "tanh")
+  if o.output_activation then note("activation", o.output_activation) end
+  for _, e in pairs(o.encoding or {}) do note("encoding", type(e) == "table" and e[1] or e) end
   return {
     id = o.id,
     config = {
@@ -503,6 +537,7 @@ function exp.run(o)
       backend = o.backend,               -- nil: the script's --backend
       job = o.alone and o.id or nil,     -- alone: trained in a job of its own (for timings)
       copies = o.copies,                 -- train this many networks (seeds seed, seed+1, ...) in its job
+      definitions = next(definitions) and definitions or nil,  -- nil (built-ins only) keeps older configs' keys
     },
   }
 end
