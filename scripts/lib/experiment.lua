@@ -728,12 +728,19 @@ function E:sweep(runs, o)
       if sn.fs.exists(sweep:file(r)) then other = other + 1 end
     end
     if missing > 0 then
-      io.stderr:write(string.format("%s: %d of %d runs are not among the merged run files%s; the table shows – for them\n",
-                                    self.name, missing, #runs,
-                                    other > 0 and string.format(" (%d of them are there with another configuration: "
-                                                                .. "run with other options or by another version of "
-                                                                .. "the script)", other)
-                                      or " (a shard that is missing, unfinished or stopped?)"))
+      local ids = {}
+      for i = 1, math.min(#pending, 8) do ids[i] = pending[i].id end
+      io.stderr:write(string.format("%s: %d of %d runs are not among the merged run files (%s%s%s); a cell is the "
+                                    .. "median of the runs there, – where there are none\n",
+                                    self.name, missing, #runs, table.concat(ids, ", "), #pending > 8 and ", ..." or "",
+                                    other > 0 and string.format("; %d of them are there with another configuration: "
+                                                                .. "run with other options, by another version of "
+                                                                .. "the script, or unreadable", other)
+                                      or "; a shard that is missing, unfinished or stopped?"))
+      -- Every table says so at its top (it looked complete, its cells medians of fewer seeds).
+      self.R.partial = string.format("**Partial results (merged):** %d of %d runs are not among the merged shards' "
+                                     .. "run files; a cell is the median of the runs there, – where there are none. "
+                                     .. "Merge again with every shard finished.", missing, #runs)
     end
     local by_id = {}
     for _, rec in ipairs(sweep:records()) do by_id[rec.id] = rec end

@@ -64,6 +64,11 @@ assert(out:find("72 run files from 2 folders"), "merge copies both shards' runs:
 assert(C.read(M .. "/table.csv") == C.read(A .. "/table.csv"), "shard + merge = unsharded table")
 local ra, rm = C.run_results(A), C.run_results(M)
 for id, r in pairs(ra) do assert(rm[id] == r, "run " .. id .. " differs after merging") end
+-- One shard alone, merged: its table says it is partial and stderr names runs left out (it
+-- looked complete, its cells medians of one seed, and stderr promised – marks).
+out = C.ok("scripts/merge.lua", { S1, "--out", root .. "/half" })
+assert(out:find("36 of 72 runs are not among the merged run files %(L02%-W04%-s01, ") and
+       C.read(root .. "/half/table.md"):find("**Partial results (merged):** 36 of 72 runs", 1, true), out)
 
 -- Shards run with --data and --ggx merge into the table those options give: merge.lua re-runs
 -- the experiment with the options the shards' run.json records (Table 4.3: 8 quick runs).
