@@ -33,6 +33,38 @@ end
 
 -- ---- start ----------------------------------------------------------------------------------
 
+-- A results folder holds one experiment, in one mode, on one choice of data: their run ids are
+-- the same, so a second one there overwrote the first's records and tables without a word (a
+-- smoke run after a full Table 4.1 retrained 72 of its 360 runs; Table 4.1 into Table 4.2's
+-- folder replaced all 72). experiment.json says which, from the start (run.json, written at the
+-- end, was missing after a kill -9); writing it also finds an unwritable folder before any
+-- training. Shards of one sweep may share a folder: they agree on all of it.
+function exp.claim_folder(R, name, opts)
+  local mine = { experiment = name, quick = opts.quick, options = { data = opts.data or "poses", ggx = opts.ggx or "thesis" } }
+  local function describe(e)
+    return string.format("%s%s (--data %s, --ggx %s)", e.experiment, e.quick and " --quick" or "",
+                         e.options and e.options.data or "poses", e.options and e.options.ggx or "thesis")
+  end
+  for _, file in ipairs { "experiment.json", "run.json" } do  -- run.json: a folder from before experiment.json
+    local text = results.read_file(R:path(file))
+    local ok, there = pcall(json.decode, text or "", R:path(file))
+    if text and ok and type(there) == "table" and there.experiment then
+      there.options = type(there.options) == "table" and there.options or {}
+      if describe(there) ~= describe(mine) then
+        io.stderr:write(string.format("%s holds the results of %s; %s there would overwrite them: give it its own "
+                                      .. "--out DIR\n", R.dir, describe(there), describe(mine)))
+        os.exit(2)
+      end
+      break
+    end
+  end
+  local ok, err = pcall(results.write_json, R:path("experiment.json"), mine)
+  if not ok then
+    io.stderr:write(string.format("%s: cannot write its results folder: %s\n", name, tostring(err)))
+    os.exit(1)
+  end
+end
+
 -- exp.start(name, arg [, { flags = {...extra cli flags}, backend = "auto" }]) -> E
 function exp.start(name, args, o)
   o = options.check(o or {}, "exp.start", { "flags", "backend" })
@@ -41,17 +73,7 @@ function exp.start(name, args, o)
   -- scripts/merge.lua reports on every run: a Slurm array task it runs in picks no shard.
   local opts = cli.parse_or_exit(list, name, o.flags, exp.report_only and function() return nil end or nil)
   local R = results.open(opts, name)
-  -- A quick run and a full one share run ids: in one folder, one would overwrite the other's
-  -- records and tables (a smoke test after a full run retrained 72 of Table 4.1's 360 runs).
-  if sn.fs.exists(R:path("run.json")) == "file" then
-    local ok, before = pcall(json.decode, results.read_file(R:path("run.json")), R:path("run.json"))
-    if ok and type(before) == "table" and before.quick ~= nil and before.quick ~= opts.quick then
-      io.stderr:write(string.format("%s holds a %s run's results; a %s run there would overwrite them: give it its own "
-                                    .. "--out DIR\n", R.dir, before.quick and "quick" or "full",
-                                    opts.quick and "quick" or "full"))
-      os.exit(2)
-    end
-  end
+  exp.claim_folder(R, name, opts)
   local self = setmetatable({
     name = name, opts = opts, quick = opts.quick, R = R, dir = R.dir, args = list,
     -- the script as it was run (a user's own experiment may live anywhere); merge.lua runs it

@@ -37,11 +37,17 @@ assert(below >= 30, below .. " of 36 architectures beat the constant predictor b
 local function cell(l, w) for _, r in ipairs(rows) do if r.layers == l and r.width == w then return r.val_mse end end end
 assert(cell(12, 12) < cell(2, 2) / 1.4, "12x12 learns Phong better than 2x2")
 assert(info.quick == true and info.backend.used == "cpu" and info.environment.gl.renderer, "run.json records mode, backend, renderer")
--- A full run does not go into a quick run's folder (nor the other way): their run ids are the
--- same, and one overwrote the other's records and tables.
+-- A full run does not go into a quick run's folder, nor another experiment or another choice of
+-- data: their run ids are the same, and one overwrote the other's records and tables.
 local code, refused = C.run(script, { "--out", A })
-assert(code == 2 and refused:find(A .. " holds a quick run's results; a full run there would overwrite them: give it its "
-                                  .. "own --out DIR", 1, true), tostring(code) .. ": " .. refused)
+assert(code == 2 and refused:find(A .. " holds the results of table_4_1_phong --quick (--data poses, --ggx thesis); "
+                                  .. "table_4_1_phong (--data poses, --ggx thesis) there would overwrite them: give it "
+                                  .. "its own --out DIR", 1, true), tostring(code) .. ": " .. refused)
+code, refused = C.run("scripts/table_4_2_ggx.lua", { "--quick", "--out", A })
+assert(code == 2 and refused:find("; table_4_2_ggx --quick (--data poses, --ggx thesis) there would overwrite", 1, true),
+       refused)
+code, refused = C.run(script, { "--quick", "--data", "cloth", "--out", A })
+assert(code == 2 and refused:find("; table_4_1_phong --quick (--data cloth, --ggx thesis) there", 1, true), refused)
 local md = C.read(A .. "/table.md")
 assert(md:find("| hidden layers \\ width |", 1, true) and md:find("(0.002158)", 1, true), "markdown grid with thesis values")
 assert(not md:find("GGX", 1, true), "a Phong table's notes name no GGX")
