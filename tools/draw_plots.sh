@@ -8,7 +8,9 @@ drawn=0
 while IFS= read -r -d '' gp; do
   png=${gp%.gp}.png
   [ -f "$png" ] && [ "$png" -nt "$gp" ] && continue
-  (cd "$(dirname "$gp")" && gnuplot "$(basename "$gp")" && mv "$(basename "$png").tmp.png" "$(basename "$png")") ||
+  # Drawn to a temporary name and renamed, so a failure never leaves a half-written PNG.
+  tmp=".$(basename "$png").tmp$$"
+  (cd "$(dirname "$gp")" && gnuplot -e "out = '$tmp'" "$(basename "$gp")" && mv "$tmp" "$(basename "$png")") ||
     { echo "draw_plots.sh: gnuplot failed on $gp" >&2; exit 1; }
   echo "$png"
   drawn=$((drawn + 1))

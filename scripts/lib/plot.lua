@@ -20,13 +20,23 @@ local function plots_later()
 end
 local later = plots_later()  -- checked when a script starts, not after its work
 
-local function run_gnuplot(script, png)
+-- This process's id: a plot's temporary name is its own (".NAME.png.tmpPID", which
+-- sn.fs.remove_stale_temporaries knows), so two processes plotting into one folder never take
+-- each other's file (a fixed NAME.png.tmp.png made one of two fail half the time).
+local ffi = require "ffi"
+pcall(ffi.cdef, "int getpid(void);")
+local pid = tostring(ffi.C.getpid())
+
+-- Runs `script` (written beside the PNG as NAME.gp, which draws NAME.png when run by hand) with
+-- its output at `tmp`, a name in the same folder.
+local function run_gnuplot(script, png, tmp)
   local gp = png:gsub("%.png$", "") .. ".gp"
   results.write_file(gp, script)
   if later then return nil end
   local dir, name = gp:match("^(.*)/([^/]*)$")
   -- The output through a pipe, the exit status as its last line (LuaJIT's close does not give it).
-  local pipe = assert(io.popen(string.format("cd %q && gnuplot %q 2>&1; printf '\\n%%d\\n' $?", dir or ".", name or gp)))
+  local pipe = assert(io.popen(string.format("cd %q && gnuplot -e %q %q 2>&1; printf '\\n%%d\\n' $?", dir or ".",
+                                             string.format("out = '%s'", tmp), name or gp)))
   local out = pipe:read("*a")
   pipe:close()
   local status
@@ -75,7 +85,9 @@ function plot.lines(p)
     -- noenhanced: titles, labels and series names are plain text ("my_sweep", "L*a*b*", "x^2"),
     -- never gnuplot's markup for sub- and superscripts.
     string.format("set terminal pngcairo size %d,%d font 'DejaVu Sans,10' noenhanced", p.width or 800, p.height or 520),
-    "set output " .. q(png_name .. ".tmp.png"),
+    -- `out` when the caller sets it (gnuplot -e "out = '...'"), else the PNG beside the script.
+    "if (!exists('out')) out = " .. q(png_name),
+    "set output out",
     "set datafile separator ','",
     -- The key goes outside the plot area by default: inside, its opaque box hid the points
     -- under it (the thesis' value at the top right of Table 4.2's plot).
@@ -106,8 +118,10 @@ function plot.lines(p)
   end
   g[#g + 1] = "plot " .. table.concat(parts, ", \\\n     ")
   g[#g + 1] = "unset output"
-  if not run_gnuplot(table.concat(g, "\n") .. "\n", p.path) then return (p.path:gsub("%.png$", ".gp")), dropped end
-  local ok, err = os.rename(p.path .. ".tmp.png", p.path)
+  local tmp_name = "." .. png_name .. ".tmp" .. pid
+  local tmp = p.path:sub(1, #p.path - #png_name) .. tmp_name
+  if not run_gnuplot(table.concat(g, "\n") .. "\n", p.path, tmp_name) then return (p.path:gsub("%.png$", ".gp")), dropped end
+  local ok, err = os.rename(tmp, p.path)
   if not ok then error("cannot write " .. p.path .. ": " .. tostring(err), 0) end
   return p.path, dropped
 end

@@ -244,6 +244,11 @@ local img = sn.image.load(png)
 local w, h = img:size()
 assert(w == 800 and h == 520, "plot size")
 assert(results.read_file(tmp .. "/plots/c.csv") == "series,x,y,label\na,1,0.1,\na,3,0.01,\n", "plot data beside it")
+-- The gnuplot script beside it draws it where it lies when run by hand (it drew c.png.tmp.png,
+-- a name two processes plotting into one folder also shared); no temporary file stays.
+os.remove(png)
+assert(os.execute(("cd %q && gnuplot c.gp"):format(tmp .. "/plots")) == 0 and sn.fs.exists(png) == "file", "c.gp draws c.png")
+for _, f in ipairs(sn.fs.list(tmp .. "/plots")) do assert(not f:find("tmp"), "a temporary file left: " .. f) end
 -- The key never hides data: a red point near the top right corner, where an inside key sat, is
 -- drawn beside the key's own red sample (two discs, not one).
 local function red_pixels(path)

@@ -1,5 +1,6 @@
 set terminal pngcairo size 1100,520 font 'DejaVu Sans,10' noenhanced
-set output "fig_4_11_activations.png.tmp.png"
+if (!exists('out')) out = "fig_4_11_activations.png"
+set output out
 set datafile separator ','
 set key outside right top box opaque
 set grid xtics ytics lc rgb '#dddddd'

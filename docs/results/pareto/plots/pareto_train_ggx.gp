@@ -1,5 +1,6 @@
 set terminal pngcairo size 900,600 font 'DejaVu Sans,10' noenhanced
-set output "pareto_train_ggx.png.tmp.png"
+if (!exists('out')) out = "pareto_train_ggx.png"
+set output out
 set datafile separator ','
 set key outside right top box opaque
 set grid xtics ytics lc rgb '#dddddd'

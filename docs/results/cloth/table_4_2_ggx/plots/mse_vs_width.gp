@@ -1,5 +1,6 @@
 set terminal pngcairo size 800,520 font 'DejaVu Sans,10' noenhanced
-set output "mse_vs_width.png.tmp.png"
+if (!exists('out')) out = "mse_vs_width.png"
+set output out
 set datafile separator ','
 set key outside right top box opaque
 set grid xtics ytics lc rgb '#dddddd'
