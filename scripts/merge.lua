@@ -102,10 +102,12 @@ if not out then
   out = parent
 end
 
--- Copy the run files. The same run in two folders must hold the same result (a sweep is
--- deterministic); a different one means two different experiments were mixed up.
+-- Copy the run files. The same run in two shard folders must hold the same configuration (a
+-- different one means two different experiments were mixed up); the first one's record is kept.
+-- A record the output folder held before the merge gives way to the shards' (it was kept over
+-- them: an earlier gl run's records over the cpu shards merged, and the table came out empty).
 sn.fs.mkdir(out .. "/runs")
-local copied, same = 0, 0
+local copied, same, replaced, from_shards = 0, 0, 0, {}
 for _, d in ipairs(dirs) do
   local rd = d .. "/runs"
   if sn.fs.exists(rd) == "folder" then
@@ -113,22 +115,30 @@ for _, d in ipairs(dirs) do
       if f:match("%.json$") and not f:match("^%.") then
         local text = results.read_file(rd .. "/" .. f)
         local target = out .. "/runs/" .. f
-        local have = results.read_json(target)
-        if have then
-          local new = results.read_json(rd .. "/" .. f)
-          if json.encode(have.config) ~= json.encode(new.config) then
-            error("merge.lua: " .. rd .. "/" .. f .. " and " .. target .. " hold the same run with different configurations", 0)
+        if from_shards[f] then
+          local have, new = results.read_json(target), results.read_json(rd .. "/" .. f)
+          if have and new and json.encode(have.config) ~= json.encode(new.config) then
+            error("merge.lua: " .. rd .. "/" .. f .. " and " .. from_shards[f] .. "/runs/" .. f ..
+                  " hold the same run with different configurations", 0)
           end
           same = same + 1
         else
-          results.write_file(target, text)
-          copied = copied + 1
+          local before = results.read_file(target)
+          if before == text then
+            same = same + 1
+          else
+            results.write_file(target, text)
+            if before then replaced = replaced + 1 else copied = copied + 1 end
+          end
         end
+        from_shards[f] = from_shards[f] or d
       end
     end
   end
 end
-print(string.format("merge.lua: %d run files from %d folders into %s/runs (%d already there)", copied, #dirs, out, same))
+print(string.format("merge.lua: %d run files from %d folders into %s/runs (%d already there%s)", copied, #dirs, out, same,
+                    replaced > 0 and string.format("; %d records the folder held before replaced by the shards'", replaced)
+                      or ""))
 
 -- The experiment itself writes the merged table: nothing is left to train.
 arg = { [0] = script, [-1] = arg[-1], "--out", out }

@@ -70,6 +70,15 @@ assert(out:find("72 run files from 2 folders"), "merge copies both shards' runs:
 assert(C.read(M .. "/table.csv") == C.read(A .. "/table.csv"), "shard + merge = unsharded table")
 local ra, rm = C.run_results(A), C.run_results(M)
 for id, r in pairs(ra) do assert(rm[id] == r, "run " .. id .. " differs after merging") end
+-- A record the output folder held before a merge gives way to the shards' (an earlier run's was
+-- kept over them, and the merged table came out wrong or empty).
+local run_file = M .. "/runs/L02-W02-s01.json"
+local rec = json.decode(C.read(run_file), run_file)
+rec.result.best_val_mse = 0.5
+results.write_file(run_file, json.encode(rec))
+out = C.ok("scripts/merge.lua", { S1, S2, "--out", M })
+assert(out:find("(71 already there; 1 records the folder held before replaced by the shards')", 1, true), out)
+assert(C.read(M .. "/table.csv") == C.read(A .. "/table.csv"), "the shards' record back in the table")
 -- One shard alone, merged: its table says it is partial and stderr names runs left out (it
 -- looked complete, its cells medians of one seed, and stderr promised – marks).
 out = C.ok("scripts/merge.lua", { S1, "--out", root .. "/half" })
