@@ -46,8 +46,9 @@ function cli.parse_shard(text, where)
   local i, n = tostring(text):match("^(%d+)/(%d+)$")
   i, n = tonumber(i), tonumber(n)
   if not i then error(where .. ": --shard expects i/n (e.g. 2/8), got '" .. tostring(text) .. "'", 0) end
-  if n < 1 or i < 1 or i > n then
-    error(string.format("%s: --shard %d/%d: i must be 1..n and n >= 1", where, i, n), 0)
+  -- (%s, not %d: a count past 2^53 printed as a negative number)
+  if n < 1 or i < 1 or i > n or n > 2 ^ 31 then
+    error(string.format("%s: --shard %s: i must be 1..n and n 1..2^31", where, tostring(text)), 0)
   end
   return { index = i, count = n }
 end

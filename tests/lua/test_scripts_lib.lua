@@ -22,6 +22,8 @@ assert(not ok and err:find("unknown option '%-%-qiuck'") and err:find("%-%-quick
        "unknown flag lists the valid ones: " .. tostring(err))
 ok, err = pcall(cli.parse, { "--shard", "5/4" }, "t", nil, none)
 assert(not ok and err:find("1..n"), "shard out of range: " .. tostring(err))
+ok, err = pcall(cli.parse, { "--shard", "1/99999999999999999999" }, "t", nil, none)
+assert(not ok and err:find("--shard 1/99999999999999999999: i must be 1..n and n 1..2^31", 1, true), tostring(err))
 ok, err = pcall(cli.parse, { "--backend", "cuda" }, "t", nil, none)
 assert(not ok and err:find("valid: cpu, gl, auto"), "bad backend: " .. tostring(err))
 o = cli.parse({ "--ggx", "gold", "--data=cloth" }, "t", nil, none)
