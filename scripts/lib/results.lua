@@ -249,7 +249,8 @@ function results.environment()
     cpu = cpu,
     cpu_threads = cores,
     date = os.date("!%Y-%m-%dT%H:%M:%SZ"),
-    host = os.getenv("HOSTNAME"),
+    -- The kernel's name for the machine (bash does not export HOSTNAME: it was always null).
+    host = (results.read_file("/proc/sys/kernel/hostname") or os.getenv("HOSTNAME") or ""):match("^%s*(.-)%s*$"),
   }
 end
 
