@@ -74,13 +74,28 @@ void check_twin(Encoding kind, const EncodingDef& d) {
       }
 }
 
-// The GLSL against the twin, at the default count and include_input: an input of the required
-// width, else of 1 and 3 components.
+// The GLSL against the twin: at the default count and include_input for an input of the
+// required width, else of 1 and 3 components; at the count's ends and the other include_input
+// for the last of those (one program each). A GLSL right at the default count alone was taken,
+// and cpu and gl then trained other functions.
 void check_glsl(Encoding kind, const EncodingDef& d) {
-  std::vector<int> ws = d.input_width > 0 ? std::vector<int>{d.input_width} : std::vector<int>{1, 3};
-  for (int w : ws) {
-    const InputEncoding e =
-        instance(kind, d, w, d.count.empty() ? 0 : d.count_default, d.has_include_input && d.include_input_default);
+  const std::vector<int> ws = d.input_width > 0 ? std::vector<int>{d.input_width} : std::vector<int>{1, 3};
+  const int n0 = d.count.empty() ? 0 : d.count_default;
+  const bool keep0 = d.has_include_input && d.include_input_default;
+  struct Case {
+    int w, n;
+    bool keep;
+  };
+  std::vector<Case> cases;
+  for (int w : ws) cases.push_back({w, n0, keep0});
+  if (!d.count.empty()) {
+    if (d.count_min != n0) cases.push_back({ws.back(), d.count_min, keep0});
+    if (d.count_max != n0) cases.push_back({ws.back(), d.count_max, keep0});
+  }
+  if (d.has_include_input) cases.push_back({ws.back(), n0, !keep0});
+  for (const Case& c : cases) {
+    const int w = c.w;
+    const InputEncoding e = instance(kind, d, w, c.n, c.keep);
     MlpSpec spec;
     spec.inputs = w;
     spec.encodings = {e};
