@@ -53,5 +53,9 @@ void main() {
 #ifdef SURFACE_BITANGENT
   s.bitangent = safe_normalize(texelFetch(u_bitangent, p, 0).xyz);
 #endif
-  o_color = vec4(lighting(s), 1.0);
+  // A non-finite radiance is marked (alpha -1) for the caller to name, not clamped to a colour:
+  // clamp of NaN is undefined, and it drew as black.
+  vec3 raw = lighting_raw(s);
+  bool finite = !any(isnan(raw)) && !any(isinf(raw));
+  o_color = finite ? vec4(clamp(raw, 0.0, 1.0), 1.0) : vec4(0.0, 0.0, 0.0, -1.0);
 }

@@ -47,7 +47,19 @@ io::Image render_truth(const scene::GBuffer& g, const LightingParams& p, const s
   glBindVertexArray(0);
   glEnable(GL_DEPTH_TEST);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  return out.read(0);
+  io::Image img = out.read(0);
+  // The model's contract is a finite radiance everywhere (a dataset of it refuses one that is
+  // not): a truth render would otherwise hide a broken model in black pixels.
+  std::size_t bad = 0, first = 0;
+  for (std::size_t i = 0; i < std::size_t(img.width) * std::size_t(img.height); ++i)
+    if (img.pixels[i * 4 + 3] < 0.f && bad++ == 0) first = i;
+  if (bad)
+    throw std::invalid_argument("lighting model " + p.spec().name + " gives a NaN or infinite radiance at " +
+                                std::to_string(bad) + " covered pixel" + (bad == 1 ? "" : "s") + " (the first at (" +
+                                std::to_string(first % std::size_t(img.width) + 1) + ", " +
+                                std::to_string(first / std::size_t(img.width) + 1) +
+                                ")); its shade must be finite for every input (sn.lighting.stress finds where)");
+  return img;
 }
 
 }  // namespace sn::shading
