@@ -47,7 +47,7 @@ std::shared_ptr<gl::Program> compile(const ActivationDef& d, const char* what, c
     const std::string include = "mlp/act_hidden.glsl", origin = d.origin + " (" + what + ")";
     for (std::size_t at = log.find(include); at != std::string::npos; at = log.find(include, at + origin.size()))
       log.replace(at, include.size(), origin);
-    throw std::invalid_argument("activation '" + d.name + "': its " + what + " GLSL does not compile:\n" + log);
+    throw std::invalid_argument("activation '" + d.name + "': its " + what + " (GLSL) does not compile:\n" + log);
   }
 }
 
@@ -93,7 +93,7 @@ void check_glsl(const ActivationDef& d) {
       const std::size_t lane = i % 4;
       const double want = twin(i, lane);
       if (agrees(got[i], want)) continue;
-      std::string why = "activation '" + d.name + "': its " + what + " GLSL gives " + io::number_text(got[i]) + " at " +
+      std::string why = "activation '" + d.name + "': its " + what + " (GLSL) gives " + io::number_text(got[i]) + " at " +
                         io::number_text(z[(i / 4 + lane) % z.size()]) + ", its Lua twin " + io::number_text(want);
       for (std::size_t other = 0; other < 4; ++other)
         if (other != lane && agrees(got[i], twin(i, other))) {

@@ -1,4 +1,4 @@
--- expect: activation_compute_only\.lua:6: sn\.activation\.define: activation 'indexed': its glsl GLSL does not compile
+-- expect: activation_compute_only\.lua:6: sn\.activation\.define: activation 'indexed': its glsl \(GLSL\) does not compile
 -- expect: GLSL compile error in shaders/activation_check\.frag
 -- expect: activation_compute_only\.lua:6 activation indexed \(glsl\):1: error: .gl_LocalInvocationIndex. undeclared
 -- GLSL a compute shader accepts but a render's fragment shader does not: refused where defined.
