@@ -44,7 +44,7 @@ local function recorded(info, key)
 end
 
 -- Which experiment, in which mode, on which data: every shard must agree.
-local name, quick, backend, recorded_script
+local name, quick, backend, recorded_script, flags_json, flags
 local options, first_with = {}, {}
 for _, d in ipairs(dirs) do
   if sn.fs.exists(d) ~= "folder" then error("merge.lua: '" .. d .. "' is not a folder", 0) end
@@ -74,6 +74,13 @@ for _, d in ipairs(dirs) do
     end
     options[key], first_with[key] = v, first_with[key] or d
   end
+  -- The script's own flags (exp.start's `flags`): every shard must have been given the same.
+  local given = json.encode(type(info.flags) == "table" and info.flags or {})
+  if flags_json and given ~= flags_json then
+    error(string.format("merge.lua: %s was run with the script's flags %s, %s with %s: their runs are different "
+                        .. "experiments", dirs[1], flags_json, d, given), 0)
+  end
+  flags_json, flags = given, type(info.flags) == "table" and info.flags or {}
   name, quick = info.experiment, info.quick
   recorded_script = recorded_script or info.script or
                     (type(info.command) == "string" and info.command:match("^%S+%s+(%S+%.lua)") or nil)
@@ -150,6 +157,12 @@ end
 if backend then
   arg[#arg + 1] = "--backend"
   arg[#arg + 1] = backend
+end
+local own = {}
+for flag in pairs(flags) do own[#own + 1] = flag end
+table.sort(own)
+for _, flag in ipairs(own) do  -- a flag without a value was recorded as true
+  arg[#arg + 1] = flags[flag] == true and flag or flag .. "=" .. tostring(flags[flag])
 end
 require("lib.experiment").report_only = true
 dofile(script)

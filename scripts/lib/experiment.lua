@@ -74,8 +74,14 @@ function exp.start(name, args, o)
   local opts = cli.parse_or_exit(list, name, o.flags, exp.report_only and function() return nil end or nil)
   local R = results.open(opts, name)
   exp.claim_folder(R, name, opts)
+  -- The script's own flags as given (run.json records them; merge.lua gives them again).
+  local own_flags = {}
+  for _, f in ipairs(o.flags or {}) do
+    local key = f.flag:sub(3):gsub("-", "_")
+    if opts.extra[key] ~= nil then own_flags[f.flag] = opts.extra[key] end
+  end
   local self = setmetatable({
-    name = name, opts = opts, quick = opts.quick, R = R, dir = R.dir, args = list,
+    name = name, opts = opts, quick = opts.quick, R = R, dir = R.dir, args = list, own_flags = own_flags,
     -- the script as it was run (a user's own experiment may live anywhere); merge.lua runs it
     script = args and type(args[0]) == "string" and args[0] or "scripts/" .. name .. ".lua",
     backend = opts.backend or o.backend or "auto",
@@ -1054,6 +1060,7 @@ function E:finish(o)
     quick = self.quick,
     -- what chose the data (scripts/merge.lua re-runs the experiment with them)
     options = { data = self.data_choice, ggx = self.ggx_choice },
+    flags = next(self.own_flags) and self.own_flags or nil,  -- the script's own (exp.start's flags), as given
     shard = self.opts.shard,
     backend = { requested = self.backend, used = backend_used, device = device, runs_per_backend = used.backend,
                 runs_per_device = used.device },

@@ -139,25 +139,28 @@ assert(code ~= 0 and out:find("s1 was run with %-%-quick, [^\n]*s2 without it: t
        "quick and full refused, named the right way round:\n" .. out)
 
 -- An experiment of one's own, outside scripts/: run.json records its real path and merge.lua
--- runs it from there; a one-run figure sweep trains in shard 1 only, and in shard 2 a network
+-- runs it from there, with the script's own flags the shards were given (it dropped them, and
+-- no run matched); a one-run figure sweep trains in shard 1 only, and in shard 2 a network
 -- asked of its missing record is a clear error, not "attempt to index local 'rec'".
 local own, own_dir = C.child("own", [[
 package.path = "scripts/?.lua;" .. package.path
 local exp = require "lib.experiment"
-local E = exp.start("my_own", arg)
+local E = exp.start("my_own", arg, { flags = { { flag = "--lr", value = "X", help = "Adam's learning rate" } } })
 local desc = E:data_desc { model = "phong" }
+local adam = { lr = tonumber(E.opts.extra.lr or exp.adam.lr), beta1 = exp.adam.beta1, beta2 = exp.adam.beta2 }
 local runs = {}
-for seed = 1, 2 do runs[seed] = exp.run { id = "s" .. seed, hidden = { 4 }, seed = seed, epochs = 1, data = desc } end
+for seed = 1, 2 do runs[seed] = exp.run { id = "s" .. seed, hidden = { 4 }, seed = seed, epochs = 1, data = desc, adam = adam } end
 local records = E:sweep(runs)
 local fig = E:sweep { exp.run { id = "fig", hidden = { 4 }, seed = 3, epochs = 1, data = desc, keep_params = true } }
 if not os.getenv("NO_FIGURE") then exp.net_from_record(fig.fig, "fig") end
 E:finish { records = records }
 ]])
-C.ok(own, { "--quick", "--shard", "1/2", "--out", own_dir .. "/s1" })
+C.ok(own, { "--quick", "--lr", "0.001", "--shard", "1/2", "--out", own_dir .. "/s1" })
 assert(C.json(own_dir .. "/s1/run.json").command:find("shadenet " .. own .. " --quick", 1, true), "run.json names the real script")
-code, out = C.run(own, { "--quick", "--shard", "2/2", "--out", own_dir .. "/s2" })
+code, out = C.run(own, { "--quick", "--lr", "0.001", "--shard", "2/2", "--out", own_dir .. "/s2" })
 assert(code ~= 0 and out:find("run 'fig' is not finished in this folder: under %-%-shard i/n"), "a clear error:\n" .. out)
-C.ok(own, { "--quick", "--shard", "2/2", "--out", own_dir .. "/s2" }, { NO_FIGURE = "1" })
+C.ok(own, { "--quick", "--lr=0.001", "--shard", "2/2", "--out", own_dir .. "/s2" }, { NO_FIGURE = "1" })
+assert(C.json(own_dir .. "/s2/run.json").flags["--lr"] == "0.001", "run.json records the script's own flags")
 out = C.ok("scripts/merge.lua", { own_dir .. "/s1", own_dir .. "/s2", "--out", own_dir .. "/merged" })
 assert(C.json(own_dir .. "/merged/run.json").sweeps[1].finished == 2, "the merge ran the script from its folder:\n" .. out)
 
