@@ -192,8 +192,13 @@ SN_INLINE void transpose8(E r[8]) {
   for (int i = 0; i < 8; ++i) r[i] = t[i];
 }
 
-// The sum of a block's 8 lanes, in the order the bias gradient's transposed sums use.
-SN_INLINE float hsum(const v8& v) { return ((v[0] + v[4]) + (v[1] + v[5])) + ((v[2] + v[6]) + (v[3] + v[7])); }
+// The sum of a block's 8 lanes, in the order the bias gradient's transposed sums use, in double:
+// in float, eight squared errors of 4.9e37 overflowed, and the validation MSE was inf (an
+// "exploded" net) where gl's was finite.
+SN_INLINE double hsum_double(const v8& v) {
+  auto d = [&](int i) { return double(v[i]); };
+  return ((d(0) + d(4)) + (d(1) + d(5))) + ((d(2) + d(6)) + (d(3) + d(7)));
+}
 
 // Where a kernel finds everything of one network, or of a pair.
 struct Arena {
@@ -619,7 +624,7 @@ SN_INLINE int step_impl(const View<Mode>& V, const float* const mb[], int batch,
       Vec* dl = V.d(cur);
       // Transposed activations for the outer-product gradient (pad columns stay 0), and the
       // bias gradient: each unit's errors summed over the samples, eight units at a time as
-      // sums of transposed rows (hsum's order).
+      // sums of transposed rows (hsum_double's order).
       const Vec* a = V.act(l);
       float* aT = V.at(l);
       for (int c = 0; c < tpad; c += 8) {
@@ -713,10 +718,10 @@ SN_INLINE double loss_impl(const View<Mode>& V, const float* x, const float* y, 
       sq += lv;
     }
     if constexpr (kLanesOf<Mode> == 16) {  // two blocks of 8, summed as 8-lane kernels sum them
-      sum += double(hsum(v8(__builtin_shufflevector(sq, sq, 0, 1, 2, 3, 4, 5, 6, 7))));
-      sum += double(hsum(v8(__builtin_shufflevector(sq, sq, 8, 9, 10, 11, 12, 13, 14, 15))));
+      sum += hsum_double(v8(__builtin_shufflevector(sq, sq, 0, 1, 2, 3, 4, 5, 6, 7)));
+      sum += hsum_double(v8(__builtin_shufflevector(sq, sq, 8, 9, 10, 11, 12, 13, 14, 15)));
     } else {
-      sum += double(hsum(sq));
+      sum += hsum_double(sq);
     }
   }
   return count ? sum / (double(count) * outputs) : 0.0;

@@ -17,6 +17,7 @@
 #include "gl/buffer_texture.h"
 #include "gl/context.h"
 #include "gl/program.h"
+#include "io/text.h"
 #include "nn/gl_forward.h"
 #include "nn/mlp_per_net.h"
 #include "nn/mlp_shader.h"
@@ -191,7 +192,20 @@ class Job {
   // towards 1), at most the run's steps: from a table, every chunking of the run sees the same.
   void upload_bias_corrections() {
     const long long total = steps_ * cfg_.epochs;
+    // The table's length: until beta^t falls below float's half ulp of 1 (2^-25), for the larger
+    // beta. Refused past 2^25 entries (256 MB; beta 0.999999 needs 1.7e7), before building it:
+    // for beta 0.9999999 and a long job it took 3 GB and 13 s, and more ran out of memory.
+    auto length = [](double beta) { return beta <= 0 ? 1.0 : std::ceil(-25.0 * std::log(2.0) / std::log(beta)) + 1; };
+    const double needed = std::min(double(total), std::max(length(cfg_.beta1), length(cfg_.beta2)));
+    constexpr double kMaxCorrections = 33554432.0;
+    if (needed > kMaxCorrections)
+      throw std::invalid_argument("gl trainer: adam beta1 = " + io::number_text(cfg_.beta1) + ", beta2 = " +
+                                  io::number_text(cfg_.beta2) + " over " + std::to_string(total) +
+                                  " steps need a table of " + io::number_text(needed) +
+                                  " bias corrections, above its 2^25: betas further from 1 (1 - beta >= 1e-6), fewer "
+                                  "epochs, or the cpu backend");
     std::vector<float> bc;
+    bc.reserve(2 * std::size_t(needed));
     for (long long t = 1; t <= total; ++t) {
       float c1 = float(1.0 - std::pow(cfg_.beta1, double(t))), c2 = float(1.0 - std::pow(cfg_.beta2, double(t)));
       if (c1 == 1.0f && c2 == 1.0f) break;

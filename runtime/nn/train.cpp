@@ -91,13 +91,20 @@ void validate(const TrainJob& job) {
   const TrainConfig& c = job.config;
   if (c.epochs < 1) fail("epochs must be at least 1, got " + to_string(c.epochs));
   if (c.batch < 1) fail("batch must be at least 1, got " + to_string(c.batch));
-  if (!(c.lr > 0 && std::isfinite(c.lr))) fail("adam lr must be > 0, got " + io::number_text(c.lr));
-  if (!(c.beta1 >= 0 && c.beta1 < 1)) fail("adam beta1 must be in [0, 1), got " + io::number_text(c.beta1));
-  if (!(c.beta2 >= 0 && c.beta2 < 1)) fail("adam beta2 must be in [0, 1), got " + io::number_text(c.beta2));
+  // The kernels run Adam in float: a setting that rounds to 0 or 1 there (lr 1e-50, beta
+  // 0.99999999) was taken and trained nothing, or blew the net up, without a word.
+  constexpr double kFloatMin = double(std::numeric_limits<float>::min()), kFloatMax = double(std::numeric_limits<float>::max());
+  if (!(c.lr >= kFloatMin && c.lr <= kFloatMax))
+    fail("adam lr must be a normal float (the kernels run in float), 1.1754944e-38 to 3.4028235e38, got " +
+         io::number_text(c.lr));
+  for (auto [name, beta] : {std::pair<const char*, double>{"beta1", c.beta1}, {"beta2", c.beta2}})
+    if (!(beta >= 0 && float(beta) < 1.0f))
+      fail(std::string("adam ") + name + " must be in [0, 1) as a float (the kernels run in float; the largest is " +
+           "0.99999994), got " + io::number_text(beta, 1.0));
   // A normal float: the kernels flush denormals to zero (and run in float), so a smaller eps was
   // 0 there, and a parameter with no gradient went 0/0 at the first step.
   if (!(c.eps >= double(std::numeric_limits<float>::min()) && c.eps <= double(std::numeric_limits<float>::max())))
-    fail("adam eps must be a normal float, at least 1.17549e-38, got " + io::number_text(c.eps));
+    fail("adam eps must be a normal float, at least 1.1754944e-38, got " + io::number_text(c.eps, 1.1754944e-38));
   if (!(c.divergence.factor >= 1))
     fail("divergence_factor must be >= 1 (math.huge turns the rule off), got " + io::number_text(c.divergence.factor));
   if (c.tick && !(c.tick_seconds > 0 && c.tick_seconds <= 3600))
@@ -233,6 +240,10 @@ JobResult train(const TrainJob& job) {
   std::atomic<bool>& stop = job.stop ? *job.stop : own_stop;
   TrainConfig cfg = job.config;
   cfg.stop = &stop;
+  // Adam's settings as the floats the kernels use, so the moments (float) and the bias
+  // corrections (computed in double from these) agree: beta2 0.9999999 made steps 1.83x Adam's.
+  cfg.lr = double(float(cfg.lr)), cfg.beta1 = double(float(cfg.beta1)), cfg.beta2 = double(float(cfg.beta2));
+  cfg.eps = double(float(cfg.eps));
   cfg.divergence.constant_mse = constant_predictor_mse(*job.data);
   // The untrained nets' validation MSE, where they have cpu code (a net whose activation's GLSL
   // does not translate is measured by its backend): one number per net whichever backend trains it.

@@ -1,4 +1,4 @@
--- expect: train_eps_denormal\.lua:6: sn\.train: adam eps must be a normal float, at least 1\.17549e-38, got 1e-39
+-- expect: train_eps_denormal\.lua:6: sn\.train: adam eps must be a normal float, at least 1\.1754944e-38, got 1e-39
 local sn = require "shadenet"
 local data = sn.dataset { x = { { 0, 1 }, { 1, 0 }, { 1, 1 }, { 0, 0 } }, y = { { 1 }, { 1 }, { 0 }, { 0 } }, split = 0.5 }
 local net = sn.mlp { inputs = 2, hidden = { 4 }, outputs = 1 }

@@ -552,8 +552,20 @@ TEST(TrainJob, RejectsBadInputBeforeAnyWork) {
   EXPECT_EQ(job_error(job), "dataset: training input row 4 column 5 is NaN");
   job.data = &d;
   job.config.beta2 = 1.0;
-  EXPECT_EQ(job_error(job), "adam beta2 must be in [0, 1), got 1");
+  EXPECT_EQ(job_error(job),
+            "adam beta2 must be in [0, 1) as a float (the kernels run in float; the largest is 0.99999994), got 1");
+  // Settings that round to 1 or 0 in float trained nothing or blew up without a word.
+  job.config.beta2 = 0.99999999;
+  EXPECT_EQ(job_error(job), "adam beta2 must be in [0, 1) as a float (the kernels run in float; the largest is "
+                            "0.99999994), got 0.99999999");
   job.config.beta2 = 0.9;
+  const double lr0 = job.config.lr;
+  for (double lr : {1e-50, 1e39}) {
+    job.config.lr = lr;
+    EXPECT_EQ(job_error(job).rfind("adam lr must be a normal float (the kernels run in float), 1.1754944e-38 to "
+                                   "3.4028235e38, got ", 0), 0u) << lr;
+  }
+  job.config.lr = lr0;
   job.backend = "vulkan";
   try {
     train(job);
