@@ -20,6 +20,7 @@ namespace {
 
 volatile std::sig_atomic_t g_interrupts = 0;
 volatile std::sig_atomic_t g_first_signal = 0;  // SIGINT or SIGTERM: the one that stopped the work
+bool g_catching = false;  // between sn.catch_interrupt() and sn.catch_interrupt(false)
 // The running sn.train's stop flag, or nullptr. A pointer atomic is lock-free on every platform
 // we build on, so the handler may read it.
 std::atomic<std::atomic<bool>*> g_train_stop{nullptr};
@@ -72,10 +73,11 @@ void (*current_handler())(int) {
 }  // namespace
 
 TrainInterrupt::TrainInterrupt(std::atomic<bool>* stop) : previous_(g_train_stop.exchange(stop)) {
-  // A Ctrl-C counted before this training began (while a sweep built its dataset) stops it at
-  // once: it trained the whole group. The handler is the default again, so the next one ends
-  // the process, as promised.
-  if (g_interrupts > 0) {
+  // Under sn.catch_interrupt(), a Ctrl-C counted before this training began (while a sweep built
+  // its dataset) stops it at once: it trained the whole group. The handler is the default again,
+  // so the next one ends the process, as promised. Without it (a script's own sn.train, live
+  // mode) a past Ctrl-C stopped that training only: every later one trained 0 steps.
+  if (g_catching && g_interrupts > 0) {
     stop->store(true);
     return;
   }
@@ -120,6 +122,7 @@ int w_terminal_width(lua_State* L) {
 // sn.interrupted()); sn.catch_interrupt(false) gives Ctrl-C its default action back (stop now).
 int w_catch_interrupt(lua_State* L) {
   bool on = lua_isnoneornil(L, 1) ? true : lua_toboolean(L, 1) != 0;
+  g_catching = on;
   if (on) {
     g_interrupts = 0;
     set_handler(on_sigint, true);

@@ -2,6 +2,7 @@
 -- on `backend` and has SIGINT sent to it a second in, as a terminal's Ctrl-C is (from another
 -- process, so the signal lands while the training threads or the GPU work).
 --   mode "once":  one Ctrl-C; checks the result is flagged and the net kept and saved to `out`,
+--                 and that a later sn.train trains,
 --                 prints "OK ...".
 --   mode "twice": two Ctrl-Cs; the second must end the process (exit status 130), so reaching
 --                 the end prints "SURVIVED".
@@ -85,5 +86,10 @@ assert(changed, "the net keeps what was trained")
 net:save(out)
 local back = sn.load(out)
 assert(back:trained_steps() == r.steps, "saved and loaded")
+-- Without sn.catch_interrupt() a past Ctrl-C stopped that training only: a later one trains
+-- (in live mode every later training ran 0 steps, and sn.keep kept untrained networks).
+local later = make()
+sn.train { nets = later, data = small, epochs = 1, batch = batch, backend = backend }
+assert(later:trained_steps() > 0, "a later training after the Ctrl-C trains: " .. later:trained_steps())
 print(string.format("OK epoch %d step %d of %d, %d epochs finished, %.2f s", stop.epoch, stop.step, steps_per_epoch,
                     #r.val_mse, seconds))
