@@ -45,7 +45,9 @@ ErrorReport report_error(const std::string& message) {
 
   // The headline: the first line naming a shader's file:line, else the last naming any file:line
   // (an error inside a module the script loads names the script first and the cause last).
-  static const std::regex where(R"(([^\s:]+):(\d+):)");
+  // A GLSL given as a string is located "script.lua:2 (glsl of NAME):LINE:" (the headline was
+  // cut to "NAME):LINE:", spaces and all): one location.
+  static const std::regex where(R"(((?:[^\s:]+:\d+ \([^)]*\))|[^\s:]+):(\d+):)");
   int pick = -1, last = -1;
   std::smatch m;
   for (int i = 0; i < int(lines.size()); ++i) {

@@ -37,6 +37,16 @@ TEST(LiveErrorReport, ShaderLineBeforeTheScriptsAndTheLogsSourceLine) {
   EXPECT_EQ(lines[0], r.headline);
 }
 
+// GLSL given as a string is located "script.lua:2 (glsl of NAME):LINE": the headline was cut
+// to "NAME):2: ..." at the first location without spaces.
+TEST(LiveErrorReport, GlslStringLocationIsOneLocation) {
+  ErrorReport r = report_error(
+      "w17.lua:3: sn.lighting.define: lighting model 'wrapl': its GLSL does not compile:\n"
+      "w17.lua:2 (glsl of wrapl):2: error: syntax error, unexpected ';'");
+  EXPECT_EQ(r.where, "w17.lua:2 (glsl of wrapl):2");
+  EXPECT_EQ(r.headline, "w17.lua:2 (glsl of wrapl):2: error: syntax error, unexpected ';'");
+}
+
 TEST(LiveErrorReport, ModuleErrorNamesTheModulesLine) {
   ErrorReport r = report_error("s.lua:14: error loading module 'm' from file 'm.lua':\n\tm.lua:1: unexpected symbol near '='");
   EXPECT_EQ(r.where, "m.lua:1");
