@@ -142,7 +142,16 @@ function M.draw(spec, which, view, cache)
     error(("mode '%s' needs '%s' in sn.live.show{...} (this view has only '%s')"):format(view.mode, which, has), 0)
   end
   local key = which .. " " .. view.width .. "x" .. view.height
-  local out = as_target(f(view, cache and cache[key]), "sn.live.show's '" .. which .. "'", cache, key)
+  -- An error a draw raises names this line (its caller); its message names what to fix (a model
+  -- giving NaN showed runtime/live/shadenet.live.view.lua:145 as the place to fix).
+  local ok, drawn = pcall(f, view, cache and cache[key])
+  if not ok then
+    local msg = tostring(drawn)
+    local own = debug.getinfo(1, "S").short_src
+    if msg:sub(1, #own + 1) == own .. ":" then msg = msg:gsub("^[^:]*:%d+: ", "", 1) end
+    error(msg, 0)
+  end
+  local out = as_target(drawn, "sn.live.show's '" .. which .. "'", cache, key)
   if cache then cache[key] = out end
   return out
 end
