@@ -554,32 +554,23 @@ class GltfLoader {
     if (size_t(index) >= m_.samplers.size())
       throw FileError(path_, "texture " + std::to_string(texture) + "'s sampler is sampler " + std::to_string(index) +
                                  ", but the file has " + std::to_string(m_.samplers.size()));
-    auto wrap = [&](int value, const char* name) {
-      switch (value) {
-        case TINYGLTF_TEXTURE_WRAP_REPEAT: return Wrap::repeat;
-        case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE: return Wrap::clamp_to_edge;
-        case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT: return Wrap::mirrored_repeat;
-        default:
-          mesh_.notes.push_back("has sampler " + std::to_string(index) + " with " + name + " " + std::to_string(value) +
-                                ", which glTF does not define (10497 repeat, 33071 clamp to edge, 33648 mirrored "
-                                "repeat): the texture repeats there");
-          return Wrap::repeat;
-      }
+    // The enum value whose OpenGL number (gl_value) `value` is, as glTF writes them; -1
+    // (undefined) gives `fallback`, and so does any other number, with a note.
+    auto from_gl = [&](int value, auto fallback, int count, const char* name, const char* valid, const char* instead) {
+      using E = decltype(fallback);
+      for (int i = 0; i < count; ++i)
+        if (gl_value(E(i)) == value) return E(i);
+      if (value != -1)
+        mesh_.notes.push_back("has sampler " + std::to_string(index) + " with " + name + " " + std::to_string(value) +
+                              ", which glTF does not define (" + valid + "): " + instead + " there");
+      return fallback;
     };
     const tinygltf::Sampler& s = m_.samplers[size_t(index)];
-    out.s = wrap(s.wrapS, "wrapS");
-    out.t = wrap(s.wrapT, "wrapT");
-    // The filters' values are OpenGL's; -1: undefined.
-    if (s.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST || s.magFilter == TINYGLTF_TEXTURE_FILTER_LINEAR)
-      out.mag = s.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST ? MagFilter::nearest : MagFilter::linear;
-    else if (s.magFilter != -1)
-      mesh_.notes.push_back("has sampler " + std::to_string(index) + " with magFilter " + std::to_string(s.magFilter) +
-                            ", which glTF does not define (9728 nearest, 9729 linear): linear there");
-    for (int i = 0; i <= int(MinFilter::linear_mipmap_linear); ++i)
-      if (gl_value(MinFilter(i)) == s.minFilter) out.min = MinFilter(i);
-    if (gl_value(out.min) != s.minFilter && s.minFilter != -1)
-      mesh_.notes.push_back("has sampler " + std::to_string(index) + " with minFilter " + std::to_string(s.minFilter) +
-                            ", which glTF does not define (9728, 9729, 9984-9987): trilinear there");
+    const char* wraps = "10497 repeat, 33071 clamp to edge, 33648 mirrored repeat";
+    out.s = from_gl(s.wrapS, Wrap::repeat, 3, "wrapS", wraps, "the texture repeats");
+    out.t = from_gl(s.wrapT, Wrap::repeat, 3, "wrapT", wraps, "the texture repeats");
+    out.mag = from_gl(s.magFilter, MagFilter::linear, 2, "magFilter", "9728 nearest, 9729 linear", "linear");
+    out.min = from_gl(s.minFilter, MinFilter::linear_mipmap_linear, 6, "minFilter", "9728, 9729, 9984-9987", "trilinear");
     return out;
   }
 

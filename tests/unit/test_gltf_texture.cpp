@@ -114,6 +114,29 @@ TEST(GltfTexture, TheBaseColorTexturesTexCoordPicksTheSet) {
   EXPECT_NE(note_with(m, "(mesh 0 primitive 1 (TEXCOORD_1))"), "") << (m.notes.empty() ? "" : m.notes[0]);
 }
 
+// Numbers glTF does not define fall back to repeat, linear and trilinear with a note naming them;
+// undefined filters (-1) fall back without one.
+TEST(GltfTexture, UndefinedSamplerNumbersFallBackWithANote) {
+  Fixture f;
+  tinygltf::Sampler s;
+  s.wrapS = 12345, s.wrapT = TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE, s.minFilter = 5;  // magFilter: -1
+  f.model.samplers.push_back(s);
+  tinygltf::Primitive p = primitive(TINYGLTF_MODE_TRIANGLES, f.vec3s(kTriangle));
+  p.attributes["TEXCOORD_0"] = f.vec2s({0, 0, 1, 0, 0, 1});
+  sn::io::Image img(2, 2, 3, 0.5f);
+  p.material = textured_material(f, img, 0);
+  tinygltf::Mesh mesh;
+  mesh.primitives = {p};
+  f.model.meshes.push_back(mesh);
+  f.place(0);
+  Mesh m = load_mesh(f.write(temp_dir() / "undefined_sampler.gltf"));
+  EXPECT_TRUE(m.base_color.sampler == (Sampler{Wrap::repeat, Wrap::clamp_to_edge}));
+  EXPECT_NE(note_with(m, "with wrapS 12345, which glTF does not define (10497 repeat, 33071 clamp to edge, 33648 "
+                         "mirrored repeat): the texture repeats there"), "");
+  EXPECT_NE(note_with(m, "with minFilter 5, which glTF does not define (9728, 9729, 9984-9987): trilinear there"), "");
+  EXPECT_EQ(note_with(m, "magFilter"), "");
+}
+
 TEST(GltfTexture, WrapTexelFollowsOpenGl) {
   // A 4-texel axis, indices -5..8.
   std::vector<int> repeat, clamp, mirror;
