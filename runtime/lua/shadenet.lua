@@ -59,6 +59,28 @@ function sn.near(name, names)
   table.sort(out)
   return out
 end
+
+-- Reading a field an object does not have (net.layer for net.layers, cam:fovv()) is an error
+-- naming the type, the field and what it has, where the script reads it: it used to read nil.
+-- registry["shadenet.unknown_field"](type, key, names) is the message (the Mlp's own __index,
+-- in C++, raises it too).
+local function unknown_field(type_name, key, names)
+  local list = {}
+  for k in pairs(names) do if type(k) == "string" and not k:match("^__") then list[#list + 1] = k end end
+  table.sort(list)
+  local near = type(key) == "string" and sn.near(key, list) or {}
+  return type_name .. " has no field " .. (type(key) == "string" and "'" .. key .. "'" or tostring(key)) ..
+         (#near > 0 and " (did you mean " .. table.concat(near, ", ") .. "?)" or " (it has: " .. table.concat(list, ", ") .. ")")
+end
+debug.getregistry()["shadenet.unknown_field"] = unknown_field
+for name, mt in pairs(debug.getregistry()) do
+  local methods = type(mt) == "table" and rawget(mt, "__name") == name and
+                  (type(rawget(mt, "__index")) == "table" and rawget(mt, "__index") or rawget(mt, "__methods"))
+  if methods then
+    setmetatable(methods, { __index = function(t, key) error(unknown_field(name, key, t), 2) end })
+  end
+end
+
 setmetatable(sn, { __index = function(_, name)
   if type(name) ~= "string" then return nil end
   local names, near = {}, {}

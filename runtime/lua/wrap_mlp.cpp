@@ -529,7 +529,23 @@ int w_index(lua_State* L) {
   }
   lua_pushvalue(L, 2);
   lua_rawget(L, lua_upvalueindex(1));
-  return 1;
+  if (!lua_isnil(L, -1)) return 1;
+  // Not a method: registry["shadenet.unknown_field"] (shadenet.lua) words the error.
+  lua_getfield(L, LUA_REGISTRYINDEX, "shadenet.unknown_field");
+  if (lua_isnil(L, -1)) return 1;  // the Lua side is not loaded (the core alone): nil, as a table would
+  lua_pushstring(L, kType);
+  lua_pushvalue(L, 2);
+  lua_newtable(L);  // the names: the methods and `layers`
+  lua_pushnil(L);
+  while (lua_next(L, lua_upvalueindex(1))) {
+    lua_pushvalue(L, -2);
+    lua_insert(L, -2);
+    lua_settable(L, -4);
+  }
+  lua_pushboolean(L, 1);
+  lua_setfield(L, -2, "layers");
+  pcall_or_throw(L, 3, 1, "shadenet.unknown_field");
+  throw Error(lua_tostring(L, -1));
 }
 
 int w_newindex(lua_State* L) {
