@@ -1,5 +1,6 @@
--- Every ```lua block of the API docs runs without error (docs/lua-api/networks-gl.md,
--- ground-truth.md, datasets.md and live.md have tests of their own that also check the values they promise).
+-- Every ```lua block of the API docs runs without error and prints what its "-->" comments
+-- promise (docs/lua-api/networks-gl.md, ground-truth.md, datasets.md, experiments.md and live.md
+-- have tests of their own).
 local docs = require "doc_examples"
 
 local counts = {
