@@ -182,6 +182,20 @@ function Results:write(rel, content)
   return results.write_file(self:path(rel), content)
 end
 
+-- Writes { [rel] = content, ... } together (sn.fs.write_all): on a full disk every old file
+-- stays, and no kill leaves one file of a new table beside one of the old.
+function Results:write_all(files)
+  local paths, rels = {}, {}
+  for rel, content in pairs(files) do
+    rels[#rels + 1] = rel
+    paths[self:path(rel)] = content
+  end
+  table.sort(rels)
+  for _, rel in ipairs(rels) do self.written[#self.written + 1] = rel end
+  local ok, err = pcall(sn.fs.write_all, paths)
+  if not ok then error(err, 0) end
+end
+
 function Results:json(rel, value)
   self.written[#self.written + 1] = rel
   return results.write_json(self:path(rel), value)
@@ -189,7 +203,7 @@ end
 
 -- R:table{ file = "table", title = "...", columns = {{key, header, format, align}...}, rows = {...},
 --          grids = {{title, rows, cols, value, thesis, format, row_header, col_header}...}, notes = {"..."} }
--- writes FILE.md (title, grids, the long table, notes) and FILE.csv (the long table). Under its
+-- writes FILE.md (title, grids, the long table, notes) and FILE.csv (the long table), together. Under its
 -- title FILE.md prints R.notices (lines: quick mode, one shard) and R.partial (a stopped sweep).
 results.column_keys = { "key", "header", "format", "align" }
 function Results:table(t)
@@ -204,8 +218,7 @@ function Results:table(t)
   for _, g in ipairs(t.grids or {}) do md[#md + 1] = results.markdown_grid(g, t.rows) end
   md[#md + 1] = results.markdown(t.columns, t.rows)
   for _, n in ipairs(t.notes or {}) do md[#md + 1] = n .. "\n" end
-  self:write(file .. ".md", table.concat(md, "\n"))
-  self:write(file .. ".csv", results.csv(t.columns, t.rows))
+  self:write_all { [file .. ".md"] = table.concat(md, "\n"), [file .. ".csv"] = results.csv(t.columns, t.rows) }
   return self:path(file .. ".md")
 end
 

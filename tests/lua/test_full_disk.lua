@@ -77,6 +77,22 @@ local ok, err = pcall(function()
          read(dir .. "/ds.targets.npy") == old[3], "the old export survives")
   assert(sn.dataset.load(dir .. "/ds.json"):counts() == 10, "and loads")
   only { "ds.inputs.npy", "ds.json", "ds.targets.npy", "r1.json", "r2.json", "table.md" }
+
+  -- An experiment's table (Markdown + CSV) that does not fit leaves both old files: written one
+  -- by one, the new Markdown had replaced the old beside the old CSV.
+  for _, f in ipairs { "ds.inputs.npy", "ds.json", "ds.targets.npy", "r1.json", "r2.json", "table.md" } do
+    os.remove(dir .. "/" .. f)
+  end
+  local R = results.open({ out = dir }, "full")
+  local columns = { { key = "name", header = "Name" } }
+  R:table { file = "t", columns = columns, rows = { { name = "old" } } }
+  local old_md, old_csv = read(dir .. "/t.md"), read(dir .. "/t.csv")
+  local long = {}
+  for i = 1, 1400 do long[i] = { name = string.rep("n", 20) .. i } end
+  local okt, et = pcall(R.table, R, { file = "t", columns = columns, rows = long })
+  assert(not okt and tostring(et):find("No space left on device", 1, true), tostring(et))
+  assert(read(dir .. "/t.md") == old_md and read(dir .. "/t.csv") == old_csv, "the old table survives, both files")
+  only { "t.csv", "t.md" }
 end)
 cleanup()
 assert(ok, err)
