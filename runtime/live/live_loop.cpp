@@ -40,6 +40,17 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
+// The test hooks' file for picture `n`: every "%d" in `pattern` becomes n, the rest stays as it
+// is (the pattern was a printf format: "50%off.png" lost its sign and "%s" crashed).
+std::string numbered(const std::string& pattern, long n) {
+  std::string path;
+  for (std::size_t i = 0; i < pattern.size(); ++i) {
+    if (pattern.compare(i, 2, "%d") == 0) path += std::to_string(n), ++i;
+    else path += pattern[i];
+  }
+  return path;
+}
+
 std::string read_all(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   std::stringstream ss;
@@ -492,8 +503,7 @@ void Loop::redraw() {
   target_ref_ = luaL_ref(L_, LUA_REGISTRYINDEX);  // shown again when the window is uncovered
   present_due_ = true;
   if (!snapshot_.empty()) {
-    char path[4096];
-    snprintf(path, sizeof path, snapshot_.c_str(), int(frame_));
+    const std::string path = numbered(snapshot_, frame_);
     try {
       io::save_image(target.read(), path);
     } catch (const std::exception& e) {
@@ -603,8 +613,7 @@ void Loop::present() {
   const gl::RenderTarget& shown = hud_.compose(frame, w, h);
   ctx_.present(shown.fbo(), shown.width(), shown.height());
   if (shown_path_.empty()) return;
-  char path[4096];
-  snprintf(path, sizeof path, shown_path_.c_str(), int(++shown_count_));
+  const std::string path = numbered(shown_path_, ++shown_count_);
   try {
     io::save_image(shown.read(), path);
   } catch (const std::exception& e) {
