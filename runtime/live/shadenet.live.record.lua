@@ -17,8 +17,13 @@ function live.screenshot(path)
   local view = view_of.current_view(spec)
   local image = render(spec, view):read()
   -- claimed, not looked for: another instance saving at the same moment gets the next number
+  local claimed = path == nil
   path = path or sn.fs.claim("out/live", "screenshot", ".png")
-  image:save(path)
+  local ok, err = pcall(image.save, image, path)
+  if not ok then
+    if claimed then os.remove(path) end  -- no empty screenshot-NNNN.png left by a full disk
+    error("sn.live.screenshot: " .. tostring(err), 2)
+  end
   return absolute(path)
 end
 
@@ -43,6 +48,7 @@ function sn.record(o)
   end
   view.width, view.height = o.width or view.width, o.height or view.height
   local dir = o.dir
+  local claimed = dir == nil
   local paths = {}
   local count_of = o.orbit and (o.orbit.count or 36) or (o.sweep and o.sweep.count or 9)
   local function frame(k)
@@ -51,7 +57,12 @@ function sn.record(o)
       dir = dir and sn.fs.mkdir(dir) or sn.fs.claim("out/live", "record")
     end
     local p = ("%s/frame-%04d.png"):format(dir, k)
-    render(spec, view):read():save(p)
+    local image = render(spec, view):read()
+    local ok, err = pcall(image.save, image, p)
+    if not ok then
+      if claimed and #paths == 0 then os.remove(dir) end  -- no empty record-NNNN folder
+      error(err, 0)
+    end
     paths[#paths + 1] = absolute(p)
   end
   if o.orbit then
@@ -64,13 +75,16 @@ function sn.record(o)
     local elev = o.orbit.elevation and math.rad(o.orbit.elevation)
                  or math.asin(math.max(-1, math.min(1, d[2] / math.sqrt(d[1] ^ 2 + d[2] ^ 2 + d[3] ^ 2))))
     local az0 = math.atan2(d[1], d[3])
-    for k = 1, count do
-      local az = az0 + 2 * math.pi * (k - 1) / count
-      view.camera = sn.camera { eye = { t[1] + dist * math.cos(elev) * math.sin(az), t[2] + dist * math.sin(elev),
-                                        t[3] + dist * math.cos(elev) * math.cos(az) },
-                                target = t, fov = cam:fov(), aspect = cam:aspect() }
-      frame(k)
-    end
+    local ok, err = pcall(function()
+      for k = 1, count do
+        local az = az0 + 2 * math.pi * (k - 1) / count
+        view.camera = sn.camera { eye = { t[1] + dist * math.cos(elev) * math.sin(az), t[2] + dist * math.sin(elev),
+                                          t[3] + dist * math.cos(elev) * math.cos(az) },
+                                  target = t, fov = cam:fov(), aspect = cam:aspect() }
+        frame(k)
+      end
+    end)
+    if not ok then error("sn.record: " .. tostring(err), 2) end
   else
     strict(o.sweep, { "set", "get", "from", "to", "count" }, "sn.record: sweep", 2)
     local s = o.sweep

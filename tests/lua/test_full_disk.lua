@@ -93,6 +93,31 @@ local ok, err = pcall(function()
   assert(not okt and tostring(et):find("No space left on device", 1, true), tostring(et))
   assert(read(dir .. "/t.md") == old_md and read(dir .. "/t.csv") == old_csv, "the old table survives, both files")
   only { "t.csv", "t.md" }
+
+  -- Live mode's screenshot and recording on a full disk: an error naming the file, and no empty
+  -- screenshot-NNNN.png or record-NNNN folder left claimed for them.
+  os.remove(dir .. "/t.md"); os.remove(dir .. "/t.csv")
+  local filler = assert(io.open(dir .. "/filler", "wb"))
+  filler:write(string.rep("f", 63000))
+  filler:close()
+  local script = dir .. "/../shadenet_full_disk_live.lua"
+  sn.fs.write(script, [[
+local sn = require "shadenet"
+local scene = sn.scene { mesh = sn.mesh.sphere(), size = { 160, 120 }, light = { dir = { 0.5, 0.7, 0.6 } } }
+sn.live.show { scene = scene, truth = sn.lighting.phong {}, mode = "truth" }
+print(pcall(sn.live.screenshot))
+print(pcall(sn.record, { orbit = { count = 2 } }))
+]])
+  local exe = arg[-1] or "build/shadenet"
+  if exe:sub(1, 1) ~= "/" then exe = os.getenv("PWD") .. "/" .. exe end
+  local p = io.popen(("cd %q && %q %q 2>&1"):format(dir, exe, script))
+  local said = p:read("*a")
+  p:close()
+  os.remove(script)
+  assert(said:find("false\tsn.live.screenshot: cannot write image 'out/live/screenshot-0001.png': No space left", 1, true) and
+         said:find("false\tsn.record: cannot write image 'out/live/record-0001/frame-0001.png': No space left", 1, true), said)
+  local left = sn.fs.list(dir .. "/out/live")
+  assert(#left == 0, "left claimed: " .. table.concat(left, ", "))
 end)
 cleanup()
 assert(ok, err)
