@@ -1,5 +1,5 @@
 // sn.fs.*: the few file-system calls results writers need and plain Lua lacks (creating
-// folders, listing one, checking a path, writing a file whole, a scratch folder), through
+// folders, listing one, checking a path, reading and writing a file whole, a scratch folder), through
 // std::filesystem and io/atomic_write rather than a shell or io.open; and sn.limits, the
 // loaders' resource limits (io/limits.h).
 #include <algorithm>
@@ -9,6 +9,7 @@
 #include "io/atomic_write.h"
 #include "io/limits.h"
 #include "io/numbered_path.h"
+#include "io/read_file.h"
 #include "io/temp_dir.h"
 #include "lua/binding.h"
 #include "lua/module.h"
@@ -40,6 +41,14 @@ int w_list(lua_State* L) {
   if (ec) throw Error("cannot list '" + dir + "': " + ec.message());
   std::sort(names.begin(), names.end());
   push_strings(L, names);
+  return 1;
+}
+
+// sn.fs.read(path) -> content: the whole file (io::read_file: a FIFO, device or folder is an
+// error naming it, where io.open would wait on a FIFO for ever).
+int w_read(lua_State* L) {
+  const std::string bytes = io::read_file(check_string(L, 1, "sn.fs.read path"));
+  lua_pushlstring(L, bytes.data(), bytes.size());
   return 1;
 }
 
@@ -192,7 +201,7 @@ int w_limits(lua_State* L) {
 void open_files(lua_State* L) {
   lua_pushcfunction(L, wrap<w_limits>);
   lua_setfield(L, -2, "limits");
-  static const luaL_Reg fns[] = {SN_FN("mkdir", w_mkdir), SN_FN("list", w_list), SN_FN("exists", w_exists), SN_FN("write", w_write), SN_FN("write_all", w_write_all),
+  static const luaL_Reg fns[] = {SN_FN("mkdir", w_mkdir), SN_FN("list", w_list), SN_FN("exists", w_exists), SN_FN("read", w_read), SN_FN("write", w_write), SN_FN("write_all", w_write_all),
                                  SN_FN("claim", w_claim), SN_FN("tempdir", w_tempdir),
                                  SN_FN("remove_stale_temporaries", w_remove_stale_temporaries),
                                  {nullptr, nullptr}};

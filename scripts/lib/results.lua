@@ -19,12 +19,13 @@ function results.write_file(path, content)
   return path
 end
 
+-- The file's content, or nil when there is none; a FIFO or folder in its place is an error
+-- (sn.fs.read), where io.open waited on a FIFO for ever.
 function results.read_file(path)
-  local f = io.open(path, "rb")
-  if not f then return nil end
-  local s = f:read("*a")
-  f:close()
-  return s
+  if not sn.fs.exists(path) then return nil end
+  local ok, content = pcall(sn.fs.read, path)
+  if not ok then error(content, 0) end
+  return content
 end
 
 function results.write_json(path, value) return results.write_file(path, json.encode(value, "  ") .. "\n") end
@@ -222,12 +223,18 @@ function Results:table(t)
   return self:path(file .. ".md")
 end
 
+-- The first line of a /proc file (the kernel gives their size as 0: sn.fs.read reads nothing).
+local function proc_line(path)
+  local f = io.open(path)
+  if not f then return nil end
+  local line = f:read("*l")
+  f:close()
+  return line
+end
+
 -- The 1, 5 and 15 minute load averages (timings on a shared machine need them to be read).
 function results.load_average()
-  local f = io.open("/proc/loadavg")
-  if not f then return nil end
-  local line = f:read("*l") or ""
-  f:close()
+  local line = proc_line("/proc/loadavg") or ""
   local a, b, c = line:match("^(%S+) (%S+) (%S+)")
   return a and { tonumber(a), tonumber(b), tonumber(c) } or nil
 end
@@ -263,7 +270,7 @@ function results.environment()
     cpu_threads = cores,
     date = os.date("!%Y-%m-%dT%H:%M:%SZ"),
     -- The kernel's name for the machine (bash does not export HOSTNAME: it was always null).
-    host = (results.read_file("/proc/sys/kernel/hostname") or os.getenv("HOSTNAME") or ""):match("^%s*(.-)%s*$"),
+    host = (proc_line("/proc/sys/kernel/hostname") or os.getenv("HOSTNAME") or ""):match("^%s*(.-)%s*$"),
   }
 end
 

@@ -37,7 +37,8 @@ assert(below >= 30, below .. " of 36 architectures beat the constant predictor b
 local function cell(l, w) for _, r in ipairs(rows) do if r.layers == l and r.width == w then return r.val_mse end end end
 assert(cell(12, 12) < cell(2, 2) / 1.4, "12x12 learns Phong better than 2x2")
 assert(info.quick == true and info.backend.used == "cpu" and info.environment.gl.renderer, "run.json records mode, backend, renderer")
-assert(info.environment.host == C.read("/proc/sys/kernel/hostname"):match("^%s*(.-)%s*$"), "and the machine's name")
+local hostname = assert(io.open("/proc/sys/kernel/hostname")):read("*l")
+assert(info.environment.host == hostname:match("^%s*(.-)%s*$"), "and the machine's name")
 -- A full run does not go into a quick run's folder, nor another experiment or another choice of
 -- data: their run ids are the same, and one overwrote the other's records and tables.
 local code, refused = C.run(script, { "--out", A })
