@@ -11,9 +11,7 @@ std::vector<double> dead_unit_fractions(const Mlp& net, const float* x, std::siz
   // Counted by the cpu backend's kernels: an activation without cpu code has no figure.
   if (!has_cpu_code(net.spec)) return {};
   CpuNet work(net.spec, net.params.data());
-  std::vector<float> encoded;  // the cpu kernels read encoded rows
-  if (!net.spec.encodings.empty()) encoded = encode_rows(net.spec.encodings, net.spec.inputs, x, count);
-  const auto counts = work.unit_counts(encoded.empty() ? x : encoded.data(), count);
+  const auto counts = work.unit_counts(x, count);
   const bool relu_like = net.spec.activation == Activation::relu || net.spec.activation == Activation::leaky_relu;
   std::vector<double> fractions;
   for (const auto& layer : counts) {
@@ -27,11 +25,9 @@ std::vector<double> dead_unit_fractions(const Mlp& net, const float* x, std::siz
 int stuck_outputs(const Mlp& net, const float* x, std::size_t count) {
   if (!count || !has_cpu_code(net.spec)) return -1;
   CpuNet work(net.spec, net.params.data());
-  std::vector<float> encoded;
-  if (!net.spec.encodings.empty()) encoded = encode_rows(net.spec.encodings, net.spec.inputs, x, count);
   const std::size_t outputs = std::size_t(net.spec.outputs);
   std::vector<float> y(count * outputs);
-  work.forward(encoded.empty() ? x : encoded.data(), count, y.data());
+  work.forward(x, count, y.data());
   int stuck = 0;
   for (std::size_t o = 0; o < outputs; ++o) {
     bool same = true;

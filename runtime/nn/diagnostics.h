@@ -3,6 +3,8 @@
 //   relu, leaky_relu: fraction of units never active (output > 0 on no sample);
 //   tanh:    fraction of units saturated (|a| > 0.99) on more than 99% of the samples;
 //   sigmoid: fraction of units saturated (a < 0.01 or a > 0.99) on more than 99% of the samples.
+// The rows `x` are what the first layer reads: encoded (nn/encoding.h encode_rows) when the net
+// encodes its inputs, as the cpu kernels take them; the caller encodes once for many nets.
 #pragma once
 #include <cstddef>
 #include <vector>

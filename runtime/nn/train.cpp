@@ -249,19 +249,26 @@ JobResult train(const TrainJob& job) {
   // does not translate is measured by its backend): one number per net whichever backend trains it.
   const data::Dataset& d = *job.data;
   cfg.initial_val_mse.assign(nets.size(), std::numeric_limits<double>::quiet_NaN());
-  // A user's encoding (a Lua function) encodes rows on this thread only.
-  int threads = io::default_threads();
-  for (const Mlp* n : nets)
-    if (single_threaded(n->spec.encodings)) threads = 1;
+  // The validation rows as each net's first layer reads them (the cpu kernels' input), encoded
+  // here once per distinct set of encodings, on this thread (a user's encoding is a Lua
+  // function), for the untrained MSE and the diagnostics after training: each had encoded them
+  // again per net (a third of a 32-net frequency-encoded job's time).
+  std::vector<std::pair<const std::vector<InputEncoding>*, std::vector<float>>> encoded;
+  std::vector<const float*> val_rows(nets.size(), d.val_x.data());
+  for (std::size_t i = 0; i < nets.size(); ++i) {
+    const auto& encs = nets[i]->spec.encodings;
+    if (encs.empty() || !has_cpu_code(nets[i]->spec)) continue;
+    auto same = std::find_if(encoded.begin(), encoded.end(), [&](const auto& e) { return *e.first == encs; });
+    if (same == encoded.end())
+      same = encoded.insert(encoded.end(), {&encs, encode_rows(encs, nets[i]->spec.inputs, d.val_x.data(), d.val_count())});
+    val_rows[i] = same->second.data();
+  }
+  const int threads = io::default_threads();
   io::parallel_for(int(nets.size()), threads, [&](int i) {
     const MlpSpec& s = nets[std::size_t(i)]->spec;
     if (!has_cpu_code(s)) return;
     CpuNet net(s, nets[std::size_t(i)]->params.data());
-    // The cpu kernels read what the first layer reads: encoded rows when the net encodes.
-    const std::vector<float> encoded =
-        s.encodings.empty() ? std::vector<float>() : encode_rows(s.encodings, s.inputs, d.val_x.data(), d.val_count());
-    const float* x = s.encodings.empty() ? d.val_x.data() : encoded.data();
-    cfg.initial_val_mse[std::size_t(i)] = net.mse(x, d.val_y.data(), d.val_count());
+    cfg.initial_val_mse[std::size_t(i)] = net.mse(val_rows[std::size_t(i)], d.val_y.data(), d.val_count());
   });
   // The first exception of the progress or tick function stops the job.
   std::exception_ptr hook_error;
@@ -326,8 +333,8 @@ JobResult train(const TrainJob& job) {
     net.touch();
   }
   io::parallel_for(int(nets.size()), threads, [&](int i) {
-    out.nets[i].dead_units = dead_unit_fractions(*job.nets[i], d.val_x.data(), d.val_count());
-    out.nets[i].stuck_outputs = stuck_outputs(*job.nets[i], d.val_x.data(), d.val_count());
+    out.nets[i].dead_units = dead_unit_fractions(*job.nets[i], val_rows[std::size_t(i)], d.val_count());
+    out.nets[i].stuck_outputs = stuck_outputs(*job.nets[i], val_rows[std::size_t(i)], d.val_count());
   });
   // The nets keep what was trained; then the progress or tick function's error goes on to the caller.
   if (hook_error) std::rethrow_exception(hook_error);

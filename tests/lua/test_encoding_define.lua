@@ -156,5 +156,26 @@ local before = sn.mlp { inputs = { "uv" }, hidden = { 4 }, encoding = { uv = "du
 dup(2)
 ok, err = pcall(before.forward, before, { 0.1, 0.2 })
 assert(not ok and err:find("27 parameters, but its spec needs 35 (an encoding redefined with another output count?)", 1, true), err)
+-- A job encodes its rows once per distinct encoding, not once more per network for the
+-- untrained MSE and the diagnostics: four nets cost the Lua twin what one does.
+local calls = 0
+sn.encoding.define { name = "counted", outputs = function(w) return 2 * w end, glsl = "return j < w ? x[j] : sin(x[j - w]);",
+                     lua = function(x)
+                       calls = calls + 1
+                       local o = {}
+                       for c = 1, #x do o[c], o[#x + c] = x[c], math.sin(x[c]) end
+                       return o
+                     end }
+local rows = sn.dataset.sample { target = sn.lighting.phong {}, n = 500, seed = 1 }
+local ntrain, nval = rows:counts()
+local function encoded_for(count)
+  local nets = {}
+  for k = 1, count do nets[k] = sn.mlp { inputs = { "normal", "view" }, hidden = { 4 }, seed = k, encoding = { normal = "counted" } } end
+  calls = 0
+  sn.train { nets = nets, data = rows, epochs = 1, backend = "cpu" }
+  return calls
+end
+local one, four = encoded_for(1), encoded_for(4)
+assert(one == four and one <= ntrain + 2 * nval, ("rows encoded: %d for one net, %d for four (%d train + %d val rows)"):format(one, four, ntrain, nval))
 C.rm(tmp)
 print("encoding define: ok")
