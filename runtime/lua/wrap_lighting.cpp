@@ -6,6 +6,7 @@
 #include <map>
 
 #include "gl/buffer.h"
+#include "gl/shader_source.h"
 #include "io/text.h"
 #include "lua/binding.h"
 #include "lua/lighting_binding.h"
@@ -387,10 +388,19 @@ int w_convert(lua_State* L) {
   return 0;
 }
 
-// sn.lighting.key(name) -> a user definition's key (its GLSL hashed), nil for a built-in
+// sn.lighting.key(name) -> a user definition's key, nil for a built-in: its GLSL as the shaders
+// read it (every #included file's text in place) and the attributes it reads, so a sweep trains
+// again when an included file or the attributes change (the main file's text alone kept runs
+// of the old model).
 int w_key(lua_State* L) {
   const shading::ModelPtr m = shading::find_model(check_string(L, 1, "sn.lighting.key name"));
-  push_definition_key(L, m->builtin ? std::vector<std::string>{} : std::vector<std::string>{m->glsl_text()});
+  if (m->builtin) {
+    push_definition_key(L, {});
+    return 1;
+  }
+  const gl::Includes includes = shading::lighting_includes(*m);
+  const std::string glsl = gl::preprocess_text("lighting/model.glsl", includes.at("lighting/model.glsl"), {}, includes).text;
+  push_definition_key(L, {glsl, "attributes " + io::join(m->attributes)});
   return 1;
 }
 

@@ -5,6 +5,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "data/dataset_cache.h"
+#include "io/hash.h"
 #include "lua/binding.h"
 #include "lua/module.h"
 #include "scene/gltf.h"
@@ -109,6 +111,14 @@ int w_name(lua_State* L) {
   return 1;
 }
 
+// mesh:key() -> 16 hex digits hashing what the mesh holds (positions, normals, uvs, indices,
+// tangents, texture and sampler): the dataset cache's key for it, so an experiment's records can
+// tell a mesh file rewritten under the same path from the one they were trained on.
+int w_key(lua_State* L) {
+  lua_pushstring(L, io::hex64(data::mesh_content_hash(self(L))).c_str());
+  return 1;
+}
+
 // mesh:save(path) writes a .glb; returns the path
 int w_save(lua_State* L) {
   Mesh& m = self(L);
@@ -188,6 +198,7 @@ void open_mesh(lua_State* L) {
                                      SN_FN("bounds", w_bounds),
                                      SN_FN("texture", w_texture),
                                      SN_FN("name", w_name),
+                                     SN_FN("key", w_key),
                                      SN_FN("save", w_save),
                                      SN_FN("transformed", w_transformed),
                                      {nullptr, nullptr}};

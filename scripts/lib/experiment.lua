@@ -242,7 +242,16 @@ exp.model_params = {
 exp.data_keys = { "model", "inputs", "color", "samples", "split", "seed", "data", "mesh", "size", "views",
                   "elevation", "light", "poses" }
 exp.desc_required = { "model", "truth", "inputs", "color", "samples", "split", "seed", "scene" }
-exp.desc_keys = { "model", "truth", "truth_definition", "inputs", "color", "samples", "split", "seed", "scene" }
+exp.desc_keys = { "model", "truth", "truth_definition", "inputs", "color", "samples", "split", "seed", "scene",
+                  "mesh_key" }
+-- The training mesh's content key (mesh:key()), a file read once per process: a mesh rewritten
+-- under the same path is new data, and its runs are trained again.
+local mesh_keys = {}
+local function mesh_key(mesh)
+  if type(mesh) ~= "string" then return mesh:key() end
+  mesh_keys[mesh] = mesh_keys[mesh] or sn.mesh.load(mesh):key()
+  return mesh_keys[mesh]
+end
 function E:data_desc(o)
   o = o or {}
   if type(o) == "table" and o.scene then  -- already a description
@@ -252,6 +261,7 @@ function E:data_desc(o)
   local truth = exp.model(o.model or "phong")
   -- A Lighting value is recorded as its name and parameters (a run's config is JSON).
   local model = type(o.model) == "userdata" and { name = truth:name(), params = truth:params() } or o.model or "phong"
+  local scene = self:training_scene_options(o)
   return {
     model = model,
     -- Every parameter of the ground truth as the runtime has it: a changed default is a new
@@ -265,7 +275,8 @@ function E:data_desc(o)
     samples = o.samples or self:pick(8000, 64149),
     split = o.split or 0.8,
     seed = o.seed or 1,
-    scene = self:training_scene_options(o),
+    scene = scene,
+    mesh_key = mesh_key(scene.mesh),
   }
 end
 

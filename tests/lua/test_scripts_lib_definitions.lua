@@ -39,6 +39,30 @@ assert(b.definitions["activation snake_t"] ~= a.definitions["activation snake_t"
 assert(b.data.truth_definition == a.data.truth_definition, "the model as it was")
 define_model(0.5)
 assert(config().data.truth_definition ~= a.data.truth_definition, "a redefined model, a new key")
+-- The key covers what the shaders read: a file the GLSL #includes, and the attributes.
+local dir = sn.fs.tempdir("definitions_include")
+sn.fs.write(dir .. "/gain.glsl", "float gain() { return 0.5; }\n")
+sn.fs.write(dir .. "/model.glsl", '#include "gain.glsl"\nvec3 shade(Surface s, Params p) { return vec3(gain()); }\n')
+local function define_included(attributes)
+  sn.lighting.define { name = "included_t", glsl = dir .. "/model.glsl", attributes = attributes,
+                       twin = function() return { 0.5, 0.5, 0.5 } end }
+  return sn.lighting.key("included_t")
+end
+local k1 = define_included()
+sn.fs.write(dir .. "/gain.glsl", "float gain() { return 0.9; }\n")
+local k2 = define_included()
+assert(k2 ~= k1, "an included file changed, a new key")
+assert(define_included { "uv" } ~= k2, "other attributes, a new key")
+assert(define_included() == k2, "the same files and attributes, the same key")
+-- A mesh file rewritten under the same path: another mesh_key, so its runs are trained again.
+local mesh_path = dir .. "/mesh.glb"
+sn.mesh.sphere {}:save(mesh_path)
+local before = E:data_desc { model = "phong", mesh = mesh_path }
+sn.mesh.torus {}:save(mesh_path)
+package.loaded["lib.experiment"] = nil  -- a new process: the key is read once per process
+local E2 = require("lib.experiment").start("definitions", { "--quick", "--out", sn.fs.tempdir("test_scripts_lib_definitions") })
+local after = E2:data_desc { model = "phong", mesh = mesh_path }
+assert(before.mesh_key and after.mesh_key and before.mesh_key ~= after.mesh_key, json.encode { before.mesh_key, after.mesh_key })
 -- Only built-ins: no keys, the config as before.
 local builtin = exp.run { id = "r", hidden = { 4 }, seed = 1, data = E:data_desc { model = "phong" } }.config
 assert(builtin.definitions == nil and builtin.data.truth_definition == nil, json.encode(builtin))
