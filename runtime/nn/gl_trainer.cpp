@@ -275,6 +275,7 @@ class Job {
       g.report.arch = g.spec.describe();
       g.report.nets = int(n);
       g.report.layout = g.layout.describe();
+      g.report.per_net = g.layout.per_net;
       gl::Program& p = *g.program;
       p.set_uniform("u_beta1", {cfg_.beta1});
       p.set_uniform("u_beta2", {cfg_.beta2});
@@ -570,9 +571,16 @@ class Job {
 
 }  // namespace
 
+// The renderer, and after a job the kernels it ran (SHADENET_GL_KERNEL's names): they round
+// differently, so records made with each must not pass for one device's.
 std::string GlTrainer::device() const {
   const auto& i = gl::current().info();
-  return i.renderer + " (OpenGL " + i.version + ")";
+  std::string d = i.renderer + " (OpenGL " + i.version + ")";
+  const bool per_net = std::any_of(report_.begin(), report_.end(), [](const GlGroupReport& r) { return r.per_net; });
+  const bool per_sample = std::any_of(report_.begin(), report_.end(), [](const GlGroupReport& r) { return !r.per_net; });
+  if (per_net || per_sample)
+    d += per_net && per_sample ? ", per_net and per_sample kernels" : per_net ? ", per_net kernel" : ", per_sample kernel";
+  return d;
 }
 
 std::vector<NetResult> GlTrainer::train(const std::vector<const Mlp*>& nets, const data::Dataset& data,

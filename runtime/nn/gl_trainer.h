@@ -22,6 +22,7 @@ struct GlGroupReport {
   std::string arch;                  // spec.describe()
   int nets = 0;
   std::string layout;                // where the kernel keeps its arrays (TrainLayout::describe())
+  bool per_net = false;              // the kernel: one network per invocation, or one sample
   long long loop_budget = 0;         // loop iterations left after one step, as the probe counted (0: no limit, or not probed)
   long long loop_cost_per_step = 0;  // 0: the driver does not limit loops
   long long steps_per_dispatch = 0;  // the chunk in use at the end

@@ -232,7 +232,6 @@ JobResult train(const TrainJob& job) {
   JobResult out;
   out.backend = resolve_backend(job.backend, &out.reason, job.nets);
   auto backend = make_backend(out.backend);
-  out.device = backend->device();
   std::vector<const Mlp*> nets(job.nets.begin(), job.nets.end());
 
   // One stop flag for every source: the caller's (Ctrl-C) and a progress function's error.
@@ -298,6 +297,7 @@ JobResult train(const TrainJob& job) {
                  ? backend->train(nets, *job.data, cfg, progress)
                  : train_by_seed(*backend, nets, *job.data, cfg, progress, per_call);
   out.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  out.device = backend->device();  // after the job: the gl backend names the kernels it ran
   if (out.nets.size() != nets.size()) throw std::logic_error("backend " + out.backend + " returned wrong result count");
   const long long steps_per_epoch = (long long)(job.data->train_count() / std::size_t(cfg.batch));
 

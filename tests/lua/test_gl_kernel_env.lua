@@ -10,15 +10,20 @@ local sn = require "shadenet"
 local scene = sn.scene { mesh = "meshes/test_blob.glb", size = { 64, 48 }, views = { count = 2, elevation = 20 } }
 local data = scene:dataset { inputs = { "normal", "view" }, target = sn.lighting.phong {}, split = 0.8, seed = 3 }
 local net = sn.mlp { inputs = 6, hidden = { 8, 8 }, seed = 5 }
-local r = sn.train { nets = { net }, data = data, epochs = 2, batch = 8, adam = { lr = 3e-3 }, seed = 9, backend = "gl" }[1]
+local job = sn.train { nets = { net }, data = data, epochs = 2, batch = 8, adam = { lr = 3e-3 }, seed = 9, backend = "gl" }
+local r = job[1]
 print(("curve %.17g %.17g"):format(r.val_mse[1], r.val_mse[2]))
+print("device " .. r.device)
 ]])
 
 local function curve(kernel)
   local code, out = C.run(child, {}, kernel and { SHADENET_GL_KERNEL = kernel } or nil)
   assert(code == 0, "SHADENET_GL_KERNEL=" .. tostring(kernel) .. ":\n" .. out)
   local a, b = out:match("curve (%S+) (%S+)")
-  return { tonumber(a), tonumber(b) }, a .. " " .. b
+  -- The records name the kernel: their numbers differ, so they are not one device's.
+  local named = out:match("device [^\n]*, (%S+) kernel\n")
+  assert(named == (kernel == "per_net" or kernel == "per_sample") and kernel or named, out)
+  return { tonumber(a), tonumber(b) }, a .. " " .. b, named
 end
 
 local per_net, per_net_bits = curve("per_net")
@@ -29,6 +34,7 @@ for e = 1, 2 do
 end
 local rule = sn.gl_info().software and per_net_bits or per_sample_bits
 assert(select(2, curve(nil)) == rule and select(2, curve("auto")) == rule, "automatic: the device's rule")
+assert(select(3, curve(nil)) == (sn.gl_info().software and "per_net" or "per_sample"), "and names the kernel it picked")
 assert(select(2, curve("")) == rule, "an empty setting is no setting")
 
 local code, out = C.run(child, {}, { SHADENET_GL_KERNEL = "per_batch" })
