@@ -12,6 +12,7 @@
 #include "live/live_loop.h"
 #include "app/options.h"
 #include "gl/context.h"
+#include "io/build_id.h"
 #include "lua/module.h"
 
 namespace {
@@ -100,12 +101,12 @@ int main(int argc, char** argv) {
   try {
     if (opt.window) sn::gl::set_current(sn::gl::Context::window(opt.width, opt.height, "shadenet"));
     if (opt.gl_info) {  // the version's lines and more: with --version too, this (it was the version alone)
-      printf("shadenet %s\n%s", SHADENET_VERSION, sn::gl::info_text(sn::gl::current().info()).c_str());
+      printf("shadenet %s (build %s)\n%s", SHADENET_VERSION, sn::io::build_id(), sn::gl::info_text(sn::gl::current().info()).c_str());
       return 0;
     }
     if (opt.version) {
       const auto& info = sn::gl::current().info();
-      printf("shadenet %s\nGL renderer: %s\nGL version: %s\n", SHADENET_VERSION, info.renderer.c_str(),
+      printf("shadenet %s (build %s)\nGL renderer: %s\nGL version: %s\n", SHADENET_VERSION, sn::io::build_id(), info.renderer.c_str(),
              info.version.c_str());
       return 0;
     }

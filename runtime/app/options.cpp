@@ -15,7 +15,7 @@ std::string usage() {
          "                     it uses is saved (sn.keep values survive); Lua lines on stdin run in\n"
          "                     the script's state (see docs/live-mode.md)\n"
          "  --help             print this help\n"
-         "  --version          print the version, GL renderer and GL version\n"
+         "  --version          print the version and build (git commit), GL renderer and GL version\n"
          "  --gl-info          print the EGL platform and device, the GL renderer and the limits the\n"
          "                     kernels are sized by (SHADENET_EGL_PLATFORM=auto|device|surfaceless picks\n"
          "                     the platform; see README.md, \"On a GPU\")\n";

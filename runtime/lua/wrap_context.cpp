@@ -4,6 +4,7 @@
 #include "gl/buffer.h"
 #include "gl/context.h"
 #include "gl/render_target.h"
+#include "io/build_id.h"
 #include "lua/binding.h"
 #include "lua/module.h"
 
@@ -58,6 +59,8 @@ void open_context(lua_State* L) {
   luaL_register(L, nullptr, fns);
   lua_pushstring(L, SHADENET_VERSION);
   lua_setfield(L, -2, "version");
+  lua_pushstring(L, io::build_id());
+  lua_setfield(L, -2, "build");
 }
 
 }  // namespace sn::lua

@@ -263,6 +263,7 @@ function results.environment()
   return {
     load_average = results.load_average(),
     shadenet = sn.version,
+    build = sn.build,  -- the git commit the binary was built from ("-dirty": with uncommitted changes)
     luajit = jit and jit.version or _VERSION,
     gl = { renderer = info.renderer, version = info.version, vendor = info.vendor, software = info.software },
     gnuplot = gnuplot,

@@ -1,5 +1,6 @@
 -- scripts/table_4_1_phong.lua --quick: the table's shape and numbers, shard + merge = one run,
 -- a resumed run = an uninterrupted one, Ctrl-C keeps finished runs and the re-run completes them.
+local sn = require "shadenet"
 local C = require "script_check"
 local thesis = require "lib.thesis"
 local results = require "lib.results"
@@ -39,6 +40,11 @@ assert(cell(12, 12) < cell(2, 2) / 1.4, "12x12 learns Phong better than 2x2")
 assert(info.quick == true and info.backend.used == "cpu" and info.environment.gl.renderer, "run.json records mode, backend, renderer")
 local hostname = assert(io.open("/proc/sys/kernel/hostname")):read("*l")
 assert(info.environment.host == hostname:match("^%s*(.-)%s*$"), "and the machine's name")
+-- And the build: the git commit of this checkout (CI clones it), "-dirty" with changes.
+local git = io.popen("git rev-parse HEAD 2>/dev/null"):read("*l")
+local build = info.environment.build
+assert(build == sn.build and (git and git:sub(1, 12) == build:sub(1, 12) or build == "unknown"),
+       ("the build %s, the checkout %s"):format(tostring(build), tostring(git)))
 -- A full run does not go into a quick run's folder, nor another experiment or another choice of
 -- data: their run ids are the same, and one overwrote the other's records and tables.
 local code, refused = C.run(script, { "--out", A })
