@@ -76,10 +76,12 @@ std::vector<ActivationDef> builtin_activations() {
                   [](double z, double p) { return z > 0 ? z : p * std::expm1(z); },
                   [](double z, double p) { return z > 0 ? 1.0 : p * std::exp(z); }));
   v.back().param = ActivationParam::alpha;
+  // GELU, tanh form (Hendrycks & Gimpel 2016). In f', z is clamped to +-10 where 1 - t^2 is
+  // exactly 0 (|u| > 9): z^2 overflowed float past 1.8e19 and made f' = 0 * inf = NaN.
   v.push_back(def(Builtin::gelu, "gelu",
                   "return 0.5 * z * (1.0 + sn_gelu_tanh(z));",
-                  "vec4 t = sn_gelu_tanh(z);\n"
-                  "return 0.5 * (1.0 + t) + 0.5 * z * (1.0 - t * t) * 0.7978845608028654 * (1.0 + 0.134145 * z * z);",
+                  "vec4 t = sn_gelu_tanh(z);\nvec4 c = clamp(z, -10.0, 10.0);\n"
+                  "return 0.5 * (1.0 + t) + 0.5 * c * (1.0 - t * t) * 0.7978845608028654 * (1.0 + 0.134145 * c * c);",
                   "",
                   [](double z, double) { return 0.5 * z * (1.0 + std::tanh(kGeluC * (z + kGeluK * z * z * z))); },
                   [](double z, double) {

@@ -10,6 +10,9 @@
 #pragma once
 #include <immintrin.h>
 
+#include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <type_traits>
 
 #include "nn/activation.h"
@@ -146,9 +149,17 @@ SN_INLINE V vlog(const V& x) {
 
 // sin x and cos x: x - n pi/2 in three parts (Cody-Waite), then the Cephes polynomials on
 // [-pi/4, pi/4]; absolute error ~1e-7 for |x| up to 8192. Beyond, n pi/2 is no longer exact in
-// three parts and the remainder drifts (past 2^31 n is INT_MIN, x86's conversion of a value out
-// of range), so the remainder is clamped to pi/4: the polynomials stay in [-1, 1] (sin reached
-// 13.3 and -inf), and no value for |x| <= 8192 changes.
+// three parts and the remainder drifts (sin(112330) came out as -0.7071 for -0.7082; past 2^31
+// n is INT_MIN), so lanes past 8192 (and inf, NaN) take sin and cos in double, one at a time:
+// a sine network with omega 10^4 reaches them; most vectors have none, and pay one test.
+template <class V>
+SN_INLINE bool any_lane(const mask_of<V>& m) {
+  uint64_t words[sizeof(m) / 8];
+  std::memcpy(words, &m, sizeof(m));
+  uint64_t any = 0;
+  for (uint64_t w : words) any |= w;
+  return any != 0;
+}
 template <class V>
 SN_INLINE void vsincos(const V& x, V& s_out, V& c_out) {
   const mask_of<V> n = round_int(x * 0.636619772367581343f);
@@ -169,6 +180,11 @@ SN_INLINE void vsincos(const V& x, V& s_out, V& c_out) {
   const V sx = select(odd, c, s), cx = select(odd, -s, c);
   s_out = select((q & 2) != 0, -sx, sx);
   c_out = select((q & 2) != 0, -cx, cx);
+  const mask_of<V> far = ~((x >= -8192.0f) & (x <= 8192.0f));  // NaN too
+  if (any_lane<V>(far)) [[unlikely]] {
+    for (std::size_t i = 0; i < sizeof(V) / sizeof(float); ++i)
+      if (far[i]) s_out[i] = float(std::sin(double(x[i]))), c_out[i] = float(std::cos(double(x[i])));
+  }
 }
 
 // atan x (Cephes' atanf): |x| reduced to [0, tan(pi/8)] by pi/2 - atan(1/x) or pi/4 + atan((x - 1)
@@ -241,7 +257,9 @@ SN_INLINE void act_both(const V z, float p, V& a, V& g) {
     // Exactly +-1 where tanh rounds there: fast_tanh's last ulp, times z^3 in f', is not 0.
     const V t = select(u > 9.0f, splat<V>(1.0f), select(u < -9.0f, splat<V>(-1.0f), fast_tanh(u)));
     a = 0.5f * z * (1.0f + t);
-    g = 0.5f * (1.0f + t) + (0.5f * kGeluC) * z * (1.0f - t * t) * (1.0f + 3.0f * kGeluK * z2);
+    // z clamped where 1 - t^2 is 0 anyway: z^2 past 1.8e19 made 0 * inf (activation_builtin.cpp).
+    const V c = clamp_symmetric(z, 10.0f), c2 = c * c;
+    g = 0.5f * (1.0f + t) + (0.5f * kGeluC) * c * (1.0f - t * t) * (1.0f + 3.0f * kGeluK * c2);
   } else if constexpr (B == Builtin::swish) {
     const V s = vsigmoid_exp(z);
     a = z * s;

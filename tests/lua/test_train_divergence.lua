@@ -50,4 +50,17 @@ for _, backend in ipairs(sn.backends()) do
                        epochs = 6, backend = backend, adam = { lr = 3e-3 } }[1]
   assert(r.diverged == nil and r.epochs == 6, backend .. ": a healthy run")
 end
+-- A saturated unit is not a divergence: gelu far below 0 gives f = 0 and f' = 0, where its f'
+-- was 0 * inf = NaN past |z| = 1.8e19 on both backends and the first step was flagged.
+local one_row = sn.dataset { x = { { 1 }, { 1 } }, y = { { 0.5 }, { 0.5 } }, split = 0.5 }
+for _, backend in ipairs(sn.backends()) do
+  for _, z in ipairs { -2e19, -1e30 } do
+    local net = sn.mlp { inputs = 1, hidden = { 1 }, outputs = 1, activation = "gelu" }
+    net:set_params { z, 0, 1, 0 }
+    local w = net:params()[1]  -- z as a float
+    local r = sn.train { nets = net, data = one_row, epochs = 1, batch = 1, backend = backend }[1]
+    assert(r.diverged == nil and r.steps == 1 and net:params()[1] == w,
+           ("%s gelu at z = %g: %s"):format(backend, z, r.diverged and r.diverged.reason or "weight moved"))
+  end
+end
 print("train divergence: ok")
