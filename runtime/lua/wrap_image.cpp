@@ -109,7 +109,7 @@ int w_mse(lua_State* L) {
   Compared c = compared(L, "sn.image.mse");
   const Image &a = check<Image>(L, 1, kType), &b = check<Image>(L, 2, kType);
   const double e = io::mse(a, b, c.channels, c.mask, c.mask_channel);
-  if (std::isnan(e)) {  // an error naming the pixel, as sn.image.ssim's, not a NaN to carry on with
+  if (!std::isfinite(e)) {  // an error naming the pixel, as sn.image.ssim's, not a NaN or inf to carry on with
     io::check_finite(a, c.channels, "sn.image.mse: image 1");
     io::check_finite(b, c.channels, "sn.image.mse: image 2");
   }

@@ -18,6 +18,7 @@ vec3 rgb_to_hsv(vec3 c) {
     if (mx == c.r) {
       h = (c.g - c.b) / chroma;
       if (h < 0.0) h += 6.0;
+      if (h >= 6.0) h = 0.0;  // -1e-7 + 6 rounds to 6: hue 1 is hue 0, and H stays in [0, 1)
     } else if (mx == c.g) {
       h = (c.b - c.r) / chroma + 2.0;
     } else {

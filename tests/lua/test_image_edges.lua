@@ -42,6 +42,11 @@ n:set(3, 2, { 0.5, 0 / 0, 0.5, 1 })
 for f, text in pairs { [sn.image.mse] = "sn.image.mse: image 2", [sn.image.ssim] = "ssim" } do
   local ok, err = pcall(f, g, n)
   assert(not ok and err:find(text .. ": pixel (3, 2) channel 2 is not a finite number", 1, true), tostring(err))
+  -- An infinity too (mse gave inf).
+  local inf = sn.image.new { width = 16, height = 16, channels = 4, fill = 0.5 }
+  inf:set(5, 6, { 0.5, 0.5, -1 / 0, 1 })
+  ok, err = pcall(f, g, inf)
+  assert(not ok and err:find(text .. ": pixel (5, 6) channel 3 is not a finite number", 1, true), tostring(err))
 end
 assert(sn.image.mse(g, n, { channels = 1 }) == 0, "channel 2 not compared")
 n:set(3, 2, { 0.5, 0 / 0, 0.5, 0 })

@@ -30,6 +30,8 @@ TEST(Color, HsvOfThePrimaries) {
   expect_near3(rgb_to_hsv({0.5, 0.5, 0.5}), {0, 0, 0.5}, 0);  // greys: hue 0, saturation 0
   expect_near3(rgb_to_hsv({1, 0, 0.5}), {11.0 / 12, 1, 1}, 1e-15);  // magenta-red wraps below 1
   expect_near3(hsv_to_rgb({1.0 / 6, 0.5, 0.8}), {0.8, 0.8, 0.4}, 1e-15);
+  // A hue just below 0 wraps to one that rounds to 6/6: H stays in [0, 1), as the docs say.
+  EXPECT_EQ(rgb_to_hsv({1, 0, 1e-17}).x, 0.0);
 }
 
 TEST(Color, XyzAndLabOfKnownColours) {
@@ -96,6 +98,8 @@ TEST(Color, ShaderMatchesTwinBothWaysOn100kColours) {
     EXPECT_LE(max_inv, 1e-5);
     EXPECT_LE(max_trip, 1e-5);
     if (s != ColorSpace::rgb) EXPECT_GT(max_fwd, 0.0);  // float really differs from double: the GPU ran
+    if (s == ColorSpace::hsv)  // hue in [0, 1): (1, 0, 1e-7)'s rounded to 1 in float
+      for (int i = 0; i < n; ++i) ASSERT_LT(enc[i][0], 1.0f) << rgb[i].r << " " << rgb[i].g << " " << rgb[i].b;
   }
 }
 
