@@ -163,7 +163,10 @@ Image grid(const std::vector<Panel>& panels, const GridStyle& s) {
   int title_h = s.title.empty() ? 0 : text_size(s.title, s.title_size)[1] + pad;
   int label_w = 0;
   for (const auto& l : s.row_labels) label_w = std::max(label_w, text_size(l, s.caption_size)[0] + pad);
-  int W = pad + label_w + cols * (cell_w + pad);
+  const int content_w = pad + label_w + cols * (cell_w + pad);
+  // As wide as the title too (it was cut at both ends), the cells centred under it.
+  const int W = std::max(content_w, s.title.empty() ? 0 : text_size(s.title, s.title_size)[0] + 2 * pad);
+  const int ox = (W - content_w) / 2;
   int H = pad + title_h + rows * (cell_h + cap_h + pad);
   Image out(W, H, 3);
   fill(out, s.background);
@@ -171,14 +174,14 @@ Image grid(const std::vector<Panel>& panels, const GridStyle& s) {
   if (!s.title.empty()) draw_text(out, W / 2, pad, s.title, {s.title_size, s.text, Align::center});
   for (int i = 0; i < n; ++i) {
     int r = i / cols, c = i % cols;
-    int cx = pad + label_w + c * (cell_w + pad), cy = pad + title_h + r * (cell_h + cap_h + pad);
+    int cx = ox + pad + label_w + c * (cell_w + pad), cy = pad + title_h + r * (cell_h + cap_h + pad);
     const Image& img = panels[size_t(i)].image;
     blit(out, img, cx + (cell_w - img.width) / 2, cy + (cell_h - img.height) / 2);
     draw_text(out, cx + cell_w / 2, cy + cell_h + pad / 2, panels[size_t(i)].caption, caption);
   }
   for (int r = 0; r < int(s.row_labels.size()); ++r) {
     int cy = pad + title_h + r * (cell_h + cap_h + pad) + cell_h / 2 - text_size("Ag", s.caption_size)[1] / 2;
-    draw_text(out, pad, cy, s.row_labels[size_t(r)], {s.caption_size, s.text, Align::left});
+    draw_text(out, ox + pad, cy, s.row_labels[size_t(r)], {s.caption_size, s.text, Align::left});
   }
   return out;
 }

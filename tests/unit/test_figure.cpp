@@ -96,6 +96,29 @@ TEST(Figure, GridRowsAndCaptions) {
   EXPECT_THROW(grid({{p, "a"}, {p, "b"}, {p, "c"}}, s), std::runtime_error);  // 2 rows, 1 label
 }
 
+// A title wider than the cells widens the figure (it was cut at both ends), the cells centred.
+TEST(Figure, GridIsAsWideAsItsTitle) {
+  Image p(20, 10, 3, 0.f);
+  GridStyle s;
+  s.background = {1, 1, 1};
+  s.title = "a title far wider than the one panel under it";
+  Image g = grid({{p, ""}}, s);
+  const int title_w = text_size(s.title, s.title_size)[0];
+  EXPECT_EQ(g.width, title_w + 2 * s.padding);
+  const int title_h = text_size(s.title, s.title_size)[1] + s.padding;
+  const int x0 = (g.width - (s.padding + 20 + s.padding)) / 2 + s.padding, y0 = s.padding + title_h;
+  EXPECT_TRUE(same({0, 0, 0}, g, x0, y0 + 5) && same({0, 0, 0}, g, x0 + 19, y0 + 5));  // the panel, centred
+  EXPECT_TRUE(same({1, 1, 1}, g, x0 - 1, y0 + 5) && same({1, 1, 1}, g, x0 + 20, y0 + 5));
+  // Dark text reaches near both edges: none of it was cut.
+  auto inked = [&](int x0_, int x1_) {
+    for (int y = 0; y < title_h; ++y)
+      for (int x = x0_; x < x1_; ++x)
+        if (g.at(x, y, 0) < 0.5f) return true;
+    return false;
+  };
+  EXPECT_TRUE(inked(0, s.padding + 8) && inked(g.width - s.padding - 8, g.width));
+}
+
 TEST(Figure, ColormapEndsAndMiddle) {
   Color lo = colormap(Colormap::inferno, 0), hi = colormap(Colormap::inferno, 1);
   EXPECT_NEAR(lo[0], 0x00 / 255.0, 1e-6);
