@@ -1,7 +1,7 @@
 -- Figures 4.1 and 4.2: what Phong networks render with more layers (width 6: 8, 12 and 16 hidden
 -- layers; the thesis saw blurrier, lower-contrast images as depth grows) and with wider layers (6
 -- hidden layers: width 8, 10 and 16; the thesis saw colour shifts as width grows), beside the
--- ground truth, with |error| heatmaps on one colour scale, on the training mesh and on a
+-- ground truth, with |error| heatmaps on one colour scale per mesh, on the training mesh and on a
 -- different test mesh from two views.
 --   shadenet scripts/fig_4_1_4_2_phong.lua [--quick] [--shard i/n] [--out DIR] [--backend cpu|gl|auto]
 package.path = (arg and arg[0] and arg[0]:match("^(.*)/[^/]*$") or ".") .. "/?.lua;" .. package.path

@@ -1,6 +1,6 @@
 -- Figures 4.4 and 4.5: what GGX networks of different depth (width 6: 4..14 hidden layers) and
 -- width (6 hidden layers: 4..14 neurons) render, beside the ground truth, with |error| heatmaps
--- on one colour scale, on the training mesh and on a different test mesh from two views.
+-- on one colour scale per mesh, on the training mesh and on a different test mesh from two views.
 --   shadenet scripts/fig_4_4_4_5_grids.lua [--quick] [--shard i/n] [--out DIR] [--backend cpu|gl|auto]
 package.path = (arg and arg[0] and arg[0]:match("^(.*)/[^/]*$") or ".") .. "/?.lua;" .. package.path
 local exp = require "lib.experiment"

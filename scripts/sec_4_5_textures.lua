@@ -90,6 +90,7 @@ end
 local size = E:pick({ 200, 150 }, { 480, 360 })
 local scene = E:scene { mesh = exp.meshes.train, size = size, views = 8 }
 local panels, row_labels, rows, panel_rows = {}, {}, {}, {}
+local max_error = 0  -- the heatmaps' one colour scale: rows (b)-(d) compare networks on one target
 for _, c in ipairs(cases) do
   local rec = records[c.id]
   if rec then
@@ -100,11 +101,13 @@ for _, c in ipairs(cases) do
     local truth = exp.crop(full, box)
     local img = sn.image.clamp(exp.crop(E:time("render", scene.render, scene, net, { view = 1 }), box))
     local mse = sn.image.mse(truth, img, { channels = 3, mask = truth })
-    local heat = sn.image.heatmap(sn.image.diff(truth, img), { mask = truth, label = "|error|" })
+    local diff = sn.image.diff(truth, img)
+    local _, most = sn.image.heatmap(diff, { mask = truth, colorbar = false })
+    max_error = math.max(max_error, most)
     local arch = string.format("%d x %d %s", #c.hidden, c.hidden[1], c.activation)
     panels[#panels + 1] = { image = truth, caption = "ground truth" }
     panels[#panels + 1] = { image = img, caption = string.format("network %s, MSE %.2e", arch, mse) }
-    panels[#panels + 1] = { image = heat, caption = "|error|" }
+    panels[#panels + 1] = { diff = diff, mask = truth, caption = "|error|" }  -- drawn below, on one scale
     row_labels[#row_labels + 1] = c.label
     local base = E:baseline(c.desc)
     local m = rec.result.best_val_mse
@@ -119,15 +122,23 @@ for _, c in ipairs(cases) do
     }
   end
 end
+for _, r in ipairs(panel_rows) do r.error_scale = max_error end
+for _, p in ipairs(panels) do
+  if p.diff then
+    p.image = sn.image.heatmap(p.diff, { mask = p.mask, max = max_error, label = "|error|" })
+    p.diff, p.mask = nil, nil
+  end
+end
 if #panels > 0 then
   E:figure("figures/textures.png", sn.image.grid {
     panels = panels, columns = 3, row_labels = row_labels,
     title = "Section 4.5 — textures: what a fully connected network loses, and a frequency encoding",
     caption_size = size[1] >= 300 and 14 or 11 })
   -- The per-panel MSEs, as every figure has beside it (each row's network panel; its error
-  -- heatmap shows the same difference).
+  -- heatmap shows the same difference, on the colour scale error_scale tops, one for all rows).
   E.R:write("figures/textures.csv", results.csv({ { key = "case" }, { key = "view" }, { key = "network" }, { key = "mse" },
-                                                  { key = "detail_kept" }, { key = "coarse_detail_kept" } }, panel_rows))
+                                                  { key = "detail_kept" }, { key = "coarse_detail_kept" },
+                                                  { key = "error_scale" } }, panel_rows))
 end
 E.R:table {
   title = "Section 4.5 — textured targets: validation MSE, how much detail survives, whether the texture is learned",

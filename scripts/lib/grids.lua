@@ -1,5 +1,5 @@
 -- Figures of what networks of several depths or widths render beside the ground truth, with
--- |error| heatmaps on one colour scale, on the training mesh and on a different test mesh
+-- |error| heatmaps on one colour scale per mesh, on the training mesh and on a different test mesh
 -- (the thesis' figures 4.1 and 4.2 on Phong, 4.4 and 4.5 on GGX), and a table of their
 -- validation and image MSEs. One seed per network, as the thesis shows one image each.
 --   M.run(E, { model = "phong", figures = { { file = "figures/x.png", title = "Figure 4.1 — ...",

@@ -53,6 +53,8 @@ local tpanels = C.csv(dir .. "/figures/textures.csv")
 assert(#tpanels == 4, "a per-panel MSE for each row of the textures figure: " .. #tpanels)
 for i, p in ipairs(tpanels) do
   assert(math.abs(p.mse - rows[i].image_mse) <= 1e-6 * rows[i].image_mse, "the figure's MSE is the table's image MSE")
+  -- One colour scale for every row's heatmap (each row was scaled to its own maximum).
+  assert(p.error_scale == tpanels[1].error_scale and p.error_scale > 0, "one error scale: " .. tostring(p.error_scale))
 end
 C.assert_range(rows, "val_mse", 1e-7, 0.05, "textures")
 C.assert_range(rows, "detail_kept", 0, 1.5, "textures")
