@@ -3,9 +3,9 @@
 -- weights rotated, as if the surface -- and so the light -- turned), a middle layer (one unit
 -- switched around) and the last layer (output rows swapped or scaled). Each edit is rendered on
 -- the training mesh and on the test mesh, and measured against the unedited network: how much
--- the colours changed (chromaticity) and how much the shading pattern changed (luminance
--- correlation), which is the thesis' observation in numbers: first-layer edits move highlights,
--- last-layer edits recolour.
+-- the colours changed (which colours appear, wherever) and how much the shading pattern changed
+-- (where the colour changes), which is the thesis' observation in numbers: first-layer edits
+-- move highlights, last-layer edits recolour.
 --   shadenet scripts/sec_4_4_weight_edits.lua [--quick] [--shard i/n] [--out DIR] [--backend cpu|gl|auto]
 package.path = (arg and arg[0] and arg[0]:match("^(.*)/[^/]*$") or ".") .. "/?.lua;" .. package.path
 local sn = require "shadenet"
@@ -79,27 +79,68 @@ for _, e in ipairs(edits) do
   e.apply(e.net)
 end
 
--- Colour and pattern change of `b` against `a` over the pixels covered in both.
-local function luminance(p) return 0.2126 * p[1] + 0.7152 * p[2] + 0.0722 * p[3] end
+-- Colour and pattern change of `b` against `a` over the pixels covered in both, each blind to
+-- the other (per-pixel chromaticity counted moved bands as recolouring, and luminance correlation
+-- a palette swap as a new pattern):
+--   colour: which colours appear, wherever. The palette is the RGB cells (8 levels a channel,
+--   of the display's gamma-encoded value, so dark shades are told apart) holding at least 0.5%
+--   of the pixels; the change is the share of each image's pixels whose colour's cell is not in
+--   the other's palette, the two averaged.
+--   pattern: where the colour changes. 1 - the correlation of the two images' gradient
+--   magnitudes (forward differences, summed over RGB): a band that moved moves its edges, a
+--   recoloured band keeps them.
+local function cell(p)
+  local function level(v) return math.max(0, math.min(7, math.floor(math.max(v, 0) ^ (1 / 2.2) * 8))) end
+  return level(p[1]), level(p[2]), level(p[3])
+end
+local function palette(img, covered)
+  local count, n = {}, 0
+  for _, xy in ipairs(covered) do
+    local r, g, b = cell(img:get(xy[1], xy[2]))
+    local k = r * 64 + g * 8 + b
+    count[k], n = (count[k] or 0) + 1, n + 1
+  end
+  local set = {}
+  for k, c in pairs(count) do if c >= 0.005 * n then set[k] = true end end
+  return set
+end
+-- The share of `img`'s pixels whose colour's cell is not in `set`.
+local function outside(img, covered, set)
+  local out = 0
+  for _, xy in ipairs(covered) do
+    local r, g, b = cell(img:get(xy[1], xy[2]))
+    if not set[r * 64 + g * 8 + b] then out = out + 1 end
+  end
+  return out / math.max(1, #covered)
+end
+local function gradient(img, x, y)
+  local p, r, d = img:get(x, y), img:get(x + 1, y), img:get(x, y + 1)
+  local g = 0
+  for c = 1, 3 do g = g + math.abs(r[c] - p[c]) + math.abs(d[c] - p[c]) end
+  return g
+end
 local function change(a, b)
   local w, h = a:size()
-  local n, chroma, sa, sb, saa, sbb, sab = 0, 0, 0, 0, 0, 0, 0
-  for y = 1, h do
-    for x = 1, w do
-      local p, q = a:get(x, y), b:get(x, y)
-      if p[4] > 0.5 and q[4] > 0.5 then
-        n = n + 1
-        local sp, sq = p[1] + p[2] + p[3] + 1e-6, q[1] + q[2] + q[3] + 1e-6
-        for c = 1, 3 do chroma = chroma + math.abs(p[c] / sp - q[c] / sq) end
-        local la, lb = luminance(p), luminance(q)
-        sa, sb, saa, sbb, sab = sa + la, sb + lb, saa + la * la, sbb + lb * lb, sab + la * lb
+  local covered = {}
+  for y = 1, h - 1 do
+    for x = 1, w - 1 do
+      local inside = true
+      for _, q in ipairs { { x, y }, { x + 1, y }, { x, y + 1 } } do
+        inside = inside and a:get(q[1], q[2])[4] > 0.5 and b:get(q[1], q[2])[4] > 0.5
       end
+      if inside then covered[#covered + 1] = { x, y } end
     end
+  end
+  local colour = 0.5 * (outside(b, covered, palette(a, covered)) + outside(a, covered, palette(b, covered)))
+  local n, sa, sb, saa, sbb, sab = #covered, 0, 0, 0, 0, 0
+  for _, xy in ipairs(covered) do
+    local ga, gb = gradient(a, xy[1], xy[2]), gradient(b, xy[1], xy[2])
+    sa, sb, saa, sbb, sab = sa + ga, sb + gb, saa + ga * ga, sbb + gb * gb, sab + ga * gb
   end
   local cov = sab / n - (sa / n) * (sb / n)
   local va, vb = saa / n - (sa / n) ^ 2, sbb / n - (sb / n) ^ 2
   local corr = (va > 0 and vb > 0) and cov / math.sqrt(va * vb) or 1
-  return chroma / n, 1 - corr
+  return colour, 1 - corr
 end
 
 local size = E:pick({ 200, 150 }, { 480, 360 })
@@ -127,12 +168,12 @@ for _, m in ipairs(meshes) do
   for k, e in ipairs(edits) do
     local img = render(e.net)
     panels[#panels + 1] = { image = img, caption = string.format("(%s) %s", string.char(96 + k), e.caption) }
-    local chroma, pattern = change(base, img)
+    local colour, pattern = change(base, img)
     rows[#rows + 1] = { mesh = m.label, edit = string.char(96 + k), layer = e.layer, description = e.label,
-                        chroma_change = chroma, pattern_change = pattern }
+                        colour_change = colour, pattern_change = pattern }
     panel_rows[#panel_rows + 1] = { mesh = m.label, view = m.view, panel = "(" .. string.char(96 + k) .. ") " .. e.label,
                                     mse = sn.image.mse(truth, img, { channels = 3, mask = truth }),
-                                    chroma_change = chroma, pattern_change = pattern }
+                                    colour_change = colour, pattern_change = pattern }
   end
   row_labels[#row_labels + 1] = m.label
 end
@@ -142,7 +183,7 @@ E:figure("figures/weight_edits.png", sn.image.grid {
 -- Each panel's MSE against the toon truth (an edit's too: how far it moved from the truth), and
 -- an edit's change against the fitted network.
 E.R:write("figures/weight_edits.csv", results.csv({ { key = "mesh" }, { key = "view" }, { key = "panel" }, { key = "mse" },
-                                                    { key = "chroma_change" }, { key = "pattern_change" } }, panel_rows))
+                                                    { key = "colour_change" }, { key = "pattern_change" } }, panel_rows))
 
 -- Figure 4.17: stylised looks from hand edits of the 8 x 12 network, as the thesis shows three
 -- (a watercolour-like shade, shades in different colours, strokes). Ours: (a) every middle layer's
@@ -197,9 +238,9 @@ do
     for k, st in ipairs(styles) do
       local img = render(st.net)
       p3[#p3 + 1] = { image = img, caption = string.format("(%s) %s", string.char(96 + k), st.caption) }
-      local chroma, pattern = change(base, img)
+      local colour, pattern = change(base, img)
       style_rows[#style_rows + 1] = { mesh = m.label, style = string.char(96 + k), description = st.caption,
-                                      chroma_change = chroma, pattern_change = pattern }
+                                      colour_change = colour, pattern_change = pattern }
     end
     labels3[#labels3 + 1] = m.label
   end
@@ -207,7 +248,7 @@ do
     panels = p3, columns = #styles + 2, row_labels = labels3, caption_size = size[1] >= 300 and 14 or 11,
     title = "Figure 4.17 — stylised looks from hand edits of the 8 x 12 toon network" })
   E.R:write("figures/fig_4_17_styles.csv", results.csv({ { key = "mesh" }, { key = "style" }, { key = "description" },
-    { key = "chroma_change" }, { key = "pattern_change" } }, style_rows))
+    { key = "colour_change" }, { key = "pattern_change" } }, style_rows))
 end
 
 -- Figures 4.18 and 4.19: the 6 x 8 network fitted (4.18) and edited (4.19: its last layer's red
@@ -228,19 +269,19 @@ if small_rec then
     local truth, render = view_of(m)
     local fit, ed = render(small), render(edited)
     local mse = sn.image.mse(truth, fit, { channels = 3, mask = truth })
-    local chroma, pattern = change(fit, ed)
+    local colour, pattern = change(fit, ed)
     p2[#p2 + 1] = { image = truth, caption = "toon ground truth" }
     p2[#p2 + 1] = { image = fit, caption = string.format("fitted 6 x 8, MSE %.2e", mse) }
     p2[#p2 + 1] = { image = ed, caption = "edited: red and blue rows swapped" }
     labels2[#labels2 + 1] = string.format("%s, view %d", m.label, m.view)
-    small_rows[#small_rows + 1] = { mesh = m.label, view = m.view, fitted_mse = mse, chroma_change = chroma,
+    small_rows[#small_rows + 1] = { mesh = m.label, view = m.view, fitted_mse = mse, colour_change = colour,
                                     pattern_change = pattern }
   end
   E:figure("figures/fig_4_18_4_19.png", sn.image.grid {
     panels = p2, columns = 3, row_labels = labels2, caption_size = size[1] >= 300 and 14 or 11,
     title = "Figures 4.18 and 4.19 — the 6 x 8 toon network, fitted and edited, on the training and a different mesh" })
   E.R:write("figures/fig_4_18_4_19.csv", results.csv({ { key = "mesh" }, { key = "view" },
-    { key = "fitted_mse" }, { key = "chroma_change" }, { key = "pattern_change" } }, small_rows))
+    { key = "fitted_mse" }, { key = "colour_change" }, { key = "pattern_change" } }, small_rows))
 end
 
 E.R:table {
@@ -248,8 +289,8 @@ E.R:table {
   columns = {
     { key = "mesh", align = "left" }, { key = "edit" }, { key = "layer", align = "left" },
     { key = "description", align = "left" },
-    { key = "chroma_change", header = "colour change (mean L1 chromaticity)", format = "%.4f" },
-    { key = "pattern_change", header = "pattern change (1 - luminance correlation)", format = "%.4f" },
+    { key = "colour_change", header = "colour change (pixels whose colours the other lacks)", format = "%.4f" },
+    { key = "pattern_change", header = "pattern change (1 - gradient correlation)", format = "%.4f" },
   },
   rows = rows,
   notes = {

@@ -9,7 +9,7 @@ C.assert_files(dir, { "figures/weight_edits.png", "table.md", "table.csv", "run.
                       "networks/last_swap_rb.mlp" })
 local rows = C.csv(dir .. "/table.csv")
 assert(#rows == 12, "6 edits x 2 meshes")
-C.assert_range(rows, "chroma_change", 0, 2, "edits")
+C.assert_range(rows, "colour_change", 0, 2, "edits")
 -- The figure's per-panel MSEs beside it: the fitted network and each edit, on both meshes.
 local wpanels = C.csv(dir .. "/figures/weight_edits.csv")
 assert(#wpanels == 2 * 7, "fitted + 6 edits on 2 meshes: " .. #wpanels)
@@ -19,9 +19,13 @@ local e = {}
 for _, r in ipairs(rows) do if r.mesh == "training mesh" then e[r.edit] = r end end
 -- The thesis' observation, measured: the last layer recolours without moving the shading;
 -- the first layer moves the shading.
-assert(e.e.pattern_change < 0.02 and e.e.chroma_change > 0.3, "swapping output rows recolours only")
+assert(e.e.pattern_change < 0.02 and e.e.colour_change > 0.3, "swapping output rows recolours only")
 assert(e.a.pattern_change > 10 * e.e.pattern_change and e.b.pattern_change > 10 * e.f.pattern_change,
        "first-layer edits change the pattern far more than last-layer edits")
+-- And keep the colours: the bands move, the palette stays (per-pixel chromaticity scored them
+-- 0.37 and 0.31, above the green row's recolouring).
+assert(e.a.colour_change < 0.1 and e.b.colour_change < 0.1 and e.a.colour_change < e.f.colour_change + 0.05,
+       ("first-layer edits keep the palette: %g, %g"):format(e.a.colour_change, e.b.colour_change))
 -- The saved networks are the edited ones: the swap's red row is the fitted blue row.
 local fitted, swapped = sn.load(dir .. "/networks/fitted.mlp"), sn.load(dir .. "/networks/last_swap_rb.mlp")
 local L = #fitted.layers
@@ -31,16 +35,23 @@ assert(swapped.layers[L].bias[3] == fitted.layers[L].bias[1], "saved edit: biase
 assert(C.exists(dir .. "/figures/fig_4_17_styles.png"), "figure 4.17")
 local styles = C.csv(dir .. "/figures/fig_4_17_styles.csv")
 assert(#styles == 6, "3 styles x 2 meshes")
-C.assert_range(styles, "chroma_change", 0.01, 2, "figure 4.17")
+C.assert_range(styles, "colour_change", 0, 1, "figure 4.17")
+C.assert_range(styles, "pattern_change", 0, 2, "figure 4.17")
+for _, r in ipairs(styles) do  -- every style changes the look, in colour or in pattern
+  assert(r.colour_change + r.pattern_change > 0.01, ("style %s on the %s: %g, %g"):format(r.style, r.mesh, r.colour_change, r.pattern_change))
+end
 for _, r in ipairs(styles) do
-  if r.style == "b" then assert(r.chroma_change > 0.3, "cycled colours: " .. r.chroma_change) end
+  -- Cycled colours: new colours, the same pattern (luminance correlation called it 0.26 changed).
+  if r.style == "b" then
+    assert(r.colour_change > 0.3 and r.pattern_change < 0.05, ("cycled colours: %g, %g"):format(r.colour_change, r.pattern_change))
+  end
 end
 -- Figures 4.18/4.19: the 6 x 8 network's edit recolours alike from every view, shading kept.
 assert(C.exists(dir .. "/figures/fig_4_18_4_19.png"), "figures 4.18 and 4.19")
 local views = C.csv(dir .. "/figures/fig_4_18_4_19.csv")
 assert(#views == 4, "the training view and three test-mesh views")
 C.assert_range(views, "fitted_mse", 1e-7, 0.05, "figure 4.18")
-C.assert_range(views, "chroma_change", 0.3, 2, "figure 4.19")
+C.assert_range(views, "colour_change", 0.3, 2, "figure 4.19")
 C.assert_range(views, "pattern_change", 0, 0.05, "figure 4.19")
 C.rm(dir)
 
