@@ -36,6 +36,9 @@ class OiioSource : public ImageSource {
     } else {
       ok = in_->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels);
     }
+    // A reader may finish and only record what went wrong (libjpeg fills a truncated file's
+    // missing rows with grey and says "Premature end of JPEG file"): that is a failed read too.
+    if (ok && in_->has_error()) ok = false;
     if (!ok) *error = in_->geterror();
     in_->close();
     return ok;

@@ -105,5 +105,17 @@ for _, ext in ipairs { "jpg", "bmp" } do
   local g2 = sn.image.load(dir .. "/ga." .. ext)
   assert(select(3, g2:size()) == 1 and math.abs(g2:get(4, 4)[1] - 0.8) < 0.01, ext .. ": " .. table.concat(g2:get(4, 4), " "))
 end
+-- A truncated file is refused, whatever its format: libjpeg filled a cut JPEG's missing rows
+-- with grey and the image loaded whole, without a word.
+local noisy = sn.image.new { width = 64, height = 64, channels = 3 }
+for y = 1, 64 do for x = 1, 64 do noisy:set(x, y, { (x * 7 % 13) / 13, (y * 5 % 11) / 11, ((x + y) % 7) / 7 }) end end
+for _, ext in ipairs { "jpg", "png" } do
+  local whole = noisy:save(dir .. "/whole." .. ext)
+  local bytes = sn.fs.read(whole)
+  sn.fs.write(dir .. "/cut." .. ext, bytes:sub(1, math.floor(#bytes * 0.7)))
+  local ok, err = pcall(sn.image.load, dir .. "/cut." .. ext)
+  assert(not ok and tostring(err):find("cut." .. ext, 1, true), ext .. ": a truncated file loaded")
+  assert(sn.image.load(whole):size() == 64, ext .. ": the whole file loads")
+end
 C.rm(dir)
 print("ok")
