@@ -298,7 +298,10 @@ E.R:table {
                   rec.result.best_val_mse, exp.recipe(epochs), E:data_note()),
     string.format("Fitted network on the unseen meshes: image MSE %.4g, SSIM %.4f. %s", rec.result.unseen_mse or 0 / 0,
                   rec.result.unseen_ssim or 0 / 0, exp.unseen_note()),
-    "Chromaticity = rgb / (r + g + b) per pixel; both measures over pixels covered in both renderings.",
+    "Colour change: the share of pixels whose colour (an RGB cell, 8 levels a channel of the gamma-encoded value) "
+      .. "the other rendering's palette (the cells holding 0.5% of its pixels or more) lacks, both ways averaged: "
+      .. "which colours appear, wherever they lie. Pattern change: 1 - the correlation of the two renderings' "
+      .. "gradient magnitudes: where the colour changes. Both over the pixels covered in both renderings.",
     "Figure 4.17 (figures/fig_4_17_styles.png and .csv): three stylised edits of the 8 x 12 network, measured the same way.",
     small_rec and string.format("Figures 4.18 and 4.19 (figures/fig_4_18_4_19.png and .csv): the thesis' 6 x 8 network, "
                                 .. "min val MSE %.6f, fitted and with its red and blue output rows swapped, on the training "
