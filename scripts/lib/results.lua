@@ -30,13 +30,19 @@ end
 
 function results.write_json(path, value) return results.write_file(path, json.encode(value, "  ") .. "\n") end
 
--- Writes { [path] = value, ... } as JSON files, each whole, flushed to the disk together
--- (sn.fs.write_all: one syncfs, not an fsync per file).
+-- Writes { [path] = content, ... }, each whole, flushed to the disk together (sn.fs.write_all:
+-- one syncfs, not an fsync per file); a failure before the renames (a full disk) leaves every
+-- old file as it was, so files that belong together stay one generation.
+function results.write_files(files)
+  local ok, err = pcall(sn.fs.write_all, files)
+  if not ok then error(err, 0) end
+end
+
+-- Writes { [path] = value, ... } as JSON files, together (results.write_files).
 function results.write_jsons(values)
   local files = {}
   for path, value in pairs(values) do files[path] = json.encode(value, "  ") .. "\n" end
-  local ok, err = pcall(sn.fs.write_all, files)
-  if not ok then error(err, 0) end
+  results.write_files(files)
 end
 
 function results.read_json(path)
@@ -193,8 +199,7 @@ function Results:write_all(files)
   end
   table.sort(rels)
   for _, rel in ipairs(rels) do self.written[#self.written + 1] = rel end
-  local ok, err = pcall(sn.fs.write_all, paths)
-  if not ok then error(err, 0) end
+  results.write_files(paths)
 end
 
 function Results:json(rel, value)
