@@ -1,12 +1,22 @@
--- Line and scatter plots through gnuplot (pngcairo). The plotted data is written first as a CSV
--- beside the PNG (series,x,y[,label]) and gnuplot reads that very file, so the CSV is exactly
--- what the picture shows.
+-- Line and scatter plots through gnuplot (pngcairo). The plotted data goes into a CSV
+-- (series,x,y[,label]) that gnuplot reads, and the very same bytes are kept beside the PNG, so
+-- the CSV is exactly what the picture shows.
+local sn = require "shadenet"
 local results = require "lib.results"
 local options = require "lib.options"
 
 local plot = {}
 
-local function q(s) return '"' .. tostring(s):gsub('\\', '\\\\'):gsub('"', '\\"') .. '"' end
+-- A gnuplot string literal: single quotes, where gnuplot runs no `command` and expands no
+-- escapes (in double quotes a title's backquotes ran a shell command); a newline is joined in.
+local function q(s)
+  local parts = {}
+  for line in (tostring(s) .. "\n"):gmatch("(.-)\n") do parts[#parts + 1] = "'" .. line:gsub("'", "''") .. "'" end
+  return table.concat(parts, '."\\n".')
+end
+
+-- A word for sh: single quotes, where nothing expands (Lua's %q is not shell quoting: "$(...)" ran).
+local function sh_quote(s) return "'" .. tostring(s):gsub("'", "'\\''") .. "'" end
 
 -- SHADENET_PLOTS=later writes each plot's CSV and gnuplot script but does not run gnuplot (a
 -- machine without it: a lent GPU); tools/draw_plots.sh DIR draws them afterwards. The script
@@ -20,29 +30,45 @@ local function plots_later()
 end
 local later = plots_later()  -- checked when a script starts, not after its work
 
--- This process's id: a plot's temporary name is its own (".NAME.png.tmpPID", which
--- sn.fs.remove_stale_temporaries knows), so two processes plotting into one folder never take
--- each other's file (a fixed NAME.png.tmp.png made one of two fail half the time).
-local ffi = require "ffi"
-pcall(ffi.cdef, "int getpid(void);")
-local pid = tostring(ffi.C.getpid())
+-- gnuplot draws in a private scratch folder (removed when the script ends) under fixed names, so
+-- no path of the caller's reaches the shell or gnuplot's command line, a failed or killed
+-- gnuplot leaves nothing in plots/, and its PNG is checked before it replaces the old one.
+local work
+local function workdir()
+  work = work or sn.fs.tempdir("plot")
+  return work
+end
 
--- Runs `script` (written beside the PNG as NAME.gp, which draws NAME.png when run by hand) with
--- its output at `tmp`, a name in the same folder.
-local function run_gnuplot(script, png, tmp)
-  local gp = png:gsub("%.png$", "") .. ".gp"
-  results.write_file(gp, script)
-  if later then return nil end
-  local dir, name = gp:match("^(.*)/([^/]*)$")
+-- A PNG ends with its IEND chunk; cairo reports success on a full disk and leaves it cut short.
+local function whole_png(bytes)
+  return #bytes >= 20 and bytes:sub(1, 8) == "\137PNG\r\n\26\n" and bytes:sub(-12) == "\0\0\0\0IEND\174\66\96\130"
+end
+
+-- Runs `script` (kept beside the PNG as NAME.gp) on `csv` in the scratch folder; returns the PNG's
+-- bytes. Errors name `png`, the plot's real path, and carry gnuplot's output.
+local function draw(script, csv, png)
+  local dir = workdir()
+  results.write_file(dir .. "/plot.gp", script)
+  results.write_file(dir .. "/data.csv", csv)
+  os.remove(dir .. "/plot.png")  -- never mistake the last plot's picture for this one's
   -- The output through a pipe, the exit status as its last line (LuaJIT's close does not give it).
-  local pipe = assert(io.popen(string.format("cd %q && gnuplot -e %q %q 2>&1; printf '\\n%%d\\n' $?", dir or ".",
-                                             string.format("out = '%s'", tmp), name or gp)))
+  local pipe = assert(io.popen(string.format(
+    "{ cd -- %s && gnuplot -e \"out = 'plot.png'; data = 'data.csv'\" plot.gp; } 2>&1; printf '\\n%%d\\n' $?", sh_quote(dir))))
   local out = pipe:read("*a")
   pipe:close()
   local status
   out = out:gsub("\n(%d+)\n$", function(code) status = tonumber(code); return "" end)
-  if status ~= 0 then error("gnuplot failed on " .. gp .. ":\n" .. out, 0) end
-  return out
+  if status ~= 0 then
+    local hint = status == 127 and "\n(no gnuplot? SHADENET_PLOTS=later leaves the plot for tools/draw_plots.sh)" or ""
+    error(string.format("cannot draw %s: gnuplot failed (exit status %s):\n%s%s", png, tostring(status), out, hint), 0)
+  end
+  local bytes = results.read_file(dir .. "/plot.png") or ""
+  os.remove(dir .. "/plot.png")
+  if not whole_png(bytes) then
+    error(string.format("cannot draw %s: gnuplot's PNG in %s is not whole (%d bytes, no IEND chunk at its end: a full "
+                        .. "disk?)%s", png, dir, #bytes, out ~= "" and ":\n" .. out or ""), 0)
+  end
+  return bytes
 end
 
 local styles = { lines = "lines lw 2", linespoints = "linespoints lw 2 pt %d ps 0.8", points = "points pt %d ps 1.0" }
@@ -51,8 +77,9 @@ local styles = { lines = "lines lw 2", linespoints = "linespoints lw 2 pt %d ps 
 --             key = "outside right top" (gnuplot's `set key` words), series = { {name, x = {...}, y = {...}, style = "lines",
 --             color = "#rrggbb", dash = 2, point = 6, labels = {...}}, ... } } -> path of the PNG
 -- Non-finite y values are dropped (gnuplot cannot draw them) and counted in the returned
--- second value, so a diverged curve shows as a gap, never as a silent zero. With
--- SHADENET_PLOTS=later the first value is the gnuplot script's path: no PNG yet.
+-- second value, so a diverged curve shows as a gap, never as a silent zero. The PNG, its CSV and
+-- NAME.gp are written together (sn.fs.write_all): a failure leaves the old three as they were.
+-- With SHADENET_PLOTS=later the first value is the gnuplot script's path: no PNG yet.
 plot.keys = { "path", "title", "xlabel", "ylabel", "logx", "logy", "width", "height", "key", "series", "xtics", "xrange",
               "yrange" }
 plot.series_keys = { "name", "x", "y", "style", "color", "dash", "point", "labels" }
@@ -61,8 +88,8 @@ function plot.lines(p)
   options.check_list(p.series, "plot.lines series", plot.series_keys, { "name", "x", "y" })
   assert(p.path and p.path:match("%.png$"), "plot.lines: path must end in .png")
   assert(p.series and #p.series > 0, "plot.lines: no series")
-  local csv_path = p.path:gsub("%.png$", ".csv")
-  local png_name, csv_name = p.path:match("[^/]*$"), csv_path:match("[^/]*$")  -- gnuplot runs in their folder
+  local stem = p.path:gsub("%.png$", "")
+  local png_name = p.path:match("[^/]*$")
   local lines = { "series,x,y,label" }
   local dropped = 0
   for _, s in ipairs(p.series) do
@@ -79,14 +106,17 @@ function plot.lines(p)
       end
     end
   end
-  results.write_file(csv_path, table.concat(lines, "\n") .. "\n")
+  local csv = table.concat(lines, "\n") .. "\n"
 
   local g = {
     -- noenhanced: titles, labels and series names are plain text ("my_sweep", "L*a*b*", "x^2"),
     -- never gnuplot's markup for sub- and superscripts.
     string.format("set terminal pngcairo size %d,%d font 'DejaVu Sans,10' noenhanced", p.width or 800, p.height or 520),
-    -- `out` when the caller sets it (gnuplot -e "out = '...'"), else the PNG beside the script.
-    "if (!exists('out')) out = " .. q(png_name),
+    -- `out` and `data` when the caller sets them (gnuplot -e "out = '...'; data = '...'"), else
+    -- the files beside the script; "./" because gnuplot reads a name starting with "<" (data)
+    -- or "|" (output) as a shell command.
+    "if (!exists('out')) out = " .. q("./" .. png_name),
+    "if (!exists('data')) data = " .. q("./" .. stem:match("[^/]*$") .. ".csv"),
     "set output out",
     "set datafile separator ','",
     -- The key goes outside the plot area by default: inside, its opaque box hid the points
@@ -104,26 +134,25 @@ function plot.lines(p)
   if p.yrange then g[#g + 1] = string.format("set yrange [%s:%s]", p.yrange[1] or "*", p.yrange[2] or "*") end
   if p.xrange then g[#g + 1] = string.format("set xrange [%s:%s]", p.xrange[1] or "*", p.xrange[2] or "*") end
   local parts = {}
-  for i, s in ipairs(p.series) do
+  for _, s in ipairs(p.series) do
     local sel = string.format("(strcol(1) eq %s ? $3 : NaN)", q(s.name))
     local style = styles[s.style or "lines"] or error("plot.lines: unknown style '" .. tostring(s.style) ..
                                                       "' (valid: lines, linespoints, points)", 0)
     style = style:gsub("%%d", tostring(s.point or 7))  -- gnuplot point type: 7 disc, 6 circle, 4 square, ...
     local color = (s.color and (" lc rgb " .. q(s.color)) or "") .. (s.dash and (" dt " .. s.dash) or "")
-    parts[#parts + 1] = string.format("%s skip 1 using 2:%s with %s%s title %s", q(csv_name), sel, style, color, q(s.name))
+    parts[#parts + 1] = string.format("data skip 1 using 2:%s with %s%s title %s", sel, style, color, q(s.name))
     if s.labels then
-      parts[#parts + 1] = string.format("%s skip 1 using 2:%s:4 with labels offset 0.6,0.6 left font ',8' notitle",
-                                        q(csv_name), sel)
+      parts[#parts + 1] = string.format("data skip 1 using 2:%s:4 with labels offset 0.6,0.6 left font ',8' notitle", sel)
     end
   end
   g[#g + 1] = "plot " .. table.concat(parts, ", \\\n     ")
   g[#g + 1] = "unset output"
-  local tmp_name = "." .. png_name .. ".tmp" .. pid
-  local tmp = p.path:sub(1, #p.path - #png_name) .. tmp_name
-  if not run_gnuplot(table.concat(g, "\n") .. "\n", p.path, tmp_name) then return (p.path:gsub("%.png$", ".gp")), dropped end
-  local ok, err = os.rename(tmp, p.path)
-  if not ok then error("cannot write " .. p.path .. ": " .. tostring(err), 0) end
-  return p.path, dropped
+  local script = table.concat(g, "\n") .. "\n"
+
+  local files = { [stem .. ".csv"] = csv, [stem .. ".gp"] = script }
+  if not later then files[p.path] = draw(script, csv, p.path) end
+  results.write_files(files)
+  return later and stem .. ".gp" or p.path, dropped
 end
 
 return plot

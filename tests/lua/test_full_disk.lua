@@ -94,9 +94,59 @@ local ok, err = pcall(function()
   assert(read(dir .. "/t.md") == old_md and read(dir .. "/t.csv") == old_csv, "the old table survives, both files")
   only { "t.csv", "t.md" }
 
+  -- A plot (lib.plot) that does not fit leaves its old PNG, CSV and .gp: gnuplot's cairo reported
+  -- success on the full disk, and its PNG, cut short at 8192 bytes, replaced the good one.
+  os.remove(dir .. "/t.md"); os.remove(dir .. "/t.csv")
+  local plot = require "lib.plot"
+  local xs, ys = {}, {}
+  for i = 1, 40 do xs[i], ys[i] = i, math.sin(i) + 2 end
+  local spec = { path = dir .. "/p.png", title = "a plot", series = { { name = "a", x = xs, y = ys, style = "linespoints" } } }
+  plot.lines(spec)
+  local old_plot = { read(dir .. "/p.png"), read(dir .. "/p.csv"), read(dir .. "/p.gp") }
+  assert(#old_plot[1] > 16 * 1024, "a plot bigger than the free space left below: " .. #old_plot[1] .. " bytes")
+  local function free()
+    local p = io.popen(("df -B1 --output=avail %q | tail -1"):format(dir))
+    local n = tonumber(p:read("*a"))
+    p:close()
+    return n
+  end
+  local fills = 0
+  local function fill_to(bytes)  -- a new file each time: rewriting one needs room for two
+    fills = fills + 1
+    local f = assert(io.open(dir .. "/fill" .. fills, "wb"))
+    assert(f:write(string.rep("f", free() - bytes)) and f:close())
+  end
+  fill_to(16 * 1024)
+  local okp, ep = pcall(plot.lines, spec)
+  assert(not okp and tostring(ep):find("No space left on device", 1, true) and tostring(ep):find(dir .. "/p.", 1, true), tostring(ep))
+  assert(read(dir .. "/p.png") == old_plot[1] and read(dir .. "/p.csv") == old_plot[2] and read(dir .. "/p.gp") == old_plot[3],
+         "the old plot survives, all three files")
+  only { "fill1", "p.csv", "p.gp", "p.png" }
+
+  -- gnuplot's own PNG cut short (its scratch folder, under TMPDIR, on the full disk) is refused
+  -- before it reaches the plot's folder.
+  sn.fs.mkdir(dir .. "/tmp")
+  fill_to(12 * 1024)
+  local check = require "script_check"
+  local target = sn.fs.tempdir("full_disk_plot") .. "/q.png"
+  spec.path = target
+  plot.lines(spec)
+  local old_q = read(target)
+  local child = check.child("full_disk_plot", ([[
+package.path = "scripts/?.lua;" .. package.path
+local xs, ys = {}, {}
+for i = 1, 40 do xs[i], ys[i] = i, math.sin(i) + 2 end
+require "lib.plot".lines { path = %q, title = "a plot", series = { { name = "a", x = xs, y = ys, style = "linespoints" } } }
+]]):format(target))
+  local code, out = check.run(child, {}, { TMPDIR = dir .. "/tmp" })
+  assert(code == 1 and out:find("cannot draw " .. target .. ": gnuplot's PNG in " .. dir .. "/tmp/shadenet-plot-", 1, true)
+         and out:find("is not whole", 1, true), out)
+  assert(read(target) == old_q, "the old plot survives")
+  assert(#sn.fs.list(dir .. "/tmp") == 0, "the scratch folder is removed: " .. table.concat(sn.fs.list(dir .. "/tmp"), " "))
+
   -- Live mode's screenshot and recording on a full disk: an error naming the file, and no empty
   -- screenshot-NNNN.png or record-NNNN folder left claimed for them.
-  os.remove(dir .. "/t.md"); os.remove(dir .. "/t.csv")
+  for _, f in ipairs(sn.fs.list(dir)) do os.execute(("rm -rf %q"):format(dir .. "/" .. f)) end
   local filler = assert(io.open(dir .. "/filler", "wb"))
   filler:write(string.rep("f", 63000))
   filler:close()
