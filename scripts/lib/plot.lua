@@ -76,10 +76,12 @@ local styles = { lines = "lines lw 2", linespoints = "linespoints lw 2 pt %d ps 
 -- plot.lines{ path = "DIR/plots/NAME.png", title, xlabel, ylabel, logx, logy, width, height,
 --             key = "outside right top" (gnuplot's `set key` words), series = { {name, x = {...}, y = {...}, style = "lines",
 --             color = "#rrggbb", dash = 2, point = 6, labels = {...}}, ... } } -> path of the PNG
--- Non-finite y values are dropped (gnuplot cannot draw them) and counted in the returned
--- second value, so a diverged curve shows as a gap, never as a silent zero. The PNG, its CSV and
--- NAME.gp are written together (sn.fs.write_all): a failure leaves the old three as they were.
--- With SHADENET_PLOTS=later the first value is the gnuplot script's path: no PNG yet.
+-- Non-finite y values (and y <= 0 with logy) are dropped (gnuplot cannot draw them) and counted
+-- in the returned second value, so a diverged curve shows as a gap, never as a silent zero. A
+-- series left with no point keeps its place in the key, named "NAME (no finite values)" ("no
+-- positive values" on a log axis): the reader sees it ran and why no line is drawn. The PNG, its
+-- CSV and NAME.gp are written together (sn.fs.write_all): a failure leaves the old three as they
+-- were. With SHADENET_PLOTS=later the first value is the gnuplot script's path: no PNG yet.
 plot.keys = { "path", "title", "xlabel", "ylabel", "logx", "logy", "width", "height", "key", "series", "xtics", "xrange",
               "yrange" }
 plot.series_keys = { "name", "x", "y", "style", "color", "dash", "point", "labels" }
@@ -91,20 +93,25 @@ function plot.lines(p)
   local stem = p.path:gsub("%.png$", "")
   local png_name = p.path:match("[^/]*$")
   local lines = { "series,x,y,label" }
-  local dropped = 0
-  for _, s in ipairs(p.series) do
+  local dropped, drawn, empty = 0, 0, {}
+  for k, s in ipairs(p.series) do
     assert(s.name and not s.name:find('[,"\n]'), "plot.lines: series names must not contain , \" or newlines")
     assert(#s.x == #s.y, "plot.lines: series '" .. s.name .. "' has " .. #s.x .. " x and " .. #s.y .. " y values")
+    local kept, finite = 0, 0
     for i = 1, #s.x do
       local x, y = s.x[i], s.y[i]
-      local bad = y ~= y or y == math.huge or y == -math.huge or (p.logy and y <= 0)
-      if bad then
+      local nonfinite = y ~= y or y == math.huge or y == -math.huge
+      if not nonfinite then finite = finite + 1 end
+      if nonfinite or (p.logy and y <= 0) then
         dropped = dropped + 1
       else
         local label = s.labels and s.labels[i] or ""
         lines[#lines + 1] = string.format("%s,%.9g,%.9g,%s", s.name, x, y, label)
+        kept = kept + 1
       end
     end
+    drawn = drawn + kept
+    if kept == 0 then empty[k] = finite > 0 and " (no positive values)" or " (no finite values)" end
   end
   local csv = table.concat(lines, "\n") .. "\n"
 
@@ -131,20 +138,31 @@ function plot.lines(p)
   if p.logx then g[#g + 1] = "set logscale x" end
   if p.logy then g[#g + 1] = "set logscale y" g[#g + 1] = "set format y '%.0e'" end
   if p.xtics then g[#g + 1] = "set xtics " .. p.xtics end
-  if p.yrange then g[#g + 1] = string.format("set yrange [%s:%s]", p.yrange[1] or "*", p.yrange[2] or "*") end
-  if p.xrange then g[#g + 1] = string.format("set xrange [%s:%s]", p.xrange[1] or "*", p.xrange[2] or "*") end
+  -- With no point at all gnuplot finds no range and fails ("x range is invalid"), and it drops a
+  -- data file without rows from the key: the picture is an empty frame whose key says why (a
+  -- sweep where every run diverged), each series a `keyentry`, a NaN function giving the axes.
+  local nothing = drawn == 0
+  for _, axis in ipairs { "y", "x" } do
+    local r = p[axis .. "range"]
+    if r or nothing then
+      r = r or {}
+      g[#g + 1] = string.format("set %srange [%s:%s]", axis, r[1] or (nothing and 1) or "*", r[2] or (nothing and 10) or "*")
+    end
+  end
   local parts = {}
-  for _, s in ipairs(p.series) do
+  for k, s in ipairs(p.series) do
     local sel = string.format("(strcol(1) eq %s ? $3 : NaN)", q(s.name))
     local style = styles[s.style or "lines"] or error("plot.lines: unknown style '" .. tostring(s.style) ..
                                                       "' (valid: lines, linespoints, points)", 0)
     style = style:gsub("%%d", tostring(s.point or 7))  -- gnuplot point type: 7 disc, 6 circle, 4 square, ...
     local color = (s.color and (" lc rgb " .. q(s.color)) or "") .. (s.dash and (" dt " .. s.dash) or "")
-    parts[#parts + 1] = string.format("data skip 1 using 2:%s with %s%s title %s", sel, style, color, q(s.name))
-    if s.labels then
+    parts[#parts + 1] = string.format("%s with %s%s title %s", nothing and "keyentry" or "data skip 1 using 2:" .. sel,
+                                      style, color, q(s.name .. (empty[k] or "")))
+    if s.labels and not nothing then
       parts[#parts + 1] = string.format("data skip 1 using 2:%s:4 with labels offset 0.6,0.6 left font ',8' notitle", sel)
     end
   end
+  if nothing then parts[#parts + 1] = "NaN notitle" end
   g[#g + 1] = "plot " .. table.concat(parts, ", \\\n     ")
   g[#g + 1] = "unset output"
   local script = table.concat(g, "\n") .. "\n"

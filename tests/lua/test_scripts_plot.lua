@@ -1,7 +1,8 @@
 -- lib.plot's files: a plot's path never reaches the shell or gnuplot as code (a folder named
 -- "$(touch ...)", one starting with "-", quotes and backquotes in names and titles); a failing
 -- gnuplot's error carries its output and leaves the old PNG, CSV and .gp and no temporary; the
--- .gp draws the plot again by hand in its folder. The full disk: tests/lua/test_full_disk.lua.
+-- .gp draws the plot again by hand in its folder; a series with no point says so in the key.
+-- The full disk: tests/lua/test_full_disk.lua.
 package.path = "scripts/?.lua;" .. package.path
 local sn = require "shadenet"
 local check = require "script_check"
@@ -58,5 +59,23 @@ local code, out = check.run(child, {}, { PATH = "/nonexistent" })
 assert(code == 1 and out:find("cannot draw " .. tmp .. "/nognuplot/p.png: gnuplot failed (exit status 127):", 1, true)
        and out:find("gnuplot: not found", 1, true) and out:find("SHADENET_PLOTS=later", 1, true), out)
 assert(not sn.fs.exists(tmp .. "/nognuplot"), "nothing written: " .. out)
+
+-- ---- a series with no point to draw ----
+-- It keeps its key entry, which says why no line is there (fig. 4.11's diverged "exponential"
+-- had a key entry and no line, as if hidden under another); a plot with no point at all is an
+-- empty frame with its key, not gnuplot's "x range is invalid".
+local _, dropped = plot.lines { path = tmp .. "/empty/e.png", logy = true, series = {
+  { name = "fine", x = { 1, 2 }, y = { 1, 2 } }, { name = "diverged", x = { 1, 2 }, y = { 0 / 0, math.huge } },
+  { name = "at zero", x = { 1, 2 }, y = { 0, -1 } } } }
+local gp = read(tmp .. "/empty/e.gp")
+assert(dropped == 4 and gp:find("title 'fine',", 1, true) and gp:find("title 'diverged (no finite values)',", 1, true) and
+       gp:find("title 'at zero (no positive values)'\n", 1, true), gp)
+assert(read(tmp .. "/empty/e.csv") == "series,x,y,label\nfine,1,1,\nfine,2,2,\n", read(tmp .. "/empty/e.csv"))
+_, dropped = plot.lines { path = tmp .. "/empty/all.png", logy = true,
+                          series = { { name = "diverged", x = { 1, 2 }, y = { 0 / 0, 0 / 0 } } } }
+w, h = sn.image.load(tmp .. "/empty/all.png"):size()
+assert(dropped == 2 and w == 800 and h == 520, "a plot of nothing is drawn")
+gp = read(tmp .. "/empty/all.gp")  -- gnuplot leaves a data file without rows out of the key
+assert(gp:find("plot keyentry with lines lw 2 title 'diverged (no finite values)'", 1, true), gp)
 
 print("plot files: ok")
