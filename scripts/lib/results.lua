@@ -178,7 +178,9 @@ function results.open(o, name)
   end
   dir = dir:gsub("/+$", "")
   sn.fs.mkdir(dir)
-  results.clean_temps(dir)
+  -- Every folder a script writes into here (runs/: lib.sweep); a killed writer leaves a
+  -- ".NAME.tmpPID" beside a figure or a plot as well as beside a table.
+  for _, sub in ipairs { "", "/plots", "/figures" } do results.clean_temps(dir .. sub) end
   return setmetatable({ dir = dir, name = name, written = {} }, Results)
 end
 

@@ -80,6 +80,16 @@ assert(sn.fs.exists(tmp .. "/sub/.a.txt.tmp4242") == nil and sn.fs.exists(tmp ..
        sn.fs.exists(tmp .. "/sub/.c.txt.tmp12x") == "file" and sn.fs.exists(tmp .. "/sub/d.txt.tmp5") == "file")
 assert(sn.fs.remove_stale_temporaries(tmp .. "/sub", 0) == 1, "age 0: the fresh one too")
 for _, name in ipairs { ".c.txt.tmp12x", "d.txt.tmp5" } do os.remove(tmp .. "/sub/" .. name) end
+-- Opening a results folder cleans its plots/ and figures/ too, where a killed gnuplot or image
+-- writer left its temporary (only the folder itself and runs/ were cleaned).
+for _, rel in ipairs { "/.table.md.tmp11", "/plots/.p.png.tmp12", "/figures/.f.png.tmp13", "/figures/.g.png.tmp14" } do
+  results.write_file(tmp .. "/opened" .. rel, "half")
+end
+os.execute(("touch -d '2 minutes ago' %q %q %q"):format(tmp .. "/opened/.table.md.tmp11", tmp .. "/opened/plots/.p.png.tmp12",
+                                                        tmp .. "/opened/figures/.f.png.tmp13"))
+results.open({ out = tmp .. "/opened" }, "opened")
+assert(#sn.fs.list(tmp .. "/opened/plots") == 0 and table.concat(sn.fs.list(tmp .. "/opened/figures")) == ".g.png.tmp14" and
+       not sn.fs.exists(tmp .. "/opened/.table.md.tmp11"), "stale temporaries left in plots/ or figures/")
 local cols = { { key = "layers" }, { key = "width" }, { key = "ours", format = "%.6f" }, { key = "thesis", format = "%.6f" } }
 local rows = { { layers = 2, width = 4, ours = 0.0012346, thesis = 0.000736 }, { layers = 2, width = 6, ours = 0.5 } }
 assert(results.csv(cols, rows) == "layers,width,ours,thesis\n2,4,0.0012346,0.000736\n2,6,0.5,\n", "csv")
