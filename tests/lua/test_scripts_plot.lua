@@ -1,8 +1,8 @@
 -- lib.plot's files: a plot's path never reaches the shell or gnuplot as code (a folder named
 -- "$(touch ...)", one starting with "-", quotes and backquotes in names and titles); a failing
 -- gnuplot's error carries its output and leaves the old PNG, CSV and .gp and no temporary; the
--- .gp draws the plot again by hand in its folder; a series with no point says so in the key.
--- The full disk: tests/lua/test_full_disk.lua.
+-- .gp draws the plot again by hand in its folder, and tools/draw_plots.sh draws a plot left for
+-- later there; a series with no point says so in the key. The full disk: test_full_disk.lua.
 package.path = "scripts/?.lua;" .. package.path
 local sn = require "shadenet"
 local check = require "script_check"
@@ -77,5 +77,24 @@ w, h = sn.image.load(tmp .. "/empty/all.png"):size()
 assert(dropped == 2 and w == 800 and h == 520, "a plot of nothing is drawn")
 gp = read(tmp .. "/empty/all.gp")  -- gnuplot leaves a data file without rows out of the key
 assert(gp:find("plot keyentry with lines lw 2 title 'diverged (no finite values)'", 1, true), gp)
+
+-- ---- left for later, drawn by tools/draw_plots.sh ----
+local later_dir = tmp .. "/later/-x/it's"
+child = check.child("later", ([[
+package.path = "scripts/?.lua;" .. package.path
+print((require "lib.plot".lines { path = %q, series = { { name = "a", x = { 1, 2 }, y = { 1, 2 } } } }))
+]]):format(later_dir .. "/it's.png"))
+out = check.ok(child, {}, { SHADENET_PLOTS = "later" })
+assert(out == later_dir .. "/it's.gp\n" and listing(later_dir) == "it's.csv | it's.gp", out .. listing(later_dir))
+out = check.output("tools/draw_plots.sh " .. sh_quote(tmp .. "/later"))
+assert(out:find("1 plot(s) drawn", 1, true), out)
+w, h = sn.image.load(later_dir .. "/it's.png"):size()
+assert(w == 800 and h == 520 and listing(later_dir) == "it's.csv | it's.gp | it's.png", listing(later_dir))
+-- A script gnuplot fails on: its words in the error, nothing left beside it (a 0-byte temporary was).
+results.write_file(tmp .. "/later2/b.gp", "set terminal pngcairo\nset output out\nnonsense_command\n")
+out = check.output("{ tools/draw_plots.sh " .. sh_quote(tmp .. "/later2") .. "; echo exit $?; }")
+assert(out:find("draw_plots.sh: gnuplot failed on " .. tmp .. "/later2/b.gp:", 1, true) and out:find("nonsense_command", 1, true)
+       and out:find("exit 1\n$"), out)
+assert(listing(tmp .. "/later2") == "b.gp", "files left: " .. listing(tmp .. "/later2"))
 
 print("plot files: ok")
