@@ -88,15 +88,23 @@ plot.series_keys = { "name", "x", "y", "style", "color", "dash", "point", "label
 function plot.lines(p)
   options.check(p, "plot.lines", plot.keys, { "path", "series" })
   options.check_list(p.series, "plot.lines series", plot.series_keys, { "name", "x", "y" })
-  assert(p.path and p.path:match("%.png$"), "plot.lines: path must end in .png")
-  assert(p.series and #p.series > 0, "plot.lines: no series")
+  -- Mistakes in the call are errors at the caller's line (options.error), not at this file's.
+  if not (type(p.path) == "string" and p.path:match("%.png$")) then options.error("plot.lines: path must end in .png") end
+  if #p.series == 0 then options.error("plot.lines: no series") end
   local stem = p.path:gsub("%.png$", "")
   local png_name = p.path:match("[^/]*$")
   local lines = { "series,x,y,label" }
   local dropped, drawn, empty = 0, 0, {}
   for k, s in ipairs(p.series) do
-    assert(s.name and not s.name:find('[,"\n]'), "plot.lines: series names must not contain , \" or newlines")
-    assert(#s.x == #s.y, "plot.lines: series '" .. s.name .. "' has " .. #s.x .. " x and " .. #s.y .. " y values")
+    if type(s.name) ~= "string" or s.name:find('[,"\n]') then
+      options.error("plot.lines: series names must be strings without , \" or newlines")
+    end
+    if #s.x ~= #s.y then
+      options.error("plot.lines: series '" .. s.name .. "' has " .. #s.x .. " x and " .. #s.y .. " y values")
+    end
+    if not styles[s.style or "lines"] then
+      options.error("plot.lines: unknown style '" .. tostring(s.style) .. "' (valid: lines, linespoints, points)")
+    end
     local kept, finite = 0, 0
     for i = 1, #s.x do
       local x, y = s.x[i], s.y[i]
@@ -152,8 +160,7 @@ function plot.lines(p)
   local parts = {}
   for k, s in ipairs(p.series) do
     local sel = string.format("(strcol(1) eq %s ? $3 : NaN)", q(s.name))
-    local style = styles[s.style or "lines"] or error("plot.lines: unknown style '" .. tostring(s.style) ..
-                                                      "' (valid: lines, linespoints, points)", 0)
+    local style = styles[s.style or "lines"]
     style = style:gsub("%%d", tostring(s.point or 7))  -- gnuplot point type: 7 disc, 6 circle, 4 square, ...
     local color = (s.color and (" lc rgb " .. q(s.color)) or "") .. (s.dash and (" dt " .. s.dash) or "")
     parts[#parts + 1] = string.format("%s with %s%s title %s", nothing and "keyentry" or "data skip 1 using 2:" .. sel,
