@@ -16,6 +16,33 @@ namespace sn::live {
 
 namespace {
 StdinReader* g_editing = nullptr;  // libedit's line callback takes no user data
+
+// Saves the history whole or not at all: libedit writes the file in place, and a full disk left
+// it cut mid-line. It writes a temporary beside the file instead, kept only when it holds every
+// entry (its header and one ended line each), flushed; then renamed over the file. A failure
+// leaves the old file and says so once.
+void save_history(const std::string& path) {
+  static bool warned = false;
+  const std::string tmp = path + ".tmp" + std::to_string(::getpid());
+  bool ok = write_history(tmp.c_str()) == 0;
+  if (ok) {
+    std::FILE* f = std::fopen(tmp.c_str(), "rb");
+    long lines = 0;
+    int c = 0, last = 0;
+    while (f && (c = std::fgetc(f)) != EOF) lines += c == '\n', last = c;
+    ok = f && last == '\n' && lines == history_length + 1 && !std::ferror(f);
+    if (f) std::fclose(f);
+  }
+  if (ok) {
+    const int fd = ::open(tmp.c_str(), O_RDONLY | O_CLOEXEC);
+    ok = fd >= 0 && ::fsync(fd) == 0;
+    if (fd >= 0) ::close(fd);
+  }
+  if (ok && std::rename(tmp.c_str(), path.c_str()) == 0) return;
+  ::unlink(tmp.c_str());
+  if (!warned) std::fprintf(stderr, "\n[live] cannot save the console history to %s; the old file stays\n", path.c_str());
+  warned = true;
+}
 }  // namespace
 
 std::string StdinReader::history_path() {
@@ -82,7 +109,7 @@ void StdinReader::prompt(const char* text) {
     self->longest_ = std::max(self->longest_, s.size());
     if (s.find_first_not_of(" \t") != std::string::npos) {
       add_history(s.c_str());
-      if (!self->history_.empty()) write_history(self->history_.c_str());
+      if (!self->history_.empty()) save_history(self->history_);
     }
     self->lines_.push_back(std::move(s));
   });

@@ -62,4 +62,32 @@ t3:type('print("LEN=" .. #s)\r')
 t3:wait("LEN=9000", nil, before)
 t3:type(CTRL_D)
 t3:close()
+-- On a full disk the history file stays as it was (libedit wrote it in place and left it cut
+-- mid-line), and the session says so once. Needs root for the tmpfs; skipped elsewhere.
+local full = "/tmp/shadenet_history_full_" .. tostring(os.time()) .. "_" .. tostring(math.random(1, 1e6))
+os.execute(("mkdir -p %q"):format(full))
+local mounted = os.execute(("mount -t tmpfs -o size=64k tmpfs %q 2>/dev/null"):format(full))
+if mounted == 0 or mounted == true then
+  local kept = H.read(history)
+  H.write(full .. "/history", kept)
+  local f = assert(io.open(full .. "/filler", "wb"))
+  f:write(("f"):rep(64 * 1024))  -- fills the rest (the write stops when the disk is full)
+  f:close()
+  local t4 = H.tty { "env", "SHADENET_HISTORY=" .. full .. "/history", "SHADENET_LIVE_EXIT_AFTER=60", H.shadenet, "--watch", script }
+  t4:wait("READY")
+  t4:wait("> ")
+  t4:type('print("FULL=" .. 6 * 7)\r')
+  local out4 = t4:wait("FULL=42")
+  t4:type(CTRL_D)
+  t4:close()
+  local after = H.read(full .. "/history")
+  local left = io.popen(("ls -a %q"):format(full)):read("*a")
+  os.execute(("umount %q; rmdir %q"):format(full, full))
+  assert(after == kept, "the old history stays whole on a full disk:\n" .. after)
+  assert(out4:find("cannot save the console history to " .. full .. "/history; the old file stays", 1, true), out4)
+  assert(not left:find(".tmp", 1, true), "no temporary left: " .. left)
+else
+  os.execute(("rmdir %q"):format(full))
+  print("full-disk history: SKIPPED (cannot mount a tmpfs here: not root?)")
+end
 print(("console at a terminal: the edited line ran (V=42), history in %s recalled by the next session"):format(history))
