@@ -18,7 +18,7 @@ end
 local info = sn.gl_info()
 local code, t, out = gl_info(nil)
 assert(code == 0, "--gl-info failed:\n" .. out)
-assert(out:match("^shadenet " .. sn.version:gsub("%.", "%%.") .. "\n"), out)
+assert(out:find("shadenet " .. sn.version .. " (build " .. sn.build .. ")\n", 1, true) == 1, out)
 assert(t["platform"] == info.platform .. " (EGL)", out)
 assert(t["GL renderer"] == info.renderer .. (info.software and " (software)" or ""), out)
 assert(t["GL version"] == info.version and t["GL vendor"] == info.vendor and t["GLSL version"] == info.glsl_version, out)

@@ -22,7 +22,7 @@ end
 assert(summary:match("\nctest +skipped"), summary)
 assert(summary:match("\nsteps failed: 0\n") and summary:match("\nplots: left as gnuplot scripts"), summary)
 local gl = read(dir .. "/gl_info.log")
-assert(gl:match("\nplatform: %a+ %(EGL%)\n") and gl:match("SHADENET_EGL_PLATFORM=device:\nshadenet [%d.]+\nplatform: device %(EGL%)\n"), gl)
+assert(gl:match("\nplatform: %a+ %(EGL%)\n") and gl:match("SHADENET_EGL_PLATFORM=device:\nshadenet [%d.]+ %(build [^)\n]+%)\nplatform: device %(EGL%)\n"), gl)
 local train = read(dir .. "/train.log")
 assert(train:match("\ngl +4x6 +tanh +none +6 +1 +%d+") and train:match("\ngl +4x6 +tanh +none +6 +2 +%d+"), train)
 local per_net = read(dir .. "/train_per_net.log")
