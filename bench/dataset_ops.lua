@@ -4,22 +4,27 @@
 --
 --   shadenet bench/dataset_ops.lua [repeats] [dir]
 --     repeats: timings per operation; the median is printed (default 7)
---     dir:     where the files go (default: a scratch folder, sn.fs.tempdir, removed after)
+--     dir:     where the files go, an output folder made if missing (default: a scratch folder,
+--              sn.fs.tempdir, removed after)
 --
 -- Times are sn.clock() (wall clock) around one call; exports include each file's fsync (the
 -- atomic write), so the disk under `dir` counts. "load" is the 1-minute load average before
 -- the operation's first run: other work on a shared machine slows the figures.
 local sn = require "shadenet"
+package.path = (arg[0]:match("^(.*)/[^/]*$") or ".") .. "/?.lua;" .. package.path
+local B = require "common"
 
-local repeats = tonumber(arg[1] or "7")
-local dir = arg[2] or sn.fs.tempdir("dataset_ops")
-
-package.path = (arg[0]:match("^(.*)/[^/]*$") or ".") .. "/../scripts/?.lua;" .. package.path
-local results = require "lib.results"
-local function loadavg()
-  local l = results.load_average()
-  return l and ("%.2f"):format(l[1]) or "?"
-end
+-- An output folder: made when missing; "" (the default) is the scratch folder.
+local folder = {
+  form = "a folder to write into (made if missing), not a file",
+  parse = function(s)
+    local kind = s ~= "" and sn.fs.exists(s)
+    return (not kind or kind == "folder") and s or nil
+  end,
+}
+local o = B.args("bench/dataset_ops.lua", { { "repeats", "7", B.whole(1) }, { "dir", "", folder } })
+local repeats = o.repeats
+local dir = o.dir ~= "" and sn.fs.mkdir(o.dir) or sn.fs.tempdir("dataset_ops")
 
 -- Rows written straight into float buffers (no Lua tables): unit normals and view directions
 -- on a spiral, targets a smooth function of them.
@@ -46,17 +51,11 @@ local function make(seed)
 end
 local a, b = make(1), make(2)
 
-local function median(t)
-  table.sort(t)
-  local n = #t
-  return n % 2 == 1 and t[(n + 1) / 2] or (t[n / 2] + t[n / 2 + 1]) / 2
-end
-
 print(("datasets: 2 x %d rows (6 -> 3, %d train / %d val), %d repeats, files in %s"):format(rows, select(1, a:counts()),
   select(2, a:counts()), repeats, dir))
 print(("%-34s %10s %10s %10s %6s"):format("operation", "median ms", "min ms", "max ms", "load"))
 local function bench(name, f)
-  local load = loadavg()
+  local load = B.load()
   local times = {}
   for i = 1, repeats do
     collectgarbage()
@@ -65,7 +64,7 @@ local function bench(name, f)
     times[i] = (sn.clock() - t0) * 1e3
   end
   local lo, hi = math.min(unpack(times)), math.max(unpack(times))
-  print(("%-34s %10.2f %10.2f %10.2f %6s"):format(name, median(times), lo, hi, load))
+  print(("%-34s %10.2f %10.2f %10.2f %6s"):format(name, B.median(times), lo, hi, load))
 end
 
 bench("concat {a, b} (128,298 rows)", function() sn.dataset.concat { a, b } end)

@@ -1,14 +1,16 @@
 -- What a user's encoding (sn.encoding.define) costs the cpu backend: its Lua twin encodes the
 -- dataset's rows once per training run, on the script's thread only. One 8x8 network, one epoch
 -- of 64,000 sampled rows (normal and view, both encoded with 4 bands), with the built-in
--- frequency encoding, with a Lua copy of it (examples/lua_frequency.lua), and without encodings; the difference to the
--- latter is the encoding's cost.
+-- frequency encoding, with a Lua copy of it (examples/lua_frequency.lua), and without
+-- encodings; the difference to the latter is the encoding's cost.
 --
 --   shadenet bench/encoding_twin.lua [repeats]      best of `repeats` (default 3), wall and CPU time
 local sn = require "shadenet"
-local repeats = tonumber(arg[1] or "3")
+package.path = (arg[0]:match("^(.*)/[^/]*$") or ".") .. "/?.lua;" .. package.path
+local B = require "common"
+local repeats = B.args("bench/encoding_twin.lua", { { "repeats", "3", B.whole(1) } }).repeats
 
-package.path = (arg[0]:match("^(.*)/[^/]*$") or ".") .. "/../examples/?.lua;" .. package.path
+package.path = B.dir .. "/../examples/?.lua;" .. package.path
 require "lua_frequency"  -- defines lua_frequency: the built-in frequency encoding as a Lua definition
 
 local rows = 64000
@@ -25,9 +27,7 @@ local function run(kind)
   return wall, cpu
 end
 
-local f = io.open("/proc/loadavg")
-print("load: " .. (f and f:read("*l") or "?"))
-if f then f:close() end
+print("load: " .. B.load())
 local w0, c0 = run(nil)
 print(("%-14s %8s %8s %14s"):format("encoding", "wall s", "cpu s", "us/row (wall)"))
 print(("%-14s %8.3f %8.3f %14s"):format("none", w0, c0, "-"))

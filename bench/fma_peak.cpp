@@ -2,7 +2,7 @@
 // and AVX-512 (16 lanes): the ceiling bench/train_throughput.lua measures the cpu kernels
 // against (its roofline columns), taken on the machine it runs on, not from a datasheet.
 //
-//   build/fma_peak [seconds]      seconds per measurement (default 0.3); best of 5 per figure
+//   build/fma_peak [seconds]      seconds per measurement, 0.01 to 60 (default 0.3); best of 5 per figure
 //
 // Each thread runs 12 independent FMA chains (more than latency x pipes on current x86 cores,
 // so the chains never wait on each other) for a fixed number of iterations; FLOP = 2 per lane
@@ -74,10 +74,21 @@ double measure(float (*fn)(long), int lanes, int threads, double seconds) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const double seconds = argc > 1 ? std::atof(argv[1]) : 0.3;
-  if (!(seconds > 0)) {
-    std::fprintf(stderr, "usage: fma_peak [seconds per measurement > 0]\n");
+  // Below 0.01 s starting the threads weighs on the figure (1e-9 timed one iteration: 0.0 GFLOP/s).
+  constexpr double kMin = 0.01, kMax = 60;
+  double seconds = 0.3;
+  if (argc > 2) {
+    std::fprintf(stderr, "fma_peak: %d arguments given, it takes at most 1\nusage: fma_peak [seconds]\n", argc - 1);
     return 2;
+  }
+  if (argc > 1) {
+    char* end = nullptr;
+    seconds = std::strtod(argv[1], &end);
+    if (end == argv[1] || *end != '\0' || !(seconds >= kMin && seconds <= kMax)) {
+      std::fprintf(stderr, "fma_peak: seconds '%s': expected seconds per measurement, %g to %g\nusage: fma_peak [seconds]\n",
+                   argv[1], kMin, kMax);
+      return 2;
+    }
   }
   const int threads = std::max(1u, std::thread::hardware_concurrency());
   __builtin_cpu_init();

@@ -11,19 +11,23 @@
 -- meshes/test_blob.glb; the truth (for side/error) is Phong. Prints the median and the 10th/90th
 -- percentile ms per frame, fps from the median, and the 1-minute load average.
 local sn = require "shadenet"
+package.path = (arg[0]:match("^(.*)/[^/]*$") or ".") .. "/?.lua;" .. package.path
+local B = require "common"
 
-local backends = {}
-for b in (arg[1] or "gl,cpu"):gmatch("%a+") do backends[#backends + 1] = b end
-local frames = tonumber(arg[2] or "60")
-local layers, width = (arg[3] or "8x8"):match("(%d+)x(%d+)")
-local mode = arg[4] or "network"
-
-local w, h = (arg[5] or "960x720"):match("(%d+)x(%d+)")
-w, h = tonumber(w), tonumber(h)
+local o = B.args("bench/live_view.lua", {
+  { "backends", "gl,cpu", B.list(B.one_of { "gl", "cpu" }) },
+  { "frames", "60", B.whole(1) },
+  { "net", "8x8", B.arch },
+  { "mode", "network", B.one_of { "network", "side", "error" } },
+  { "size", "960x720", B.size },
+})
+local backends, frames, mode = o.backends, o.frames, o.mode
+local layers, width = o.net[1], o.net[2]
+local w, h = o.size[1], o.size[2]
 
 local scene = sn.scene { mesh = "meshes/test_blob.glb", size = { w, h }, views = { count = 8, elevation = 20 } }
 local hidden = {}
-for i = 1, tonumber(layers) do hidden[i] = tonumber(width) end
+for i = 1, layers do hidden[i] = width end
 local net = sn.mlp { inputs = 6, hidden = hidden, outputs = 3, seed = 1, input_names = { "normal", "view" } }
 net.layers[#net.layers].bias = { 0.4, 0.5, 0.6 }
 local cam = scene:views()[1]
@@ -31,18 +35,11 @@ local eye, target = cam:eye(), cam:target()
 local dx, dz = eye[1] - target[1], eye[3] - target[3]
 local radius, angle0 = math.sqrt(dx * dx + dz * dz), math.atan2(dx, dz)
 
-local function loadavg()
-  local f = io.open("/proc/loadavg")
-  local l = f and f:read("*l") or "?"
-  if f then f:close() end
-  return l:match("^(%S+)") or "?"
-end
-
 print(("live view %dx%d, mode %s, mlp %s, %d frames per backend, %s"):format(w, h, mode, tostring(net), frames,
   sn.windowed() and "window" or "headless"))
 for _, backend in ipairs(backends) do
   sn.live.show { scene = scene, network = net, truth = sn.lighting.phong {}, backend = backend, mode = mode }
-  local load = loadavg()
+  local load = B.load()
   local times = {}
   for i = 0, frames do
     local a = angle0 + i * 0.05

@@ -19,20 +19,25 @@
 -- image. "load" is the 1-minute load average before the cell: other work on a shared machine
 -- slows it.
 local sn = require "shadenet"
+package.path = (arg[0]:match("^(.*)/[^/]*$") or ".") .. "/?.lua;" .. package.path
+local B = require "common"
 
-local repeats = tonumber(arg[1] or "3")
-local backends = {}
-for b in (arg[2] or "gl,cpu"):gmatch("%a+") do backends[#backends + 1] = b end
-local weights = arg[3] or "auto"
-local archs = {}
-for l, w in (arg[4] or "4x4,8x8,12x12,16x16"):gmatch("(%d+)x(%d+)") do archs[#archs + 1] = { tonumber(l), tonumber(w) } end
-
--- The 1-minute load average before a job, from the experiment scripts' library.
-package.path = (arg[0]:match("^(.*)/[^/]*$") or ".") .. "/../scripts/?.lua;" .. package.path
-local results = require "lib.results"
-local function loadavg()
-  local l = results.load_average()
-  return l and tostring(l[1]) or "?"
+local thesis_sizes = { "640x480", "960x720", "1280x720", "1920x1080" }  -- the columns of thesis_ms
+local script = "bench/render_throughput.lua"
+local specs = {
+  { "repeats", "3", B.whole(1) },
+  { "backends", "gl,cpu", B.list(B.one_of { "gl", "cpu" }) },
+  { "weights", "auto", B.one_of { "auto", "storage" } },
+  { "archs", "4x4,8x8,12x12,16x16", B.list(B.arch) },
+  { "sizes", table.concat(thesis_sizes, ","), B.list(B.size) },
+}
+local o = B.args(script, specs)
+local repeats, backends, weights, archs, sizes = o.repeats, o.backends, o.weights, o.archs, o.sizes
+local has_gl = false
+for _, b in ipairs(backends) do has_gl = has_gl or b == "gl" end
+if weights ~= "auto" and not has_gl then
+  B.fail(script, specs, "weights '" .. weights .. "' is for the gl backend, and backends '" ..
+         table.concat(backends, ",") .. "' has no gl")
 end
 
 -- A UV sphere of radius 1.
@@ -59,20 +64,10 @@ end
 local thesis_ms = { ["4x4"] = { 0.879, nil, 1.697, 2.177 }, ["8x8"] = { 4.263, nil, 8.241, 10.067 },
                     ["12x12"] = { 12.754, nil, 24.002, 29.653 }, ["16x16"] = { 29.117, nil, 52.655, 66.710 } }
 local thesis_ns = { ["4x4"] = 15.8, ["8x8"] = 79.3, ["12x12"] = 237.3, ["16x16"] = 538.9 }
-local thesis_sizes = { "640x480", "960x720", "1280x720", "1920x1080" }  -- the columns of thesis_ms
-local sizes = {}
-for w, h in (arg[5] or table.concat(thesis_sizes, ",")):gmatch("(%d+)x(%d+)") do sizes[#sizes + 1] = { tonumber(w), tonumber(h) } end
-assert(#sizes > 0, "sizes: expected WxH,WxH,..., got '" .. tostring(arg[5]) .. "'")
 local function thesis_at(name, sz)
   for i, s in ipairs(thesis_sizes) do
     if s == sz[1] .. "x" .. sz[2] then return thesis_ms[name] and thesis_ms[name][i] end
   end
-end
-
-local function median(t)
-  table.sort(t)
-  local n = #t
-  return n % 2 == 1 and t[(n + 1) / 2] or (t[n / 2] + t[n / 2 + 1]) / 2
 end
 
 -- Seconds per frame of one backend on one G-buffer.
@@ -113,10 +108,10 @@ for si, sz in ipairs(sizes) do
     local row = ("%-6s %4dx%-4d covered %7d (%2.0f%%)"):format(name, sz[1], sz[2], covered,
                                                            100 * covered / (sz[1] * sz[2]))
     for _, b in ipairs(backends) do
-      local load = loadavg()
+      local load = B.load()
       local t = {}
       for r = 1, repeats do t[r] = per_frame(net, g, b) end
-      local s = median(t)
+      local s = B.median(t)
       ms[b][name] = ms[b][name] or {}
       ns[b][name] = ns[b][name] or {}
       ms[b][name][si], ns[b][name][si] = s * 1e3, s / covered * 1e9

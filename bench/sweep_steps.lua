@@ -12,13 +12,13 @@
 -- sn.clock() (wall clock) around one call; "load" is the 1-minute load average before the
 -- step's first run.
 local sn = require "shadenet"
-package.path = (arg[0]:match("^(.*)/[^/]*$") or ".") .. "/../scripts/?.lua;" .. package.path
+package.path = (arg[0]:match("^(.*)/[^/]*$") or ".") .. "/?.lua;" .. package.path
+local B = require "common"
 local exp = require "lib.experiment"
-local results = require "lib.results"
 local thesis = require "lib.thesis"
 
-local repeats = tonumber(arg[1] or "5")
-local seeds = tonumber(arg[2] or "3")
+local o = B.args("bench/sweep_steps.lua", { { "repeats", "5", B.whole(1) }, { "seeds", "3", B.whole(1) } })
+local repeats, seeds = o.repeats, o.seeds
 local out = sn.fs.tempdir("sweep_steps")
 local E = exp.start("sweep_steps", { "--out", out })
 local desc = E:data_desc { model = "phong" }
@@ -33,13 +33,8 @@ for s = 1, seeds do
 end
 E:unseen_errors(nets, desc)  -- the unseen scenes, their G-buffers and truths: built once, as in the table
 
-local function median(t)
-  table.sort(t)
-  local n = #t
-  return n % 2 == 1 and t[(n + 1) / 2] or (t[n / 2] + t[n / 2 + 1]) / 2
-end
 local function bench(name, f)
-  local l = results.load_average()
+  local load = B.load()
   local times = {}
   for i = 1, repeats do
     collectgarbage()
@@ -48,7 +43,7 @@ local function bench(name, f)
     times[i] = sn.clock() - t0
   end
   local lo, hi = math.min(unpack(times)), math.max(unpack(times))
-  print(("%-44s %9.3f %9.3f %9.3f %6s"):format(name, median(times), lo, hi, l and ("%.2f"):format(l[1]) or "?"))
+  print(("%-44s %9.3f %9.3f %9.3f %6s"):format(name, B.median(times), lo, hi, load))
 end
 
 print(("%-44s %9s %9s %9s %6s"):format("step (" .. repeats .. " repeats)", "median s", "min s", "max s", "load"))

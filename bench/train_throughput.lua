@@ -28,13 +28,9 @@
 -- training kernel (SHADENET_GL_KERNEL=per_sample|per_net forces one).
 local sn = require "shadenet"
 package.path = (arg[0]:match("^(.*)/[^/]*$") or ".") .. "/?.lua;" .. package.path
+local B = require "common"
 local roofline = require "roofline"
 
-local want = arg[1] or "all"
-local counts = {}
-for n in (arg[2] or "1,2,8,32,360"):gmatch("%d+") do counts[#counts + 1] = tonumber(n) end
-local epochs = tonumber(arg[3] or "1")
-local activations = {}
 -- sn.activation.define'd activations: tanh_defined is the built-in's arithmetic (mlp_tanh is the
 -- cpu backend's fast_tanh), so that it prices the translation alone.
 local defined = {
@@ -45,29 +41,52 @@ local defined = {
 }
 local all_activations = { "tanh", "sigmoid", "relu", "leaky_relu", "sine", "softplus", "squareplus", "elu", "gelu",
                           "swish", "exponential" }
-for a in (arg[4] or "tanh"):gmatch("[%w_]+") do
+local activation_names = { "all" }
+for _, a in ipairs(all_activations) do activation_names[#activation_names + 1] = a end
+activation_names[#activation_names + 1] = "tanh_defined"
+activation_names[#activation_names + 1] = "softsign"
+local count_of = { frequency = "bands", triangle_wave = "bands", oneblob = "bins", sh = "degree" }
+local encoding = {
+  form = "none or NAME:N, NAME one of frequency, oneblob, sh, triangle_wave and N a whole number >= 1",
+  parse = function(e)
+    if e == "none" then return { label = "none" } end
+    local name, n = e:match("^([%w_]+):(%d+)$")
+    if not (name and count_of[name] and tonumber(n) >= 1) then return nil end
+    local one = { name, [count_of[name]] = tonumber(n) }
+    return { label = e, encoding = { normal = one, view = one } }
+  end,
+}
+local script = "bench/train_throughput.lua"
+local specs = {
+  { "backend", "all", B.one_of { "cpu", "gl", "all" } },
+  { "counts", "1,2,8,32,360", B.list(B.whole(1)) },
+  { "epochs", "1", B.whole(1) },
+  { "activations", "tanh", B.list(B.one_of(activation_names)) },
+  { "archs", "4x6,8x8,8x12,12x12", B.list(B.arch) },
+  { "encodings", "none", B.list(encoding) },
+}
+local o = B.args(script, specs)
+local backends = {}
+for _, b in ipairs(sn.backends()) do
+  if o.backend == "all" or o.backend == b then backends[#backends + 1] = b end
+end
+if #backends == 0 then
+  B.fail(script, specs, "backend '" .. o.backend .. "' is not in this build (have: " .. table.concat(sn.backends(), ", ") .. ")")
+end
+local counts, epochs, archs, encodings = o.counts, o.epochs, o.archs, o.encodings
+local activations = {}
+for _, a in ipairs(o.activations) do
   if a == "all" then
     for _, b in ipairs(all_activations) do activations[#activations + 1] = b end
   else
-    if defined[a] then
-      defined[a].name = a
-      sn.activation.define(defined[a])
-    end
     activations[#activations + 1] = a
   end
 end
-local archs = {}
-for l, w in (arg[5] or "4x6,8x8,8x12,12x12"):gmatch("(%d+)x(%d+)") do archs[#archs + 1] = { tonumber(l), tonumber(w) } end
-local count_of = { frequency = "bands", triangle_wave = "bands", oneblob = "bins", sh = "degree" }
-local encodings = {}
-for e in (arg[6] or "none"):gmatch("[^,]+") do
-  if e == "none" then
-    encodings[#encodings + 1] = { label = "none" }
-  else
-    local name, n = e:match("^([%w_]+):(%d+)$")
-    assert(name and count_of[name], "encoding '" .. e .. "': none or NAME:N, NAME one of frequency, oneblob, sh, triangle_wave")
-    local one = { name, [count_of[name]] = tonumber(n) }
-    encodings[#encodings + 1] = { label = e, encoding = { normal = one, view = one } }
+for _, a in ipairs(activations) do
+  local d = defined[a]
+  if d and not d.name then
+    d.name = a
+    sn.activation.define(d)
   end
 end
 local function make_net(hidden, act, enc, seed)
@@ -82,14 +101,6 @@ local function status(field)
   f:close()
   return tonumber(text:match(field .. ":%s*(%d+)")) or 0
 end
--- The 1-minute load average before a job, from the experiment scripts' library.
-package.path = (arg[0]:match("^(.*)/[^/]*$") or ".") .. "/../scripts/?.lua;" .. package.path
-local results = require "lib.results"
-local function loadavg()
-  local l = results.load_average()
-  return l and tostring(l[1]) or "?"
-end
-
 -- 64k samples of a smooth function (a stand-in for a lighting model), written straight into
 -- float buffers (no Lua tables: they would dominate the peak memory).
 local rows = 64000
@@ -112,12 +123,6 @@ by:release()
 local wx, wy = {}, {}
 for i = 1, 80 do wx[i] = { 0, 0, 0, 0, 0, i / 80 } wy[i] = { 0.5, 0.5, 0.5 } end
 local warm = sn.dataset { x = wx, y = wy, input_names = { "normal", "view" } }
-
-local backends = {}
-for _, b in ipairs(sn.backends()) do
-  if want == "all" or want == b then backends[#backends + 1] = b end
-end
-assert(#backends > 0, "backend '" .. want .. "' is not in this build (have: " .. table.concat(sn.backends(), ", ") .. ")")
 
 local jobs = {}  -- (architecture, activation, encoding), encodings innermost
 for _, a in ipairs(archs) do
@@ -150,7 +155,7 @@ for _, backend in ipairs(backends) do
     for _, count in ipairs(counts) do
       local nets = {}
       for s = 1, count do nets[s] = make_net(hidden, act, enc, s) end
-      local load = loadavg()
+      local load = B.load()
       local c0 = os.clock()
       local runs = sn.train { nets = nets, data = data, epochs = epochs, batch = 8, backend = backend,
                               adam = { lr = 2.5e-4, beta1 = 0.8, beta2 = 0.9 } }

@@ -1,0 +1,48 @@
+-- The benchmarks (bench/): their options are checked before any work.
+local sn = require "shadenet"
+local C = require "script_check"
+
+local function sh_quote(s) return "'" .. tostring(s):gsub("'", "'\\''") .. "'" end
+
+-- Bad options: exit 2 before any work, the message naming the option and what it takes.
+local bad = {
+  { "bench/train_throughput.lua", { "cpu", "-2" }, "counts '%-2': expected a whole number >= 1; one or more, comma separated" },
+  { "bench/train_throughput.lua", { "cpu", "1,0" }, "counts '1,0'" },
+  { "bench/train_throughput.lua", { "cpu", "1", "abc" }, "epochs 'abc': expected a whole number >= 1" },
+  { "bench/train_throughput.lua", { "cpu", "1", "1", "tanh", "8-8" }, "archs '8%-8': expected LAYERSxWIDTH" },
+  { "bench/train_throughput.lua", { "cpu", "1", "1", "tanhh" }, "activations 'tanhh': expected one of all, tanh," },
+  { "bench/train_throughput.lua", { "cpu", "1", "1", "tanh", "2x2", "frequency:0" }, "encodings 'frequency:0'" },
+  { "bench/train_throughput.lua", { "tpu" }, "backend 'tpu': expected one of cpu, gl, all" },
+  { "bench/train_throughput.lua", { "cpu", "1", "1", "tanh", "2x2", "none", "x" }, "7 arguments given, it takes at most 6" },
+  { "bench/render_throughput.lua", { "0" }, "repeats '0': expected a whole number >= 1" },
+  { "bench/render_throughput.lua", { "-1" }, "repeats '%-1'" },
+  { "bench/render_throughput.lua", { "1", "gl", "auto", "4-4" }, "archs '4%-4'" },
+  { "bench/render_throughput.lua", { "1", "cpu", "bogus" }, "weights 'bogus': expected one of auto, storage" },
+  { "bench/render_throughput.lua", { "1", "cpu", "storage" }, "weights 'storage' is for the gl backend" },
+  { "bench/render_throughput.lua", { "1", "cpu", "auto", "4x4", "640" }, "sizes '640': expected WIDTHxHEIGHT" },
+  { "bench/live_view.lua", { "cpu", "0" }, "frames '0': expected a whole number >= 1" },
+  { "bench/live_view.lua", { "cpu", "1", "8x8", "sides" }, "mode 'sides': expected one of network, side, error" },
+  { "bench/sweep_steps.lua", { "0" }, "repeats '0'" },
+  { "bench/sweep_steps.lua", { "1", "0" }, "seeds '0'" },
+  { "bench/dataset_ops.lua", { "0" }, "repeats '0'" },
+  { "bench/dataset_ops.lua", { "1", "README.md" }, "dir 'README.md': expected a folder to write into" },
+  { "bench/encoding_twin.lua", { "0" }, "repeats '0'" },
+}
+for _, b in ipairs(bad) do
+  local script, args, want = b[1], b[2], b[3]
+  local code, out = C.run(script, args)
+  local what = script .. " " .. table.concat(args, " ")
+  assert(code == 2, what .. ": exit " .. tostring(code) .. ", expected 2:\n" .. out)
+  assert(out:find(script .. ": " .. want), what .. ": expected '" .. want .. "' in:\n" .. out)
+  assert(out:find("(usage: shadenet " .. script .. " [", 1, true) and not out:find("traceback"), what .. ":\n" .. out)
+end
+
+-- fma_peak: seconds outside 0.01..60 (1e-9 timed one iteration: 0.0 GFLOP/s) or not a number.
+local build = C.shadenet:match("^(.*)/[^/]*$") or "."
+for _, s in ipairs { "1e-9", "abc", "0.05x", "61" } do
+  local out = C.output(sh_quote(build .. "/fma_peak") .. " " .. s .. " 2>&1; echo \"exit $?\"")
+  assert(out:find("fma_peak: seconds '" .. s .. "': expected seconds per measurement, 0.01 to 60", 1, true)
+         and out:find("exit 2\n", 1, true), s .. ":\n" .. out)
+end
+
+print("ok")
