@@ -9,7 +9,8 @@
 --
 -- With --window each frame is also shown (under Xvfb the present is a copy into the X server). The network is untrained (tanh, normal + view -> RGB) on
 -- meshes/test_blob.glb; the truth (for side/error) is Phong. Prints the median and the 10th/90th
--- percentile ms per frame, fps from the median, and the 1-minute load average.
+-- percentile ms per frame (linear between the two nearest frames), fps from the median, and the
+-- 1-minute load average.
 local sn = require "shadenet"
 package.path = (arg[0]:match("^(.*)/[^/]*$") or ".") .. "/?.lua;" .. package.path
 local B = require "common"
@@ -51,9 +52,7 @@ for _, backend in ipairs(backends) do
     collectgarbage()  -- as the loop does after every frame
     if i > 0 then times[#times + 1] = (sn.clock() - t0) * 1e3 end  -- frame 0 compiles
   end
-  table.sort(times)
-  local function pct(p) return times[math.max(1, math.min(#times, math.floor(p * #times + 0.5)))] end
-  local med = pct(0.5)
+  local med = B.median(times)
   print(("%-4s %7.2f ms/frame median (p10 %.2f, p90 %.2f) = %5.1f fps   load %s   (%s)"):format(backend, med,
-    pct(0.1), pct(0.9), 1000 / med, load, sn.render_info().reason))
+    B.quantile(times, 0.1), B.quantile(times, 0.9), 1000 / med, load, sn.render_info().reason))
 end
