@@ -66,4 +66,12 @@ function R.measure_peak()
   return peak
 end
 
+-- The cores a cpu job of `count` networks can use: one per network, at most the trainer's
+-- threads (SHADENET_THREADS, which its device names: "CPU, 2 threads, avx512 kernel") and at
+-- most the machine's (`machine`, fma_peak's threads).
+function R.cores(count, device, machine)
+  local threads = tonumber(tostring(device or ""):match(", (%d+) threads, "))
+  return math.min(count, threads or machine, machine)
+end
+
 return R

@@ -14,18 +14,22 @@
 --                  degree) on both input groups
 --
 -- Synthetic data: 64,000 samples of 6 inputs (named normal, view: two groups of 3) -> 3
--- outputs, split 80/20 (51,200 training rows), batch 8, Adam. Wall time includes the per-epoch validation pass. "cpu s" is
--- the process CPU time of the job (all threads), "steps/cpu-s" the sample-steps per second of
--- CPU time; "load" the 1-minute load average before the job: other work on the machine slows
--- the wall-clock figures, hardly the CPU-time ones.
+-- outputs, split 80/20 (51,200 training rows), batch 8, Adam. "total steps/s" and "per net" are
+-- the training's rate: sample-steps over "train s", sn.train's own wall_time (the epochs with
+-- their per-epoch validation passes). "wall s" and "cpu s" both span the whole sn.train call,
+-- which adds the untrained networks' validation MSE before the training and the dead-unit and
+-- stuck-output passes after it: wall clock, and the process CPU time (all threads);
+-- "steps/cpu-s" the sample-steps per CPU-second of that call; "load" the 1-minute load average
+-- before the job: other work on the machine slows the wall-clock figures, hardly the CPU-time
+-- ones.
 --
 -- The roofline (cpu backend): "FLOP/step" counted from the kernel per sample-step
 -- (bench/roofline.lua), "GFLOP/s" achieved (total steps/s x FLOP/step), and that as a share of
 -- this machine's measured FP32 FMA peak (build/fma_peak) over the cores the job can use (one
--- per network, at most the machine's threads): "%avx2" against the AVX2 peak, "%avx512"
--- against the AVX-512 one. The last lines name each backend's device (the cpu
--- backend's kernel: avx512, avx2 or sse2; SHADENET_CPU_KERNEL picks one) and the gl backend's
--- training kernel (SHADENET_GL_KERNEL=per_sample|per_net forces one).
+-- per network, at most the trainer's threads: SHADENET_THREADS, else the machine's): "%avx2"
+-- against the AVX2 peak, "%avx512" against the AVX-512 one. The last lines name each backend's
+-- device (the cpu backend's threads and kernel: avx512, avx2 or sse2; SHADENET_CPU_KERNEL picks
+-- one) and the gl backend's training kernel (SHADENET_GL_KERNEL=per_sample|per_net forces one).
 local sn = require "shadenet"
 package.path = (arg[0]:match("^(.*)/[^/]*$") or ".") .. "/?.lua;" .. package.path
 local B = require "common"
@@ -140,10 +144,10 @@ if peak then
 else
   print("no roofline fractions: " .. no_peak)
 end
-print(("%-7s %-6s %-11s %-15s %6s %5s %14s %12s %8s %8s %14s %6s %9s %9s %8s %6s %7s"):format("backend", "arch",
-  "activation", "encoding", "inputs", "nets", "total steps/s", "per net", "wall s", "cpu s", "steps/cpu-s", "load",
-  "peak MiB", "FLOP/step", "GFLOP/s", "%avx2", "%avx512"))
-local devices = {}  -- what each backend ran on (the cpu backend names its kernel)
+print(("%-7s %-6s %-11s %-15s %6s %5s %14s %12s %8s %8s %8s %14s %6s %9s %9s %8s %6s %7s"):format("backend", "arch",
+  "activation", "encoding", "inputs", "nets", "total steps/s", "per net", "train s", "wall s", "cpu s", "steps/cpu-s",
+  "load", "peak MiB", "FLOP/step", "GFLOP/s", "%avx2", "%avx512"))
+local devices = {}  -- what each backend ran on (the cpu backend names its threads and kernel)
 for _, backend in ipairs(backends) do
   for _, job in ipairs(jobs) do
     local a, act, enc = job[1], job[2], job[3]
@@ -156,14 +160,15 @@ for _, backend in ipairs(backends) do
       local nets = {}
       for s = 1, count do nets[s] = make_net(hidden, act, enc, s) end
       local load = B.load()
-      local c0 = os.clock()
+      -- Wall and CPU time over the same span, the whole call.
+      local t0, c0 = sn.clock(), os.clock()
       local runs = sn.train { nets = nets, data = data, epochs = epochs, batch = 8, backend = backend,
                               adam = { lr = 2.5e-4, beta1 = 0.8, beta2 = 0.9 } }
-      local cpu = os.clock() - c0
+      local cpu, call = os.clock() - c0, sn.clock() - t0
       devices[backend] = runs[1].device
       local steps = 0
       for _, r in ipairs(runs) do steps = steps + r.steps * 8 end
-      local wall = runs[1].wall_time
+      local wall = runs[1].wall_time  -- the training's own span: its rate is the one reported
       local roof = { "-", "-", "-", "-" }
       if backend == "cpu" then
         local widths = { nets[1]:spec().encoded_inputs }
@@ -173,14 +178,14 @@ for _, backend in ipairs(backends) do
         local gflops = steps / wall * flop / 1e9
         roof = { ("%.0f"):format(flop), ("%.2f"):format(gflops), "-", "-" }
         if peak then
-          local cores = math.min(count, peak.threads)
+          local cores = roofline.cores(count, runs[1].device, peak.threads)
           roof[3] = ("%.1f"):format(100 * gflops / (peak.avx2.core * cores))
           if peak.avx512 then roof[4] = ("%.1f"):format(100 * gflops / (peak.avx512.core * cores)) end
         end
       end
-      print(("%-7s %-6s %-11s %-15s %6d %5d %14.0f %12.0f %8.2f %8.2f %14.0f %6s %9.1f %9s %8s %6s %7s"):format(backend,
-        a[1] .. "x" .. a[2], act, enc.label, nets[1]:spec().encoded_inputs, count, steps / wall, steps / wall / count,
-        wall, cpu, steps / cpu, load, status("VmHWM") / 1024, roof[1], roof[2], roof[3], roof[4]))
+      print(("%-7s %-6s %-11s %-15s %6d %5d %14.0f %12.0f %8.2f %8.2f %8.2f %14.0f %6s %9.1f %9s %8s %6s %7s"):format(
+        backend, a[1] .. "x" .. a[2], act, enc.label, nets[1]:spec().encoded_inputs, count, steps / wall,
+        steps / wall / count, wall, call, cpu, steps / cpu, load, status("VmHWM") / 1024, roof[1], roof[2], roof[3], roof[4]))
       nets, runs = nil, nil
       collectgarbage()
     end

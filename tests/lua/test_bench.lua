@@ -1,4 +1,6 @@
--- The benchmarks (bench/): their options are checked before any work.
+-- The benchmarks (bench/) on tiny settings: their options are checked before any work, the
+-- columns of train_throughput span what its header says, the roofline counts the trainer's
+-- threads.
 local sn = require "shadenet"
 local C = require "script_check"
 
@@ -44,5 +46,59 @@ for _, s in ipairs { "1e-9", "abc", "0.05x", "61" } do
   assert(out:find("fma_peak: seconds '" .. s .. "': expected seconds per measurement, 0.01 to 60", 1, true)
          and out:find("exit 2\n", 1, true), s .. ":\n" .. out)
 end
+
+-- train_throughput through a wrapper: a stand-in FMA peak (100 GFLOP/s per core, 2 threads:
+-- fma_peak itself takes seconds), and sn.train wrapped by `wrap`.
+local function throughput(tag, wrap, args, env)
+  local wrapper = C.tmpdir(tag) .. "/wrapper.lua"
+  sn.fs.write(wrapper, [[
+local sn = require "shadenet"
+local ffi = require "ffi"
+ffi.cdef "int getpid(void); int kill(int pid, int sig);"
+local R = dofile("bench/roofline.lua")
+R.measure_peak = function() return { avx2 = { core = 100, all = 200 }, threads = 2 } end
+package.loaded.roofline = R
+local train = sn.train
+]] .. wrap .. [[
+arg[0] = "bench/train_throughput.lua"
+dofile(arg[0])
+]])
+  return C.run(wrapper, args, env)
+end
+-- The row of a job: its columns by name.
+local columns = { "backend", "arch", "activation", "encoding", "inputs", "nets", "total", "per_net", "train", "wall",
+                  "cpu", "per_cpu", "load", "peak", "flop", "gflops", "avx2", "avx512" }
+local function rows(out)
+  local list = {}
+  for line in out:gmatch("[^\n]+") do
+    if line:match("^cpu +%d+x%d+ ") then
+      local r, i = {}, 0
+      for cell in line:gmatch("%S+") do
+        i = i + 1
+        r[columns[i]] = tonumber(cell) or cell
+      end
+      list[#list + 1] = r
+    end
+  end
+  return list
+end
+
+-- wall s and cpu s span the same call: 0.3 s of CPU burnt inside it before the training is in
+-- both, not in train s (the training's own time, whose rate is printed). One thread, so the
+-- CPU time cannot exceed the wall time. The roofline holds 2 networks on 1 thread against one
+-- core's peak: %avx2 = GFLOP/s (100 per core).
+local code, out = throughput("bench_span", [[
+sn.train = function(o)
+  local c = os.clock()
+  while os.clock() - c < 0.3 do end
+  return train(o)
+end
+]], { "cpu", "2", "1", "tanh", "2x2" }, { SHADENET_THREADS = "1" })
+assert(code == 0, out)
+assert(out:find(" train s +wall s +cpu s "), out)
+local r = rows(out)[1]
+assert(r and r.nets == 2 and r.wall >= 0.3 and r.train < r.wall - 0.25 and r.cpu <= r.wall + 0.02, "spans:\n" .. out)
+assert(math.abs(r.avx2 - r.gflops) <= 0.06, "2 nets on SHADENET_THREADS=1 against one core's peak:\n" .. out)
+assert(out:find("\ncpu: .*, 1 threads, "), out)
 
 print("ok")
