@@ -49,12 +49,43 @@ function R.flop_per_sample_step(widths, activation)
   return flop + matmul + 15 * round_up(params, 16) / 8, matmul
 end
 
+-- Where build/fma_peak is: beside the running shadenet (/proc/self/exe, so a shadenet found
+-- through PATH counts; arg[-1] is only the name it was called by), beside arg[-1] where that
+-- names a folder, else in build/ beside this folder's repository. -> path, or nil and the
+-- places looked in.
+function R.fma_peak_path()
+  local dirs = {}
+  local ok, ffi = pcall(require, "ffi")
+  if ok then
+    pcall(ffi.cdef, "long readlink(const char* path, char* buf, unsigned long size);")
+    local buf = ffi.new("char[4096]")
+    local ok2, n = pcall(ffi.C.readlink, "/proc/self/exe", buf, 4095)
+    if ok2 and n > 0 then dirs[#dirs + 1] = ffi.string(buf, n):match("^(.*)/[^/]*$") end
+  end
+  local called = arg and arg[-1]
+  if called and called:find("/") then dirs[#dirs + 1] = called:match("^(.*)/[^/]*$") end
+  dirs[#dirs + 1] = ((arg and arg[0] or ""):match("^(.*)/[^/]*$") or ".") .. "/../build"
+  local looked = {}
+  for _, d in ipairs(dirs) do
+    local exe = d .. "/fma_peak"
+    local f = io.open(exe, "rb")
+    if f then
+      f:close()
+      return exe
+    end
+    looked[#looked + 1] = exe
+  end
+  return nil, looked
+end
+
 -- { avx2 = { core = GFLOP/s, all = GFLOP/s }, avx512 = {...}, threads = n } from build/fma_peak
--- beside the shadenet binary; nil and the reason when it cannot run.
+-- (R.fma_peak_path); nil and the reason when it is missing or cannot run.
 function R.measure_peak()
-  local dir = (arg and arg[-1] or "build/shadenet"):match("^(.*)/[^/]*$") or "."
-  local exe = dir .. "/fma_peak"
-  local p = io.popen(("%q 2>&1"):format(exe))
+  local exe, looked = R.fma_peak_path()
+  if not exe then
+    return nil, "no fma_peak (looked for " .. table.concat(looked, ", ") .. "; build it: cmake --build build --target fma_peak)"
+  end
+  local p = io.popen("'" .. exe:gsub("'", "'\\''") .. "' 2>&1")
   local text = p and p:read("*a") or ""
   if p then p:close() end
   local peak = {}
@@ -62,7 +93,7 @@ function R.measure_peak()
     peak[isa] = { core = tonumber(core), all = tonumber(all) }
     peak.threads = tonumber(threads)
   end
-  if not peak.threads then return nil, exe .. " gave no figures (build it: cmake --build build --target fma_peak): " .. text end
+  if not peak.threads then return nil, exe .. " gave no figures: " .. text end
   return peak
 end
 

@@ -1,6 +1,6 @@
 -- The benchmarks (bench/) on tiny settings: their options are checked before any work, the
 -- columns of train_throughput span what its header says, the roofline counts the trainer's
--- threads.
+-- threads and fma_peak is found through PATH.
 local sn = require "shadenet"
 local C = require "script_check"
 
@@ -46,6 +46,21 @@ for _, s in ipairs { "1e-9", "abc", "0.05x", "61" } do
   assert(out:find("fma_peak: seconds '" .. s .. "': expected seconds per measurement, 0.01 to 60", 1, true)
          and out:find("exit 2\n", 1, true), s .. ":\n" .. out)
 end
+
+-- fma_peak beside a shadenet found through PATH (arg[-1] is then a bare name), from a script
+-- outside the repository.
+local cwd = C.output("pwd"):match("^(.-)%s*$")
+local child = C.child("bench_path", [[
+package.path = ]] .. ("%q"):format(cwd .. "/bench/?.lua;") .. [[ .. package.path
+local R = require "roofline"
+print("arg[-1]=" .. tostring(arg[-1]))
+print("path=" .. tostring(R.fma_peak_path()))
+]])
+local out = C.output("PATH=" .. sh_quote(build) .. ":\"$PATH\" shadenet " .. sh_quote(child))
+local real = C.output("readlink -f " .. sh_quote(build .. "/fma_peak")):match("^(.-)%s*$")
+local found = out:match("path=(%S+)")
+assert(out:find("arg[-1]=shadenet\n", 1, true) and found and
+       C.output("readlink -f " .. sh_quote(found)):match("^(.-)%s*$") == real, "fma_peak through PATH:\n" .. out)
 
 -- train_throughput through a wrapper: a stand-in FMA peak (100 GFLOP/s per core, 2 threads:
 -- fma_peak itself takes seconds), and sn.train wrapped by `wrap`.
