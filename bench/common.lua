@@ -1,6 +1,6 @@
 -- What the benchmarks share: their positional options, checked before any work (a mistake is
 -- an error naming the option and the form it takes, exit 2, as the experiment scripts' command
--- line does), the median and quantiles of scripts/lib/stats.lua and the load average.
+-- line does), the median and quantiles of scripts/lib/stats.lua, the load average, and Ctrl-C.
 --
 --   package.path = (arg[0]:match("^(.*)/[^/]*$") or ".") .. "/?.lua;" .. package.path
 --   local B = require "common"
@@ -110,6 +110,22 @@ end
 function B.load()
   local l = results.load_average()
   return l and ("%.2f"):format(l[1]) or "?"
+end
+
+-- Ctrl-C (and SIGTERM): after B.catch_interrupt() the first one only sets a flag (and stops an
+-- sn.train at its next step), so the benchmark stops at its next B.stop_if_interrupted(): the
+-- figures printed before stand, the timing in flight is not printed (it was cut short), and the
+-- exit status is 130 (143), as the experiment scripts'. os.exit closes the Lua state, so the
+-- benchmark's sn.fs.tempdir folders are removed (SIGINT's default action left them). A second
+-- Ctrl-C stops at once.
+function B.catch_interrupt() sn.catch_interrupt() end
+
+-- `what`: the work in flight when it came ("the job cpu 8x8 ..."), for the message, or nil.
+function B.stop_if_interrupted(what)
+  local caught, signal = sn.interrupted()
+  if not caught then return end
+  print(("stopped (%s)%s"):format(signal == 15 and "SIGTERM" or "Ctrl-C", what and ": " .. what .. " is not printed" or ""))
+  os.exit(128 + (signal or 2))
 end
 
 return B

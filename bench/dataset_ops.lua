@@ -9,7 +9,9 @@
 --
 -- Times are sn.clock() (wall clock) around one call; exports include each file's fsync (the
 -- atomic write), so the disk under `dir` counts. "load" is the 1-minute load average before
--- the operation's first run: other work on a shared machine slows the figures.
+-- the operation's first run: other work on a shared machine slows the figures. Ctrl-C stops it
+-- after the call in flight (that operation's row is not printed), removes the scratch folder
+-- and exits 130.
 local sn = require "shadenet"
 package.path = (arg[0]:match("^(.*)/[^/]*$") or ".") .. "/?.lua;" .. package.path
 local B = require "common"
@@ -24,6 +26,9 @@ local folder = {
 }
 local o = B.args("bench/dataset_ops.lua", { { "repeats", "7", B.whole(1) }, { "dir", "", folder } })
 local repeats = o.repeats
+-- Before the scratch folder exists: SIGINT's default action would end the process before the
+-- Lua state closes, and the folder would stay in TMPDIR.
+B.catch_interrupt()
 local dir = o.dir ~= "" and sn.fs.mkdir(o.dir) or sn.fs.tempdir("dataset_ops")
 
 -- Rows written straight into float buffers (no Lua tables): unit normals and view directions
@@ -62,6 +67,7 @@ local function bench(name, f)
     local t0 = sn.clock()
     f()
     times[i] = (sn.clock() - t0) * 1e3
+    B.stop_if_interrupted("the operation '" .. name .. "'")
   end
   local lo, hi = math.min(unpack(times)), math.max(unpack(times))
   print(("%-34s %10.2f %10.2f %10.2f %6s"):format(name, B.median(times), lo, hi, load))

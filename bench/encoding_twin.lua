@@ -5,10 +5,13 @@
 -- encodings; the difference to the latter is the encoding's cost.
 --
 --   shadenet bench/encoding_twin.lua [repeats]      best of `repeats` (default 3), wall and CPU time
+--
+-- Ctrl-C stops it after the training in flight (that row is not printed) and exits 130.
 local sn = require "shadenet"
 package.path = (arg[0]:match("^(.*)/[^/]*$") or ".") .. "/?.lua;" .. package.path
 local B = require "common"
 local repeats = B.args("bench/encoding_twin.lua", { { "repeats", "3", B.whole(1) } }).repeats
+B.catch_interrupt()
 
 package.path = B.dir .. "/../examples/?.lua;" .. package.path
 require "lua_frequency"  -- defines lua_frequency: the built-in frequency encoding as a Lua definition
@@ -23,6 +26,7 @@ local function run(kind)
     local t0, c0 = sn.clock(), os.clock()
     sn.train { nets = net, data = data, epochs = 1, backend = "cpu" }
     wall, cpu = math.min(wall, sn.clock() - t0), math.min(cpu, os.clock() - c0)
+    B.stop_if_interrupted("the encoding " .. (kind or "none") .. " (cut short)")
   end
   return wall, cpu
 end

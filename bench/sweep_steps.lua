@@ -10,7 +10,8 @@
 --
 -- Run from the repository root (the unseen meshes' paths are relative to it). Times are
 -- sn.clock() (wall clock) around one call; "load" is the 1-minute load average before the
--- step's first run.
+-- step's first run. Ctrl-C stops it after the call in flight (that step is not printed), removes
+-- its scratch folder and exits 130.
 local sn = require "shadenet"
 package.path = (arg[0]:match("^(.*)/[^/]*$") or ".") .. "/?.lua;" .. package.path
 local B = require "common"
@@ -19,8 +20,12 @@ local thesis = require "lib.thesis"
 
 local o = B.args("bench/sweep_steps.lua", { { "repeats", "5", B.whole(1) }, { "seeds", "3", B.whole(1) } })
 local repeats, seeds = o.repeats, o.seeds
+-- Before the scratch folder exists: SIGINT's default action would end the process before the
+-- Lua state closes, and the folder (the experiment's records) would stay in TMPDIR.
+B.catch_interrupt()
 local out = sn.fs.tempdir("sweep_steps")
 local E = exp.start("sweep_steps", { "--out", out })
+B.stop_if_interrupted()
 local desc = E:data_desc { model = "phong" }
 local scene = E:scene(desc.scene)
 local nets = {}
@@ -31,7 +36,9 @@ for s = 1, seeds do
     end
   end
 end
+B.stop_if_interrupted()
 E:unseen_errors(nets, desc)  -- the unseen scenes, their G-buffers and truths: built once, as in the table
+B.stop_if_interrupted()
 
 local function bench(name, f)
   local load = B.load()
@@ -41,6 +48,7 @@ local function bench(name, f)
     local t0 = sn.clock()
     f(i)
     times[i] = sn.clock() - t0
+    B.stop_if_interrupted("the step '" .. name .. "'")
   end
   local lo, hi = math.min(unpack(times)), math.max(unpack(times))
   print(("%-44s %9.3f %9.3f %9.3f %6s"):format(name, B.median(times), lo, hi, load))

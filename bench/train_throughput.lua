@@ -30,6 +30,8 @@
 -- against the AVX2 peak, "%avx512" against the AVX-512 one. The last lines name each backend's
 -- device (the cpu backend's threads and kernel: avx512, avx2 or sse2; SHADENET_CPU_KERNEL picks
 -- one) and the gl backend's training kernel (SHADENET_GL_KERNEL=per_sample|per_net forces one).
+--
+-- Ctrl-C stops it after the job in flight, which is cut short and not printed; exit status 130.
 local sn = require "shadenet"
 package.path = (arg[0]:match("^(.*)/[^/]*$") or ".") .. "/?.lua;" .. package.path
 local B = require "common"
@@ -93,6 +95,7 @@ for _, a in ipairs(activations) do
     sn.activation.define(d)
   end
 end
+B.catch_interrupt()
 local function make_net(hidden, act, enc, seed)
   return sn.mlp { inputs = { "normal", "view" }, hidden = hidden, outputs = 3, activation = act, seed = seed,
                   encoding = enc.encoding }
@@ -144,6 +147,7 @@ if peak then
 else
   print("no roofline fractions: " .. no_peak)
 end
+B.stop_if_interrupted()
 print(("%-7s %-6s %-11s %-15s %6s %5s %14s %12s %8s %8s %8s %14s %6s %9s %9s %8s %6s %7s"):format("backend", "arch",
   "activation", "encoding", "inputs", "nets", "total steps/s", "per net", "train s", "wall s", "cpu s", "steps/cpu-s",
   "load", "peak MiB", "FLOP/step", "GFLOP/s", "%avx2", "%avx512"))
@@ -153,8 +157,10 @@ for _, backend in ipairs(backends) do
     local a, act, enc = job[1], job[2], job[3]
     local hidden = {}
     for i = 1, a[1] do hidden[i] = a[2] end
+    local name = ("%s %dx%d %s %s"):format(backend, a[1], a[2], act, enc.label)
     if backend == "gl" then
       sn.train { nets = make_net(hidden, act, enc, 1), data = warm, epochs = 1, batch = 8, backend = "gl" }
+      B.stop_if_interrupted("the warm-up of " .. name)
     end
     for _, count in ipairs(counts) do
       local nets = {}
@@ -165,6 +171,8 @@ for _, backend in ipairs(backends) do
       local runs = sn.train { nets = nets, data = data, epochs = epochs, batch = 8, backend = backend,
                               adam = { lr = 2.5e-4, beta1 = 0.8, beta2 = 0.9 } }
       local cpu, call = os.clock() - c0, sn.clock() - t0
+      -- A Ctrl-C stopped the training part-way: its figures would be of a shorter job.
+      B.stop_if_interrupted(("the job %s, %d nets (cut short)"):format(name, count))
       devices[backend] = runs[1].device
       local steps = 0
       for _, r in ipairs(runs) do steps = steps + r.steps * 8 end

@@ -1,6 +1,7 @@
 -- The benchmarks (bench/) on tiny settings: their options are checked before any work, the
 -- columns of train_throughput span what its header says, the roofline counts the trainer's
--- threads and fma_peak is found through PATH.
+-- threads, fma_peak is found through PATH, and Ctrl-C stops a benchmark (exit 130) without
+-- printing the cut-short job or leaving its scratch folder.
 local sn = require "shadenet"
 local C = require "script_check"
 
@@ -116,4 +117,39 @@ assert(r and r.nets == 2 and r.wall >= 0.3 and r.train < r.wall - 0.25 and r.cpu
 assert(math.abs(r.avx2 - r.gflops) <= 0.06, "2 nets on SHADENET_THREADS=1 against one core's peak:\n" .. out)
 assert(out:find("\ncpu: .*, 1 threads, "), out)
 
+-- Ctrl-C inside a job (after its first epoch of 2): the job is not printed, nor the next; exit 130.
+code, out = throughput("bench_interrupt", [[
+sn.train = function(o)
+  o.progress = function() ffi.C.kill(ffi.C.getpid(), 2) end  -- SIGINT, as a terminal's Ctrl-C
+  return train(o)
+end
+]], { "cpu", "1,2", "2", "tanh", "2x2" })
+assert(code == 130, "exit " .. tostring(code) .. ":\n" .. out)
+assert(#rows(out) == 0 and out:find("\nstopped %(Ctrl%-C%): the job cpu 2x2 tanh none, 1 nets %(cut short%) is not printed\n"),
+       out)
+
+-- Ctrl-C once a benchmark's scratch folder exists: it stops (130) and the folder goes with it
+-- (SIGINT's default action left it in TMPDIR).
+for _, b in ipairs { { "bench/sweep_steps.lua", "sweep_steps" }, { "bench/dataset_ops.lua", "dataset_ops" } } do
+  local dir = C.tmpdir("bench_tmp")
+  local wrapper = dir .. "/wrapper.lua"
+  sn.fs.mkdir(dir .. "/tmp")
+  sn.fs.write(wrapper, ([[
+local sn = require "shadenet"
+local ffi = require "ffi"
+ffi.cdef "int getpid(void); int kill(int pid, int sig);"
+local tempdir = sn.fs.tempdir
+sn.fs.tempdir = function(tag)
+  local d = tempdir(tag)
+  ffi.C.kill(ffi.C.getpid(), 2)
+  return d
+end
+arg[0] = %q
+dofile(arg[0])
+]]):format(b[1]))
+  code, out = C.run(wrapper, { "1" }, { TMPDIR = dir .. "/tmp" })
+  assert(code == 130 and out:find("\nstopped %(Ctrl%-C%)"), b[1] .. ": exit " .. tostring(code) .. ":\n" .. out)
+  local left = sn.fs.list(dir .. "/tmp")
+  assert(#left == 0, b[1] .. " left " .. table.concat(left, ", ") .. " in TMPDIR")
+end
 print("ok")
