@@ -13,11 +13,11 @@
 --               thesis' columns; others show no thesis figure)
 --
 -- The G-buffer is a unit sphere seen from 2.7 units (41-55% of the frame covered). A timing is
--- (t(frames + 1) - t(1)) / frames with `frames` chosen so it lasts about half a second: what a
--- frame costs after the G-buffer pass, without the final image's way back to Lua. For gl that is
--- the draw; for cpu the read-back of the attributes inside the sphere's box, the network and the
--- image. "load" is the 1-minute load average before the cell: other work on a shared machine
--- slows it.
+-- (t(frames + 1) - t(1)) / frames with `frames` chosen so it lasts about half a second (sized
+-- from a trial of about 0.1 s): what a frame costs after the G-buffer pass, without the final
+-- image's way back to Lua. For gl that is the draw; for cpu the read-back of the attributes
+-- inside the sphere's box, the network and the image. "load" is the 1-minute load average
+-- before the cell: other work on a shared machine slows it.
 local sn = require "shadenet"
 package.path = (arg[0]:match("^(.*)/[^/]*$") or ".") .. "/?.lua;" .. package.path
 local B = require "common"
@@ -77,15 +77,25 @@ local function per_frame(net, g, backend)
   local t0 = sn.clock()
   net:render(g, o)
   local one = sn.clock() - t0
-  local frames = math.max(2, math.min(50, math.ceil(0.5 / math.max(one, 1e-4))))
-  o.frames = 1
-  t0 = sn.clock()
-  net:render(g, o)
-  local t1 = sn.clock()
-  o.frames = frames + 1
-  net:render(g, o)
-  local t2 = sn.clock()
-  return math.max(0, (t2 - t1) - (t1 - t0)) / frames
+  -- Seconds of `frames` frames beyond a render of one.
+  local function span(frames)
+    o.frames = 1
+    local t1 = sn.clock()
+    net:render(g, o)
+    local t2 = sn.clock()
+    o.frames = frames + 1
+    net:render(g, o)
+    return math.max(0, (sn.clock() - t2) - (t2 - t1))
+  end
+  -- A trial of about 0.1 s sized from `one`, then the timing sized from the trial's frames:
+  -- `one` includes the image's way back to Lua, which can outweigh a fast draw (a GPU's).
+  local frames = math.max(2, math.ceil(0.1 / math.max(one, 1e-4)))
+  local s = span(frames)
+  if s < 0.4 then
+    frames = math.max(2, math.ceil(frames * 0.5 / math.max(s, 1e-3)))
+    s = span(frames)
+  end
+  return s / frames
 end
 
 local mesh = sphere(48, 96)
