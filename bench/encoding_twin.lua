@@ -1,8 +1,9 @@
 -- What a user's encoding (sn.encoding.define) costs the cpu backend: its Lua twin encodes the
--- dataset's rows once per training run, on the script's thread only. One 8x8 network, one epoch
--- of 64,000 sampled rows (normal and view, both encoded with 4 bands), with the built-in
--- frequency encoding, with a Lua copy of it (examples/lua_frequency.lua), and without
--- encodings; the difference to the latter is the encoding's cost.
+-- dataset's rows once per training run, on the script's thread only. One network of 2 hidden
+-- layers of 8 (2x8), one epoch of 64,000 sampled rows (normal and view, both encoded with 4
+-- bands), with the built-in frequency encoding, with a Lua copy of it
+-- (examples/lua_frequency.lua), and without encodings; the difference to the latter is the
+-- encoding's cost.
 --
 --   shadenet bench/encoding_twin.lua [repeats]      best of `repeats` (default 3), wall and CPU time
 --
