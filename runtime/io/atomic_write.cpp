@@ -5,8 +5,10 @@
 
 #include <cerrno>
 #include <chrono>
+#include <cstdint>
 #include <cstring>
 #include <filesystem>
+#include <random>
 #include <set>
 #include <stdexcept>
 
@@ -15,6 +17,9 @@ namespace sn::io {
 namespace {
 
 namespace fs = std::filesystem;
+
+constexpr std::size_t kNameMax = 255;    // NAME_MAX of Linux file systems
+constexpr std::size_t kTempDigits = 12;  // random: a name nobody can plant a link under beforehand
 
 std::string head(const std::string& path, const std::string& what) { return "cannot write " + what + " '" + path + "': "; }
 
@@ -25,6 +30,23 @@ std::string through_links(const std::string& path) {
   if (!fs::is_symlink(path, ec)) return path;
   const fs::path real = fs::weakly_canonical(path, ec);
   return ec ? path : real.string();
+}
+
+// ".NAME.tmpDIGITS" beside `target` (rename is atomic only within one file system), NAME cut short
+// (not inside a UTF-8 character) so that the whole fits NAME_MAX as any legal name does.
+std::string temporary_name(const fs::path& target) {
+  std::string name = target.filename().string();
+  const std::size_t keep = kNameMax - 1 - 4 - kTempDigits;
+  if (name.size() > keep) {
+    std::size_t cut = keep;
+    while (cut > 0 && (static_cast<unsigned char>(name[cut]) & 0xC0) == 0x80) --cut;
+    name.resize(cut);
+  }
+  static thread_local std::random_device random;
+  const uint64_t r = (uint64_t(random()) << 32) | random();
+  std::string digits = std::to_string(r % 1000000000000ull);
+  digits.insert(0, kTempDigits - digits.size(), '0');
+  return (target.parent_path() / ("." + name + ".tmp" + digits)).string();
 }
 
 // Writes `bytes` to a temporary file beside `path` (its folders created), fsync'd when `sync`;
@@ -38,10 +60,15 @@ std::string write_temporary(const std::string& path, const std::string& bytes, c
     fs::create_directories(target.parent_path(), ec);
     if (ec) throw std::runtime_error(why + "cannot create folder '" + target.parent_path().string() + "': " + ec.message());
   }
-  // Hidden, per process, in the target's folder: rename is atomic only within one filesystem.
-  const std::string tmp =
-      (target.parent_path() / ("." + target.filename().string() + ".tmp" + std::to_string(::getpid()))).string();
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  // O_EXCL: created here, never opened through a link or file planted under the name (a name
+  // taken draws another).
+  std::string tmp;
+  int fd = -1;
+  for (int tries = 0; fd < 0 && tries < 100; ++tries) {
+    tmp = temporary_name(target);
+    fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
+    if (fd < 0 && errno != EEXIST) break;
+  }
   if (fd < 0) throw std::runtime_error(why + std::strerror(errno));
   auto fail = [&](int err) {
     ::unlink(tmp.c_str());

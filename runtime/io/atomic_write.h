@@ -25,8 +25,9 @@ void write_file_atomic(const std::string& path, const std::string& bytes, const 
 void write_files_atomic(const std::vector<std::pair<std::string, std::string>>& files, const std::string& what = "file",
                         const std::function<void()>& before_renames = {});
 
-// Removes from `dir` the temporary files a killed writer left (".NAME.tmpPID", as the functions
-// above name them) that are older than `min_age_seconds`: a live writer's lasts milliseconds, and
+// Removes from `dir` the temporary files a killed writer left (".NAME.tmpDIGITS", as the functions
+// above name them: created anew with random digits, NAME cut short where the whole would pass
+// NAME_MAX) that are older than `min_age_seconds`: a live writer's lasts milliseconds, and
 // another process (a shard of the same sweep) may be writing beside us. Returns how many.
 // Nothing happens when `dir` is not a folder.
 int remove_stale_temporaries(const std::string& dir, double min_age_seconds = 60);

@@ -99,7 +99,7 @@ int w_exists(lua_State* L) {
 }
 
 // sn.fs.remove_stale_temporaries(dir [, seconds = 60]) -> count: the temporary files that killed
-// writers left in dir (".NAME.tmpPID"), older than `seconds` (io::remove_stale_temporaries).
+// writers left in dir (".NAME.tmpDIGITS"), older than `seconds` (io::remove_stale_temporaries).
 int w_remove_stale_temporaries(lua_State* L) {
   const std::string dir = check_string(L, 1, "sn.fs.remove_stale_temporaries folder");
   const double seconds = lua_isnoneornil(L, 2) ? 60.0 : check_number(L, 2, "sn.fs.remove_stale_temporaries seconds");

@@ -68,7 +68,7 @@ assert(not ok and err:find("f.json"), "json errors name the file")
 local p = results.write_file(tmp .. "/sub/a.txt", "hello")
 assert(results.read_file(p) == "hello", "atomic write")
 for _, name in ipairs(sn.fs.list(tmp .. "/sub")) do assert(not name:find("tmp"), "no temp file left: " .. name) end
--- Temporary files as the writers name them (.NAME.tmpPID): a killed writer's, two minutes old, is
+-- Temporary files as the writers name them (.NAME.tmpDIGITS): a killed writer's, two minutes old, is
 -- cleaned; a fresh one (a writer beside us) and a file that only looks alike stay.
 for _, name in ipairs { ".a.txt.tmp4242", ".b.json.tmp7", ".c.txt.tmp12x", "d.txt.tmp5" } do
   local f = io.open(tmp .. "/sub/" .. name, "w") f:write("half") f:close()
