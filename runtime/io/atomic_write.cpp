@@ -1,6 +1,7 @@
 #include "io/atomic_write.h"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -49,8 +50,9 @@ std::string temporary_name(const fs::path& target) {
   return (target.parent_path() / ("." + name + ".tmp" + digits)).string();
 }
 
-// Writes `bytes` to a temporary file beside `path` (its folders created), fsync'd when `sync`;
-// returns its name. On failure nothing is left and the error names `path`.
+// Writes `bytes` to a temporary file beside `path` (its folders created) with the old file's mode
+// (and owner, where allowed), fsync'd when `sync`; returns its name. On failure nothing is left
+// and the error names `path`.
 std::string write_temporary(const std::string& path, const std::string& bytes, const std::string& what, bool sync) {
   const std::string why = head(path, what);
   if (path.empty()) throw std::invalid_argument(why + "the path is empty");
@@ -60,36 +62,44 @@ std::string write_temporary(const std::string& path, const std::string& bytes, c
     fs::create_directories(target.parent_path(), ec);
     if (ec) throw std::runtime_error(why + "cannot create folder '" + target.parent_path().string() + "': " + ec.message());
   }
+  struct stat old {};
+  const bool replacing = ::stat(path.c_str(), &old) == 0 && S_ISREG(old.st_mode);
   // O_EXCL: created here, never opened through a link or file planted under the name (a name
-  // taken draws another).
+  // taken draws another). A new file gets 0666 less the umask, as other tools make them; a
+  // replacement starts private and gets the old file's mode once written (a 0600 checkpoint
+  // became 0644, world-readable).
   std::string tmp;
   int fd = -1;
   for (int tries = 0; fd < 0 && tries < 100; ++tries) {
     tmp = temporary_name(target);
-    fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
+    fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, replacing ? 0600 : 0666);
     if (fd < 0 && errno != EEXIST) break;
   }
   if (fd < 0) throw std::runtime_error(why + std::strerror(errno));
-  auto fail = [&](int err) {
-    ::unlink(tmp.c_str());
-    throw std::runtime_error(why + std::strerror(err));
-  };
-  for (std::size_t done = 0; done < bytes.size();) {
+  int err = 0;
+  for (std::size_t done = 0; done < bytes.size() && !err;) {
     const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
     if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) {
-      const int err = n < 0 ? errno : EIO;
-      ::close(fd);
-      fail(err);
+    if (n <= 0) err = n < 0 ? errno : EIO;
+    else done += std::size_t(n);
+  }
+  if (!err && replacing) {
+    // The owner as far as we may (root: any; others: a group of theirs), then the mode.
+    if (old.st_uid != ::geteuid() || old.st_gid != ::getegid())
+      (void)(::fchown(fd, old.st_uid, old.st_gid) == 0 || ::fchown(fd, uid_t(-1), old.st_gid) == 0);
+    if (::fchmod(fd, old.st_mode & 0777) != 0) {
+      // A file system without modes (vfat) refuses: wrong only where the new file is more open.
+      err = errno;
+      struct stat now {};
+      if (::fstat(fd, &now) == 0 && (now.st_mode & 0777 & ~old.st_mode) == 0) err = 0;
     }
-    done += std::size_t(n);
   }
-  if (sync && ::fsync(fd) != 0) {
-    const int err = errno;
-    ::close(fd);
-    fail(err);
+  if (!err && sync && ::fsync(fd) != 0) err = errno;
+  if (::close(fd) != 0 && !err) err = errno;
+  if (err) {
+    ::unlink(tmp.c_str());
+    throw std::runtime_error(why + std::strerror(err));
   }
-  if (::close(fd) != 0) fail(errno);
   return tmp;
 }
 

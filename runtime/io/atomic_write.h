@@ -1,8 +1,9 @@
 // Writing a whole file so that it is never half-written: the bytes go to a temporary file beside
 // the target, every write, the flush, fsync and close are checked, then the temporary is renamed
-// over the target (a symbolic link's target: the link stays). On any failure the old file is
-// untouched, the temporary is removed and the error names the path and the cause ("No space
-// left on device", ...).
+// over the target (a symbolic link's target: the link stays). The new file keeps the old one's
+// permissions (and owner, where the writer may give it); a new one gets 0666 less the umask. On
+// any failure the old file is untouched, the temporary is removed and the error names the path
+// and the cause ("No space left on device", ...).
 #pragma once
 #include <functional>
 #include <string>

@@ -1,7 +1,8 @@
 // Whole-file writes (io/atomic_write.h): through a symbolic link the file the link points to gets
 // the bytes and the link stays a link (renamed over, the link became a file of its own and the
 // file it named kept the old bytes: a net:save to a link "saved" nothing a reader of it sees); the
-// temporary file is never a planted link and fits beside any legal name.
+// temporary file is never a planted link, fits beside any legal name, and the old file's
+// permissions carry over.
 #include <gtest/gtest.h>
 
 #include <fcntl.h>
@@ -112,6 +113,40 @@ TEST(AtomicWrite, LongNamesFit) {
     std::ofstream(base / t) << "left by a killed writer";
   }
   EXPECT_EQ(remove_stale_temporaries(dir.path(), 0), 2);
+}
+
+// Overwriting keeps the file's permissions and, where the writer may, its owner (a private 0600
+// checkpoint became 0644, world-readable); a new file gets 0666 less the umask, as other tools
+// make them.
+TEST(AtomicWrite, PermissionsCarryOver) {
+  const TempDir dir("test_atomic_write");
+  const fs::path base(dir.path()), secret = base / "secret.bin", shared = base / "shared.txt";
+  std::ofstream(secret) << "old";
+  fs::permissions(secret, fs::perms::owner_read | fs::perms::owner_write);
+  write_file_atomic(secret.string(), "new");
+  EXPECT_EQ(mode_of(secret) & 07777, 0600u);
+  std::ofstream(shared) << "old";
+  fs::permissions(shared, fs::perms(0664));
+  write_files_atomic({{secret.string(), "newer"}, {shared.string(), "new"}});
+  EXPECT_EQ(mode_of(secret) & 07777, 0600u);
+  EXPECT_EQ(mode_of(shared) & 07777, 0664u);
+  EXPECT_EQ(read(secret), "newer");
+  const mode_t old_mask = ::umask(0);
+  write_file_atomic((base / "fresh0").string(), "x");
+  ::umask(027);
+  write_file_atomic((base / "fresh027").string(), "x");
+  ::umask(old_mask);
+  EXPECT_EQ(mode_of(base / "fresh0") & 07777, 0666u);
+  EXPECT_EQ(mode_of(base / "fresh027") & 07777, 0640u);
+  if (::geteuid() == 0) {  // only root may give a file away
+    ASSERT_EQ(::chown(shared.c_str(), 4242, 4343), 0);
+    write_file_atomic(shared.string(), "newer");
+    struct stat st {};
+    ASSERT_EQ(::stat(shared.c_str(), &st), 0);
+    EXPECT_EQ(st.st_uid, 4242u);
+    EXPECT_EQ(st.st_gid, 4343u);
+    EXPECT_EQ(st.st_mode & 07777, 0664u);
+  }
 }
 
 }  // namespace
