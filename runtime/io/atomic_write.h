@@ -1,9 +1,16 @@
 // Writing a whole file so that it is never half-written: the bytes go to a temporary file beside
 // the target, every write, the flush, fsync and close are checked, then the temporary is renamed
-// over the target (a symbolic link's target: the link stays). The new file keeps the old one's
-// permissions (and owner, where the writer may give it); a new one gets 0666 less the umask. On
-// any failure the old file is untouched, the temporary is removed and the error names the path
-// and the cause ("No space left on device", ...).
+// over the target (a symbolic link's target: the link stays; a dangling link's target is made).
+// The new file keeps the old one's permissions (and owner, where the writer may give it); a new
+// one gets 0666 less the umask. On any failure the old file is untouched, the temporary is removed
+// and the error names the path and the cause ("No space left on device", ...).
+//
+// What is not a regular file — a FIFO, a character device, a pipe or terminal behind /dev/stdout —
+// has no old contents to keep and is written into as it is (no temporary, never replaced). A path
+// that leads to one of this process's descriptors (/dev/stdout, /dev/fd/N, /proc/self/fd/N) is
+// written through it, where it stands, as print() writes, whatever it is (a file stdout is sent
+// to, a socket); another process's open file (/proc/PID/fd/N) is appended to. A folder is an
+// error.
 #pragma once
 #include <functional>
 #include <string>
@@ -20,7 +27,8 @@ void write_file_atomic(const std::string& path, const std::string& bytes, const 
 // renamed. An experiment's hundreds of run records cost one flush instead of one each (360
 // records of 3 KB: 0.07-0.08 s, against 0.12-0.15 s with an fsync each; docs/performance.md).
 // A failure before the renames leaves every old file as it was; one during them (rare: the
-// folder removed meanwhile) leaves the files before it new and the rest old, each whole.
+// folder removed meanwhile) leaves the files before it new and the rest old, each whole. Streams
+// and devices are written at their turn among the renames.
 // `before_renames`, when given, runs once every temporary file is written and flushed (a dataset
 // export removes its old sidecar there, so a rename that fails cannot leave it beside new arrays).
 void write_files_atomic(const std::vector<std::pair<std::string, std::string>>& files, const std::string& what = "file",

@@ -342,16 +342,18 @@ TEST(DatasetFile, UnwritablePathLeavesNothingBehind) {
                 "/sub': Not a directory");
   EXPECT_EQ(message_of([&] { export_dataset(d, blocker + "/x.csv"); }),
             "cannot write dataset '" + blocker + "/x.csv': cannot create folder '" + blocker + "': Not a directory");
-  // Re-exporting where an array cannot be renamed into place (a full disk fails before any rename:
-  // tests/lua/test_full_disk.lua) leaves no sidecar: none ever points at a mix of old and new arrays.
+  // A folder where an array goes is refused before anything is written: the old export stays as
+  // it was. (A rename that fails all the same leaves no sidecar: the old one is removed before the
+  // renames, AtomicWrite.ARenameThatFailsLeavesTheRestOld.)
   const std::string at = scratch("again/a.json");
   export_dataset(d, at);
   ASSERT_TRUE(fs::exists(at));
   fs::remove(scratch("again/a.targets.npy"));
-  fs::create_directories(scratch("again/a.targets.npy/x"));  // a non-empty folder where the array goes
-  EXPECT_NE(message_of([&] { export_dataset(d, at); }).find("cannot write dataset '" + scratch("again/a.targets.npy") + "'"),
-            std::string::npos);
-  EXPECT_FALSE(fs::exists(at));
+  fs::create_directories(scratch("again/a.targets.npy/x"));
+  EXPECT_EQ(message_of([&] { export_dataset(d, at); }),
+            "cannot write dataset '" + scratch("again/a.targets.npy") + "': it is a directory");
+  EXPECT_TRUE(fs::exists(at));
+  for (const auto& e : fs::directory_iterator(scratch("again"))) EXPECT_NE(e.path().filename().string()[0], '.') << e.path();
 }
 
 }  // namespace
