@@ -24,6 +24,19 @@ constexpr const char* kFormat = "shadenet-dataset";
 constexpr int kVersion = 1;
 constexpr uint64_t kMaxRows = uint64_t(1) << 31;  // as sn.dataset{...}: keeps every size product in range
 
+// A NumPy export's files: the sidecar, and the arrays named after its stem.
+DatasetPaths numpy_paths(const std::string& sidecar, const std::string& stem) {
+  DatasetPaths d;
+  d.main = sidecar;
+  d.inputs = stem + ".inputs.npy";
+  d.targets = stem + ".targets.npy";
+  return d;
+}
+
+// The sidecar a path names, links followed: its arrays lie beside it (an export through a link
+// writes them there, the loader reads them there).
+std::string real_sidecar(const std::string& main) { return io::through_links(main); }
+
 // A hash of everything a trainer reads: equal rows, sets, widths, colour and names, equal key.
 std::string content_key(const Dataset& d) {
   io::Fnv1a f;
@@ -118,7 +131,14 @@ std::string npy_of(const std::vector<float>& train, const std::vector<float>& va
   return out;
 }
 
-void write_numpy(const Dataset& d, const DatasetPaths& p) {
+// Returns the files written (through a link: where it leads).
+DatasetPaths write_numpy(const Dataset& d, const DatasetPaths& given) {
+  // Through a link, where it leads: the sidecar there, the arrays beside it and named after it,
+  // the link kept. (The link was removed and the arrays landed beside it: nothing loaded.)
+  const std::string real = real_sidecar(given.main);
+  const DatasetPaths p =
+      real == given.main ? given
+                         : numpy_paths(real, fs::path(real).extension() == ".json" ? real.substr(0, real.size() - 5) : real);
   const std::size_t rows = d.train_count() + d.val_count();
   Json side;
   side["format"] = kFormat;
@@ -136,12 +156,15 @@ void write_numpy(const Dataset& d, const DatasetPaths& p) {
   const std::string sidecar = side.dump(2) + "\n";
 
   std::error_code ec;
-  const auto st = fs::symlink_status(p.main, ec);
-  if (fs::is_directory(st)) throw std::runtime_error("cannot write dataset '" + p.main + "': it is a directory");
+  const auto st = fs::status(p.main, ec);
+  // A sidecar names arrays beside it: it is a file in a folder, not a device or a stream.
+  if (fs::exists(st) && !fs::is_regular_file(st))
+    throw std::runtime_error("cannot write dataset '" + p.main + "': " +
+                             (fs::is_directory(st) ? "it is a directory" : "not a regular file"));
   // All three are written before any replaces its old file: a failure there (a full disk) leaves
   // the old export whole. Then the old sidecar goes, the arrays are renamed and the sidecar last,
-  // so a rename that fails (a folder in an array's place) leaves no sidecar pointing at a mix of
-  // old and new arrays.
+  // so a rename that fails (rare: the folder removed meanwhile; a folder in an array's place is
+  // refused before anything is written) leaves no sidecar pointing at a mix of old and new arrays.
   io::write_files_atomic({{p.inputs, npy_of(d.train_x, d.val_x, rows, d.inputs)},
                           {p.targets, npy_of(d.train_y, d.val_y, rows, d.outputs)},
                           {p.main, sidecar}},
@@ -150,6 +173,7 @@ void write_numpy(const Dataset& d, const DatasetPaths& p) {
                              throw std::runtime_error("cannot write dataset '" + p.main +
                                                       "': cannot remove the old sidecar: " + ec.message());
                          });
+  return p;
 }
 
 // ---- loading ----
@@ -252,7 +276,7 @@ std::shared_ptr<Dataset> load_numpy(const DatasetPaths& p) {
   if (train > kMaxRows || val > kMaxRows) s.fail("more than 2^31 rows in a set");
   s.text(nullptr, "source_key", "");  // provenance for people; the loaded key is the content's
 
-  const fs::path folder = fs::path(p.main).parent_path();
+  const fs::path folder = fs::path(real_sidecar(p.main)).parent_path();
   auto array = [&](const char* group, uint64_t width) {
     const std::string file = s.text(group, "file");
     if (file.empty()) s.fail(std::string("field '") + group + ".file' is empty");
@@ -425,25 +449,16 @@ DatasetPaths dataset_paths(const std::string& path) {
   if (file.empty() || file == "." || file == "..")
     throw std::invalid_argument("'" + path + "' names no file (expected e.g. out/cloth.json, out/cloth.csv or out/cloth)");
   const std::string ext = p.extension().string();
-  DatasetPaths d;
-  std::string stem;
   if (ext == ".csv") {
+    DatasetPaths d;
     d.format = DatasetFormat::csv;
     d.main = path;
     return d;
-  } else if (ext == ".json") {
-    stem = path.substr(0, path.size() - ext.size());
-    d.main = path;
-  } else if (ext.empty()) {
-    stem = path;
-    d.main = path + ".json";
-  } else {
-    throw std::invalid_argument("'" + path + "': unknown dataset file type '" + ext +
-                                "' (.json: NumPy arrays with a JSON sidecar; .csv; no extension: .json)");
   }
-  d.inputs = stem + ".inputs.npy";
-  d.targets = stem + ".targets.npy";
-  return d;
+  if (ext == ".json") return numpy_paths(path, path.substr(0, path.size() - ext.size()));
+  if (ext.empty()) return numpy_paths(path + ".json", path);
+  throw std::invalid_argument("'" + path + "': unknown dataset file type '" + ext +
+                              "' (.json: NumPy arrays with a JSON sidecar; .csv; no extension: .json)");
 }
 
 std::string csv_header(const Dataset& d) {
@@ -453,9 +468,14 @@ std::string csv_header(const Dataset& d) {
 }
 
 DatasetPaths export_dataset(const Dataset& d, const std::string& path) {
-  const DatasetPaths p = dataset_paths(path);
-  if (p.format == DatasetFormat::csv) write_csv(d, p.main);
-  else write_numpy(d, p);
+  DatasetPaths p = dataset_paths(path);
+  if (p.format == DatasetFormat::csv) {
+    write_csv(d, p.main);
+    return p;
+  }
+  const DatasetPaths written = write_numpy(d, p);
+  p.inputs = written.inputs;  // beside the sidecar a link at p.main leads to; p.main loads it
+  p.targets = written.targets;
   return p;
 }
 

@@ -29,10 +29,14 @@ DatasetPaths dataset_paths(const std::string& path);
 
 // Writes the dataset; returns the paths written. Every file is written atomically and the
 // sidecar last, after any old sidecar at that path was removed: a failed or interrupted export
-// never leaves a sidecar over missing or mismatched arrays.
+// never leaves a sidecar over missing or mismatched arrays. A sidecar path that is a symbolic
+// link is written where it leads, the arrays beside that sidecar and named after it (the link
+// stays; main is the path given, which loads it).
 DatasetPaths export_dataset(const Dataset& d, const std::string& path);
 
 // Reads what export_dataset wrote (or a sidecar and arrays made elsewhere, e.g. with numpy).
+// The arrays are looked for beside the sidecar, through links: beside the file a linked sidecar
+// path leads to.
 // The dataset's key is a hash of its content (the same rows give the same key however they
 // were stored); the sidecar's "source_key" is the key of the dataset that was exported.
 std::shared_ptr<Dataset> load_dataset(const std::string& path);

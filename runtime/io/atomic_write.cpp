@@ -221,6 +221,8 @@ std::string identity(const Target& t) {
 
 }  // namespace
 
+std::string through_links(const std::string& path) { return follow_links(path, nullptr, nullptr); }
+
 void write_file_atomic(const std::string& path, const std::string& bytes, const std::string& what) {
   const Target t = target_of(path, what);
   if (t.straight) return write_into(t, bytes, what);

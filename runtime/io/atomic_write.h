@@ -34,6 +34,12 @@ void write_file_atomic(const std::string& path, const std::string& bytes, const 
 void write_files_atomic(const std::vector<std::pair<std::string, std::string>>& files, const std::string& what = "file",
                         const std::function<void()>& before_renames = {});
 
+// The file a write to `path` goes to: symbolic links followed (a relative one from the link's
+// folder) to the path they end at, which need not exist. A link in /proc's fd folders is not
+// followed (its target is an open file, not a path), nor one past 40 in a row (a loop): the path
+// where following stopped is returned, and opening it tells the rest.
+std::string through_links(const std::string& path);
+
 // Removes from `dir` the temporary files a killed writer left (".NAME.tmpDIGITS", as the functions
 // above name them: created anew with random digits, NAME cut short where the whole would pass
 // NAME_MAX) that are older than `min_age_seconds`: a live writer's lasts milliseconds, and

@@ -356,5 +356,31 @@ TEST(DatasetFile, UnwritablePathLeavesNothingBehind) {
   for (const auto& e : fs::directory_iterator(scratch("again"))) EXPECT_NE(e.path().filename().string()[0], '.') << e.path();
 }
 
+// A sidecar path that is a link to another folder's sidecar: the export goes where the link points
+// (the arrays beside the real sidecar, named after it), the link stays, and loading through the
+// link finds the arrays. The link was removed and the arrays written beside it, the sidecar where
+// it pointed: neither path loaded.
+TEST(DatasetFile, ExportThroughALinkGoesWhereItPoints) {
+  const fs::path out = scratch("linked/out"), real = scratch("linked/real");
+  fs::create_directories(out);
+  fs::create_directories(real);
+  const fs::path link = out / "ds.json";
+  fs::create_symlink(fs::path("..") / "real" / "cloth.json", link);
+  for (int pass = 0; pass < 2; ++pass) {  // the target missing, then there
+    Dataset d = awkward();
+    d.train_x[0] = float(pass);
+    const DatasetPaths p = export_dataset(d, link.string());
+    EXPECT_EQ(p.main, link.string());
+    EXPECT_EQ(p.inputs, (out / ".." / "real" / "cloth.inputs.npy").string());
+    EXPECT_TRUE(fs::is_symlink(link));
+    EXPECT_TRUE(fs::is_regular_file(fs::symlink_status(real / "cloth.json")));
+    EXPECT_TRUE(fs::exists(real / "cloth.inputs.npy"));
+    EXPECT_TRUE(fs::exists(real / "cloth.targets.npy"));
+    EXPECT_FALSE(fs::exists(out / "ds.inputs.npy"));
+    expect_equal(d, *load_dataset(link.string()));
+    expect_equal(d, *load_dataset((real / "cloth.json").string()));
+  }
+}
+
 }  // namespace
 }  // namespace sn::data
