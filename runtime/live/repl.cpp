@@ -9,38 +9,41 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <stdexcept>
 
 #include <editline/readline.h>
+
+#include "io/atomic_write.h"
+#include "io/read_file.h"
+#include "io/temp_dir.h"
 
 namespace sn::live {
 
 namespace {
 StdinReader* g_editing = nullptr;  // libedit's line callback takes no user data
 
-// Saves the history whole or not at all: libedit writes the file in place, and a full disk left
-// it cut mid-line. It writes a temporary beside the file instead, kept only when it holds every
-// entry (its header and one ended line each), flushed; then renamed over the file. A failure
-// leaves the old file and says so once.
+// Saves the history whole or not at all: libedit writes a file in place, and a full disk left
+// the history cut mid-line. It writes into a private scratch folder instead; what it wrote is
+// kept only when it holds every entry (its header and one ended line each), and goes to its place
+// as every file shadenet writes does (io::write_file_atomic: a fresh temporary, permissions kept,
+// flushed, renamed). A failure leaves the old file and says so once.
 void save_history(const std::string& path) {
   static bool warned = false;
-  const std::string tmp = path + ".tmp" + std::to_string(::getpid());
-  bool ok = write_history(tmp.c_str()) == 0;
-  if (ok) {
-    std::FILE* f = std::fopen(tmp.c_str(), "rb");
-    long lines = 0;
-    int c = 0, last = 0;
-    while (f && (c = std::fgetc(f)) != EOF) lines += c == '\n', last = c;
-    ok = f && last == '\n' && lines == history_length + 1 && !std::ferror(f);
-    if (f) std::fclose(f);
+  std::string why;
+  try {
+    const io::TempDir scratch("history");
+    const std::string written = scratch.path() + "/history";
+    if (write_history(written.c_str()) != 0) throw std::runtime_error("libedit could not write it");
+    const std::string bytes = io::read_file(written, "history");
+    const auto lines = std::count(bytes.begin(), bytes.end(), '\n');
+    if (bytes.empty() || bytes.back() != '\n' || lines != history_length + 1)
+      throw std::runtime_error("libedit wrote it short (a full disk?)");
+    io::write_file_atomic(path, bytes, "the console history");
+    return;
+  } catch (const std::exception& e) {
+    why = e.what();
   }
-  if (ok) {
-    const int fd = ::open(tmp.c_str(), O_RDONLY | O_CLOEXEC);
-    ok = fd >= 0 && ::fsync(fd) == 0;
-    if (fd >= 0) ::close(fd);
-  }
-  if (ok && std::rename(tmp.c_str(), path.c_str()) == 0) return;
-  ::unlink(tmp.c_str());
-  if (!warned) std::fprintf(stderr, "\n[live] cannot save the console history to %s; the old file stays\n", path.c_str());
+  if (!warned) std::fprintf(stderr, "\n[live] cannot save the console history to %s (%s); the old file stays\n", path.c_str(), why.c_str());
   warned = true;
 }
 }  // namespace
