@@ -38,25 +38,16 @@ function B.one_of(choices)
   return { form = "one of " .. table.concat(choices, ", "), parse = function(s) return known[s] and s or nil end }
 end
 
--- A hidden-layers x width pair, {layers, width}, both >= 1.
-B.arch = {
-  form = "LAYERSxWIDTH, both >= 1 (e.g. 8x8)",
-  parse = function(s)
-    local l, w = s:match("^(%d+)x(%d+)$")
-    l, w = tonumber(l), tonumber(w)
-    return l and l >= 1 and w >= 1 and { l, w } or nil
-  end,
-}
-
--- An image size, {width, height} in pixels, both >= 1.
-B.size = {
-  form = "WIDTHxHEIGHT in pixels, both >= 1 (e.g. 640x480)",
-  parse = function(s)
-    local w, h = s:match("^(%d+)x(%d+)$")
-    w, h = tonumber(w), tonumber(h)
-    return w and w >= 1 and h >= 1 and { w, h } or nil
-  end,
-}
+-- "AxB" as {a, b}, both whole numbers >= 1.
+local function pair(form)
+  return { form = form, parse = function(s)
+    local a, b = s:match("^(%d+)x(%d+)$")
+    a, b = tonumber(a), tonumber(b)
+    return a and a >= 1 and b >= 1 and { a, b } or nil
+  end }
+end
+B.arch = pair("LAYERSxWIDTH, both >= 1 (e.g. 8x8)")  -- hidden layers x width
+B.size = pair("WIDTHxHEIGHT in pixels, both >= 1 (e.g. 640x480)")
 
 -- A comma-separated list of one or more items of `item` (a list: the values in order).
 function B.list(item)

@@ -24,6 +24,7 @@
 
 #include "io/atomic_write.h"
 #include "io/temp_dir.h"
+#include "message_of.h"
 
 namespace sn::io {
 namespace {
@@ -33,15 +34,6 @@ namespace fs = std::filesystem;
 std::string read(const fs::path& p) {
   std::ifstream f(p, std::ios::binary);
   return std::string(std::istreambuf_iterator<char>(f), {});
-}
-
-std::string message_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const std::exception& e) {
-    return e.what();
-  }
-  return "(no error)";
 }
 
 // What a non-blocking read end holds now.

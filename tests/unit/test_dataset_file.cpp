@@ -16,6 +16,7 @@
 #include "io/npy.h"
 #include "io/read_file.h"
 #include "io/temp_dir.h"
+#include "message_of.h"
 
 namespace sn::data {
 namespace {
@@ -30,15 +31,6 @@ std::string scratch(const std::string& name) {
 void write(const std::string& path, const std::string& bytes) {
   std::ofstream f(path, std::ios::binary);
   f << bytes;
-}
-
-std::string message_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const std::exception& e) {
-    return e.what();
-  }
-  return "(no error)";
 }
 
 bool same_bits(const std::vector<float>& a, const std::vector<float>& b) {

@@ -9,6 +9,7 @@
 
 #include "data/combine.h"
 #include "data/random.h"
+#include "message_of.h"
 
 namespace sn::data {
 namespace {
@@ -36,15 +37,6 @@ std::vector<int> ids(const std::vector<float>& x, int width = 3) {
   std::vector<int> v;
   for (std::size_t i = 0; i < x.size(); i += width) v.push_back(int(x[i]));
   return v;
-}
-
-std::string message_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const std::exception& e) {
-    return e.what();
-  }
-  return "(no error)";
 }
 
 TEST(DatasetConcat, TrainingRowsInOrderThenValidationRows) {
