@@ -178,7 +178,17 @@ std::string type_name_at(lua_State* L, int idx) {
       lua_pop(L, 2);
       return n;
     }
-    lua_pop(L, 2);
+    lua_pop(L, 1);
+    // A metatable without __name (LuaJIT's files: io.stdout) is named by its registry key, "FILE*".
+    std::string found;
+    lua_pushnil(L);
+    while (found.empty() && lua_next(L, LUA_REGISTRYINDEX)) {
+      if (lua_type(L, -2) == LUA_TSTRING && lua_rawequal(L, -1, -3)) found = lua_tostring(L, -2);
+      lua_pop(L, 1);
+    }
+    if (!found.empty()) lua_pop(L, 1);  // lua_next left the key
+    lua_pop(L, 1);
+    if (!found.empty()) return found;
   }
   return luaL_typename(L, idx);
 }

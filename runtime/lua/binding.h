@@ -99,15 +99,27 @@ template <class T>
 std::shared_ptr<T> check_shared(lua_State* L, int idx, const char* type) {
   return check_box<T>(L, idx, type);
 }
-// __gc / :release() for Box<T>: frees the C++ object once; later use is a clear error.
+// :release() for Box<T>: frees the C++ object once; later use is a clear error. The type name is
+// the closure's upvalue: b.release(io.stdout) (a '.' for ':') must not free a FILE* as a Box.
 template <class T>
-int release(lua_State* L) {
-  if (void* ud = lua_touserdata(L, 1)) static_cast<Box<T>*>(ud)->ptr.reset();
+int release_body(lua_State* L) {
+  const char* type = lua_tostring(L, lua_upvalueindex(1));
+  void* ud = test_type(L, 1, type);
+  if (!ud)
+    throw Error(std::string(type) + ":release: " + type + " expected, got " + type_name_at(L, 1) +
+                " (call it with ':', obj:release())");
+  static_cast<Box<T>*>(ud)->ptr.reset();
   return 0;
 }
 template <class T>
+int release(lua_State* L) {
+  return guarded(L, release_body<T>);
+}
+// __gc for Box<T>; Lua calls it on the type's own userdata only, but a script can reach it through
+// getmetatable(obj).__gc, so it checks too.
+template <class T>
 int gc(lua_State* L) {
-  if (void* ud = lua_touserdata(L, 1)) static_cast<Box<T>*>(ud)->~Box<T>();
+  if (void* ud = test_type(L, 1, lua_tostring(L, lua_upvalueindex(1)))) static_cast<Box<T>*>(ud)->~Box<T>();
   return 0;
 }
 // define_type for a Box<T>: wires __gc and :release to the right destructor.
@@ -116,11 +128,13 @@ void define_box_type(lua_State* L, const char* type, const luaL_Reg* methods, lu
                      const luaL_Reg* metamethods = nullptr) {
   define_type(L, type, methods, tostring_fn, metamethods);
   luaL_getmetatable(L, type);
-  lua_pushcfunction(L, gc<T>);
+  lua_pushstring(L, type);
+  lua_pushcclosure(L, gc<T>, 1);
   lua_setfield(L, -2, "__gc");
   lua_getfield(L, -1, "__index");
   if (lua_istable(L, -1)) {
-    lua_pushcfunction(L, release<T>);
+    lua_pushstring(L, type);
+    lua_pushcclosure(L, release<T>, 1);
     lua_setfield(L, -2, "release");
   }
   lua_pop(L, 2);
