@@ -15,7 +15,22 @@ namespace sn::lua {
 
 namespace {
 thread_local lua_State* g_running = nullptr;  // the thread of the innermost guarded call
+thread_local int g_nested = 0;                // NestedCalls alive on this thread
+thread_local bool g_too_deep = false;         // one of them threw; cleared when all have ended
 }  // namespace
+
+NestedCall::NestedCall(const std::string& what) {
+  if (g_nested >= kMaxNestedCalls) {
+    g_too_deep = true;
+    throw Error(what + ": more than " + std::to_string(kMaxNestedCalls) +
+                " nested calls from Lua into shadenet and back (does it call itself, e.g. its own model:shade?)");
+  }
+  ++g_nested;
+}
+NestedCall::~NestedCall() {
+  if (--g_nested == 0) g_too_deep = false;
+}
+bool NestedCall::unwinding() { return g_too_deep; }
 
 lua_State* running_state(lua_State* fallback) { return g_running ? g_running : fallback; }
 
@@ -46,6 +61,9 @@ int guarded(lua_State* L, int (*f)(lua_State*)) {
   int results = 0;
   try {
     results = f(L);
+  } catch (const LocatedError& e) {
+    lua_pushstring(L, e.what());
+    failed = true;
   } catch (const std::bad_alloc&) {  // its what() says only "std::bad_alloc"
     luaL_where(L, 1);
     lua_pushstring(L, "out of memory: the process could not allocate what this call needs (a smaller image or "
@@ -72,9 +90,16 @@ std::string caller_line(lua_State* L) {
 }
 
 void pcall_or_throw(lua_State* L, int nargs, int nresults, const std::string& what) {
-  if (lua_pcall(L, nargs, nresults, 0) == 0) return;
+  bool too_deep = false;
+  {
+    NestedCall nested(what);
+    if (lua_pcall(L, nargs, nresults, 0) == 0) return;
+    too_deep = NestedCall::unwinding();  // read before `nested` ends: the outermost one clears it
+  }
   std::string msg = lua_isstring(L, -1) ? lua_tostring(L, -1) : "(error object is not a string)";
   lua_pop(L, 1);
+  // The innermost call's message names the line that nests; a hundred "failed:" around it would not help.
+  if (too_deep) throw LocatedError(msg);
   throw std::runtime_error(what + " failed: " + msg);
 }
 

@@ -23,6 +23,27 @@ inline int absindex(lua_State* L, int i) { return (i > 0 || i <= LUA_REGISTRYIND
 struct Error : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+// An error whose message already starts with the script's file:line: `guarded` raises it as it is
+// (each binding it unwinds through would prefix its own line again).
+struct LocatedError : Error {
+  using Error::Error;
+};
+
+// Lua called from C++ (a defined model's twin or bound, an encoding's or activation's Lua
+// function, a training job's progress function) that calls back into C++ that calls Lua again
+// nests C++ frames Lua cannot count: a twin that shades its own model recursed until the C stack
+// ran out. One NestedCall per such call; past kMaxNestedCalls it throws "WHAT: more than N
+// nested calls ...". While that error unwinds, pcall_or_throw passes it up unchanged.
+constexpr int kMaxNestedCalls = 100;
+class NestedCall {
+ public:
+  explicit NestedCall(const std::string& what);
+  ~NestedCall();
+  NestedCall(const NestedCall&) = delete;
+  NestedCall& operator=(const NestedCall&) = delete;
+  // True while the error of a call too deep is on its way out.
+  static bool unwinding();
+};
 
 // Runs f(L); a C++ exception becomes a Lua error "file.lua:LINE: message".
 int guarded(lua_State* L, int (*f)(lua_State*));
@@ -143,7 +164,8 @@ void define_box_type(lua_State* L, const char* type, const luaL_Reg* methods, lu
 // The script line calling the running C function and a space, "file.lua:12 " (empty when not
 // known: called through pcall).
 std::string caller_line(lua_State* L);
-// lua_pcall; an error becomes std::runtime_error("WHAT failed: message"), popped.
+// lua_pcall under a NestedCall; an error becomes std::runtime_error("WHAT failed: message"),
+// popped (a too-deep nesting's error goes up as it is, a LocatedError).
 void pcall_or_throw(lua_State* L, int nargs, int nresults, const std::string& what);
 
 // ---- plain values ----

@@ -57,19 +57,16 @@ void push_params(lua_State* L, const shading::LightingParams& p) {
 }
 
 // Calls the Lua function under registry `ref` with the arguments push_args() pushes and reads
-// the {r, g, b} it returns. A Lua error or a wrong shape is an exception naming `what`; NaN comes
-// back as it is (the stress test counts it).
+// the {r, g, b} it returns. A Lua error or a wrong shape is an exception naming `what`; so is a
+// NaN or infinity when `finite` (a bound), else it comes back as it is (the stress test counts a
+// twin's).
 template <class PushArgs>
-glm::dvec3 call_rgb(lua_State* L, int ref, const std::string& what, PushArgs push_args) {
+glm::dvec3 call_rgb(lua_State* L, int ref, const std::string& what, bool finite, PushArgs push_args) {
   int top = lua_gettop(L);
   if (!lua_checkstack(L, 8)) throw Error(what + ": no Lua stack space left to call it");
   lua_rawgeti(L, LUA_REGISTRYINDEX, ref);
   int nargs = push_args();
-  if (lua_pcall(L, nargs, 1, 0) != 0) {
-    std::string e = lua_tostring(L, -1) ? lua_tostring(L, -1) : "(error object is not a string)";
-    lua_settop(L, top);
-    throw Error(what + " failed: " + e);
-  }
+  pcall_or_throw(L, nargs, 1, what);  // counts the nesting: a twin calling its own model:shade
   glm::dvec3 out;
   bool ok = lua_istable(L, -1) && lua_objlen(L, -1) == 3;
   for (int c = 0; ok && c < 3; ++c) {
@@ -81,6 +78,9 @@ glm::dvec3 call_rgb(lua_State* L, int ref, const std::string& what, PushArgs pus
   std::string got = ok ? "" : type_name_at(L, -1);
   lua_settop(L, top);
   if (!ok) throw Error(what + " must return {r, g, b} (3 numbers), got " + got);
+  if (finite && !(std::isfinite(out.x) && std::isfinite(out.y) && std::isfinite(out.z)))
+    throw Error(what + " returned {" + io::number_text(out.x) + ", " + io::number_text(out.y) + ", " +
+                io::number_text(out.z) + "}; it must be finite");
   return out;
 }
 
@@ -91,7 +91,7 @@ struct LuaTwin {
   std::string name;
   glm::dvec3 operator()(const shading::Surface& s, const shading::LightingParams& p) const {
     lua_State* T = running_state(L);
-    return call_rgb(T, ref, "lighting model '" + name + "': its twin", [&] {
+    return call_rgb(T, ref, "lighting model '" + name + "': its twin", false, [&] {
       push_surface(T, s);
       push_params(T, p);
       return 2;
@@ -106,7 +106,7 @@ struct LuaBound {
   std::string name;
   glm::dvec3 operator()(const shading::LightingParams& p, const scene::Light& light) const {
     lua_State* T = running_state(L);
-    return call_rgb(T, ref, "lighting model '" + name + "': its bound", [&] {
+    return call_rgb(T, ref, "lighting model '" + name + "': its bound", true, [&] {
       push_params(T, p);
       push_light(T, light);
       return 2;

@@ -179,11 +179,7 @@ int w_train(lua_State* L) {
   auto hook = [L, &stop](int fn, const char* what, auto push_event) {
     lua_pushvalue(L, fn);
     push_event();
-    if (lua_pcall(L, 1, 1, 0) != 0) {
-      std::string msg = lua_isstring(L, -1) ? lua_tostring(L, -1) : "(error object is not a string)";
-      lua_pop(L, 1);
-      throw Error(std::string("sn.train: the ") + what + " function failed: " + msg);
-    }
+    pcall_or_throw(L, 1, 1, std::string("sn.train: the ") + what + " function");
     const bool is_stop = lua_type(L, -1) == LUA_TSTRING && std::string(lua_tostring(L, -1)) == "stop";
     if (!is_stop && !lua_isnil(L, -1)) {
       std::string got = type_name_at(L, -1);
