@@ -276,11 +276,6 @@ class Job {
       g.report.nets = int(n);
       g.report.layout = g.layout.describe();
       g.report.per_net = g.layout.per_net;
-      gl::Program& p = *g.program;
-      p.set_uniform("u_beta1", {cfg_.beta1});
-      p.set_uniform("u_beta2", {cfg_.beta2});
-      p.set_uniform("u_eps", {cfg_.eps});
-      p.set_uniform("u_bias_len", {double(buf_.bias_len)});
     }
   }
 
@@ -311,7 +306,13 @@ class Job {
       buf_.train_y_texture->bind(2);
       buf_.order_texture->bind(3);
     }
+    // Every uniform, every dispatch: the program is cached and shared, and a job nested in this
+    // one's progress function (another net of the same architecture) sets its own values on it.
     gl::Program& p = *g.program;
+    p.set_uniform("u_beta1", {cfg_.beta1});
+    p.set_uniform("u_beta2", {cfg_.beta2});
+    p.set_uniform("u_eps", {cfg_.eps});
+    p.set_uniform("u_bias_len", {double(buf_.bias_len)});
     p.set_uniform("u_lr", {probe ? 0.0 : cfg_.lr});
     p.set_uniform("u_probe", {probe ? 1.0 : 0.0});
     p.set_uniform("u_sentinel", {double(probe ? kProbeSentinel : g.sentinel)});
