@@ -2,10 +2,12 @@
 
 #include <epoxy/gl.h>
 
+#include <cmath>
 #include <regex>
 #include <stdexcept>
 
 #include "gl/context.h"
+#include "io/text.h"
 
 namespace sn::gl {
 
@@ -158,9 +160,30 @@ bool Program::set_uniform(const std::string& name, const std::vector<double>& v)
       throw std::invalid_argument("uniform '" + name + "' takes " + std::to_string(n * u->size) + " numbers, got " +
                                   std::to_string(v.size()));
   };
+  // An int or uint uniform takes whole numbers in its GLSL type's range: the casts below turned
+  // 2.7 into 2, -1 into 4294967295 and NaN into 0.
+  auto whole = [&](double lo, double hi, const char* type) {
+    for (double x : v)
+      if (!(x == std::floor(x) && x >= lo && x <= hi))
+        throw std::invalid_argument("uniform '" + name + "' (" + type + "): " + io::whole_text(x) +
+                                    " is not a whole number in " + io::whole_text(lo) + ".." + io::whole_text(hi));
+  };
+  switch (u->type) {
+    case GL_INT: case GL_INT_VEC2: case GL_INT_VEC3: case GL_INT_VEC4: case GL_BOOL: case GL_SAMPLER_2D: case GL_IMAGE_2D:
+      whole(-2147483648.0, 2147483647.0, "int");
+      break;
+    case GL_UNSIGNED_INT: case GL_UNSIGNED_INT_VEC2: case GL_UNSIGNED_INT_VEC3: case GL_UNSIGNED_INT_VEC4:
+      whole(0, 4294967295.0, "uint");
+      break;
+    default: break;
+  }
   std::vector<float> f(v.begin(), v.end());
-  std::vector<int> iv(v.begin(), v.end());
-  std::vector<unsigned> uv(v.begin(), v.end());
+  std::vector<int> iv(v.size());
+  std::vector<unsigned> uv(v.size());
+  for (std::size_t i = 0; i < v.size(); ++i) {  // the casts only where the value fits (else UB)
+    iv[i] = v[i] >= -2147483648.0 && v[i] <= 2147483647.0 ? int(v[i]) : 0;
+    uv[i] = v[i] >= 0 && v[i] <= 4294967295.0 ? unsigned(v[i]) : 0;
+  }
   GLuint p = id_;
   GLint loc = u->location, n = u->size;
   switch (u->type) {

@@ -126,14 +126,15 @@ void draw_text(Image& img, int x, int y, const std::string& utf8, const TextStyl
   const std::string text = ascii_label(utf8);
   if (text.empty()) return;
   auto [w, h] = text_size(text, style.size);
-  int x0 = style.align == Align::left ? x : style.align == Align::center ? x - w / 2 : x - w;
+  // In 64 bits: x and y may be anywhere in int's range.
+  const long long x0 = style.align == Align::left ? x : style.align == Align::center ? x - w / 2LL : x - (long long)w;
   // Text wholly outside the image draws nothing (OpenImageIO asserts on such a region).
-  if (x0 >= img.width || x0 + w <= 0 || y >= img.height || y + h <= 0) return;
+  if (x0 >= img.width || x0 + w <= 0 || y >= img.height || (long long)y + h <= 0) return;
   int baseline = y + line_metrics(style.size).ascent;
   std::vector<float> color(img.channels, 1.f);
   for (int k = 0; k < std::min(3, img.channels); ++k) color[k] = style.color[k];
   std::string error;
-  if (!image_codec().render_text(img, x0, baseline, text, int(std::lround(style.size)), label_font(), color, &error))
+  if (!image_codec().render_text(img, int(x0), baseline, text, int(std::lround(style.size)), label_font(), color, &error))
     throw std::runtime_error("cannot draw text '" + text + "': " + error);
 }
 
@@ -223,7 +224,7 @@ Image clamp_colors(Image img, float lo, float hi) {
 }
 
 Image crop(const Image& img, int x, int y, int w, int h) {
-  if (w < 1 || h < 1 || x < 0 || y < 0 || x + w > img.width || y + h > img.height)
+  if (w < 1 || h < 1 || x < 0 || y < 0 || x > img.width - w || y > img.height - h)  // no x + w: it may overflow
     throw std::runtime_error("crop: the box (" + std::to_string(x + 1) + ", " + std::to_string(y + 1) + ") size " +
                              std::to_string(w) + "x" + std::to_string(h) + " is not inside the " +
                              std::to_string(img.width) + "x" + std::to_string(img.height) + " image");

@@ -196,7 +196,11 @@ double mse(const Image& a, const Image& b, int channels, const Image* mask, int 
     sum += here;
     ++n;
   }
-  return n ? sum / (double(n) * channels) : 0.0;
+  // No pixel compared is no score: 0 would read as a perfect match (ssim refuses it too).
+  if (!n)
+    throw std::invalid_argument("mse: the mask covers no pixel (its channel " + std::to_string(mask_channel + 1) +
+                                " is above 0.5 nowhere)");
+  return sum / (double(n) * channels);
 }
 
 }  // namespace sn::io

@@ -1,5 +1,6 @@
 // Text for messages and keys. Numbers as text, one way each: "%g" for messages people read, "%a" (exact) for cache keys.
 #pragma once
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -11,6 +12,13 @@ inline std::string number_text(double v) {
   char b[32];
   std::snprintf(b, sizeof b, "%g", v);
   return b;
+}
+
+// v as number_text writes it, but a whole number in full: a count of 2^32 + 1 must not read as
+// 4.29497e+09 in a message saying it is out of range.
+inline std::string whole_text(double v) {
+  if (v == std::floor(v) && std::abs(v) < 0x1p63) return std::to_string((long long)v);
+  return number_text(v);
 }
 
 // v as number_text writes it, with more digits where those would read as `apart`: a value just

@@ -230,14 +230,14 @@ long long check_integer(lua_State* L, int idx, const char* what) {
   // Beyond 2^53 a Lua number no longer holds every integer, and the cast would be undefined
   // for infinities: both are errors, never a wrapped or rounded count.
   if (!(std::abs(v) <= 9007199254740992.0))
-    throw Error(std::string(what) + ": integer within -2^53..2^53 expected, got " + io::number_text(v));
+    throw Error(std::string(what) + ": integer within -2^53..2^53 expected, got " + io::whole_text(v));
   return (long long)v;
 }
 
 uint64_t check_seed(double v, const std::string& what, double max) {
   if (!(v >= 0 && v <= max && v == std::floor(v)))
     throw Error(what + " must be a whole number in 0.." + (max == kSeedMax ? "2^53" : std::to_string(uint64_t(max))) +
-                ", got " + (v == std::floor(v) && std::abs(v) < 0x1p63 ? std::to_string((long long)v) : io::number_text(v)));
+                ", got " + io::whole_text(v));
   return uint64_t(v);
 }
 
@@ -257,6 +257,20 @@ std::string check_string(lua_State* L, int idx, const char* what) {
   // A NUL would silently cut a path or a name short where C++ meets the file system.
   if (std::strlen(s) != len) throw Error(std::string(what) + ": the string holds a NUL byte (\\0)");
   return std::string(s, len);
+}
+
+void check_finite(const std::vector<double>& v, const std::string& what, bool as_float) {
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const bool finite = std::isfinite(v[i]), fits = !as_float || std::isfinite(float(v[i]));
+    if (finite && fits) continue;
+    throw Error(what + (v.size() > 1 ? ": element " + std::to_string(i + 1) : "") + " is " + io::number_text(v[i]) +
+                (finite ? ", beyond a float's range (3.4e38)" : "") + "; it must be finite");
+  }
+}
+
+bool check_boolean(lua_State* L, int idx, const char* what) {
+  if (!lua_isboolean(L, idx)) throw Error(std::string(what) + ": boolean expected, got " + type_name_at(L, idx));
+  return lua_toboolean(L, idx);
 }
 
 void push_strings(lua_State* L, const std::vector<std::string>& items) {
@@ -405,15 +419,7 @@ uint64_t Options::seed(const char* key, uint64_t def, double max) const {
 }
 bool Options::boolean(const char* key, bool def) const {
   int i = push(key);
-  bool v = def;
-  if (!lua_isnil(L_, i)) {
-    if (!lua_isboolean(L_, i)) {
-      std::string t = type_name_at(L_, i);
-      lua_pop(L_, 1);
-      throw Error(where(key) + ": boolean expected, got " + t);
-    }
-    v = lua_toboolean(L_, i);
-  }
+  const bool v = lua_isnil(L_, i) ? def : check_boolean(L_, i, where(key).c_str());
   lua_pop(L_, 1);
   return v;
 }
@@ -431,6 +437,11 @@ std::string Options::string(const char* key, const std::string& def) const {
     throw;
   }
   lua_pop(L_, 1);
+  return v;
+}
+std::vector<double> Options::finite_numbers(const char* key, int n, bool as_float) const {
+  std::vector<double> v = numbers(key, n);
+  check_finite(v, where(key), as_float);
   return v;
 }
 int Options::choice(const char* key, std::initializer_list<const char*> valid, int def) const {

@@ -173,6 +173,11 @@ double check_number(lua_State* L, int idx, const char* what);
 long long check_integer(lua_State* L, int idx, const char* what);  // within +-2^53
 int check_int32(lua_State* L, int idx, const char* what);           // within +-(2^31 - 1)
 std::string check_string(lua_State* L, int idx, const char* what);
+bool check_boolean(lua_State* L, int idx, const char* what);  // true or false, nothing else
+// Every number of v finite, and with `as_float` within a float's range (it is stored as one): a
+// NaN colour or direction spreads into every pixel or value computed from it. Else
+// "WHAT: element I is nan; it must be finite" (no element number for a single value).
+void check_finite(const std::vector<double>& v, const std::string& what, bool as_float = false);
 // A random seed: a whole number in 0..max (2^53, where Lua numbers stop being whole; the
 // shuffle's seeds are 32-bit). One rule for every seed of the API, none wrapped.
 constexpr double kSeedMax = 9007199254740992.0, kSeed32Max = 4294967295.0;
@@ -206,6 +211,7 @@ class Options {
   std::string string(const char* key) const;
   int choice(const char* key, std::initializer_list<const char*> valid, int def) const;
   std::vector<double> numbers(const char* key, int n = -1) const;
+  std::vector<double> finite_numbers(const char* key, int n = -1, bool as_float = false) const;  // check_finite
   uint64_t seed(const char* key, uint64_t def, double max = kSeedMax) const;  // check_seed
   // Pushes the raw value (nil when absent) and returns its stack index (absolute).
   int push(const char* key) const;

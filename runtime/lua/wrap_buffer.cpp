@@ -178,7 +178,7 @@ int w_fill(lua_State* L) {
   double v = check_number(L, 2, "buffer:fill value");
   const auto& info = gl::elem_info(b.type());
   if (info.is_float) b.fill_float(float(v));
-  else b.fill_uint(info.is_signed ? uint32_t(int32_t(v)) : uint32_t(v));
+  else b.fill_uint(integer_component(v, info.is_signed, "buffer:fill value"));
   return 0;
 }
 

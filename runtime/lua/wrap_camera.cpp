@@ -113,14 +113,15 @@ int w_aspect(lua_State* L) {
 int w_ray(lua_State* L) {
   Camera& c = self(L);
   double x = check_number(L, 2, "camera:ray x"), y = check_number(L, 3, "camera:ray y");
-  long long w = check_integer(L, 4, "camera:ray width"), h = check_integer(L, 5, "camera:ray height");
+  // int32 checked before the cast: 2^53 wrapped and was called "smaller than 1x1".
+  const int w = check_int32(L, 4, "camera:ray width"), h = check_int32(L, 5, "camera:ray height");
   if (w < 1 || h < 1) throw Error("camera:ray: width and height must be at least 1");
   // Fractional x, y reach inside a pixel; past the image's edges is a mistake (x for y, 0-based).
   if (!(x >= 0.5 && x <= double(w) + 0.5) || !(y >= 0.5 && y <= double(h) + 0.5))
     throw Error("camera:ray: pixel (" + io::number_text(x) + ", " + io::number_text(y) + ") is outside the " +
                 std::to_string(w) + " x " + std::to_string(h) + " image (x in 0.5.." + std::to_string(w) +
                 ".5, y in 0.5.." + std::to_string(h) + ".5; whole numbers are pixel centres)");
-  scene::Ray r = c.ray(x - 1, y - 1, int(w), int(h));
+  scene::Ray r = c.ray(x - 1, y - 1, w, h);
   push_numbers(L, glm::value_ptr(r.origin), 3);
   push_numbers(L, glm::value_ptr(r.direction), 3);
   return 2;

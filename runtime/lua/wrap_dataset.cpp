@@ -62,6 +62,10 @@ int w_new(lua_State* L) {
   auto d = std::make_shared<Dataset>();
   d->inputs = o.int32("inputs", 0);
   d->outputs = o.int32("outputs", 0);
+  // 0 stands for "the rows' width"; a given width below 1 was taken as that, silently.
+  for (const char* key : {"inputs", "outputs"})
+    if (o.has(key) && o.int32(key) < 1)
+      throw Error(o.where(key) + ": a row width of at least 1 expected, got " + std::to_string(o.int32(key)));
   if (!o.has("x")) throw Error("sn.dataset option 'x' is required");
   if (!o.has("y")) throw Error("sn.dataset option 'y' is required");
   int xi = o.push("x");

@@ -44,7 +44,7 @@ int w_draw(lua_State* L) {
   scene::GpuMesh& gpu = scene::upload(mesh);
   target.bind();
   if (o.has("clear")) {
-    auto c = o.numbers("clear", 4);
+    auto c = o.finite_numbers("clear", 4, true);
     target.clear({float(c[0]), float(c[1]), float(c[2]), float(c[3])});
   }
   scene::set_standard_uniforms(program, camera, camera.aspect_for(target.width(), target.height()), model, gpu);

@@ -1,6 +1,7 @@
 // sn.encoding: the input encodings of nn/encoding.h as scripts write them in sn.mlp{ encoding =
 // {...} }, a user's own (sn.encoding.define: GLSL + a Lua twin), and the names registered.
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <map>
 #include <string>
@@ -130,6 +131,15 @@ std::function<void(const nn::InputEncoding&, const double*, double*)> lua_row_tw
       }
       out[j] = lua_tonumber(L, -1);
       lua_pop(L, 1);
+      // Checked here, where the encoding and its input are known: downstream the value only
+      // showed as a network output of -inf, or a training "diverged" at step 1.
+      if (!std::isfinite(out[j])) {
+        std::string input;
+        for (int c = 0; c < e.width; ++c) input += (c ? ", " : "") + io::number_text(x[c]);
+        lua_pop(L, 1);
+        throw std::invalid_argument(what + " returned " + io::number_text(out[j]) + " as output " + std::to_string(j + 1) +
+                                    " for the input {" + input + "}; an encoding's outputs must be finite");
+      }
     }
     lua_pop(L, 1);
   };

@@ -17,7 +17,7 @@ using io::Image;
 
 io::Color color_option(const Options& o, const char* key, io::Color def) {
   if (!o.has(key)) return def;
-  auto v = o.numbers(key, 3);
+  auto v = o.finite_numbers(key, 3, true);  // a NaN colour wrote NaN pixels
   return {float(v[0]), float(v[1]), float(v[2])};
 }
 
@@ -25,7 +25,8 @@ io::Color color_option(const Options& o, const char* key, io::Color def) {
 // x, y: 1-based pixel of the text line's top-left (top-centre, top-right with align).
 int w_text(lua_State* L) {
   Image& img = check<Image>(L, 1, kType);
-  long long x = check_integer(L, 2, "image:text x"), y = check_integer(L, 3, "image:text y");
+  // int32 checked: 2^32 + 2 drew at x = 2 through the int casts.
+  const int x = check_int32(L, 2, "image:text x"), y = check_int32(L, 3, "image:text y");
   std::string text = check_string(L, 4, "image:text label");
   io::TextStyle style;
   if (!lua_isnoneornil(L, 5)) {
@@ -36,7 +37,7 @@ int w_text(lua_State* L) {
     style.color = color_option(o, "color", style.color);
     style.align = io::Align(o.choice("align", {"left", "center", "right"}, 0));
   }
-  io::draw_text(img, int(x - 1), int(y - 1), text, style);
+  io::draw_text(img, x - 1, y - 1, text, style);
   lua_pushvalue(L, 1);
   return 1;
 }
@@ -153,9 +154,9 @@ int w_heatmap(lua_State* L) {
 // sn.image.crop(img, x, y, width, height) -> Image: the part at 1-based (x, y), top-left
 int w_crop(lua_State* L) {
   Image& img = check<Image>(L, 1, kType);
-  long long x = check_integer(L, 2, "sn.image.crop x"), y = check_integer(L, 3, "sn.image.crop y");
-  long long w = check_integer(L, 4, "sn.image.crop width"), h = check_integer(L, 5, "sn.image.crop height");
-  push(L, std::make_shared<Image>(io::crop(img, int(x - 1), int(y - 1), int(w), int(h))), kType);
+  const int x = check_int32(L, 2, "sn.image.crop x"), y = check_int32(L, 3, "sn.image.crop y");
+  const int w = check_int32(L, 4, "sn.image.crop width"), h = check_int32(L, 5, "sn.image.crop height");
+  push(L, std::make_shared<Image>(io::crop(img, x - 1, y - 1, w, h)), kType);
   return 1;
 }
 
@@ -173,8 +174,8 @@ int w_clamp(lua_State* L) {
 // channel is > 0.5, or nil when none is
 int w_covered_box(lua_State* L) {
   Image& img = check<Image>(L, 1, kType);
-  long long c = lua_isnoneornil(L, 2) ? 4 : check_integer(L, 2, "sn.image.covered_box channel");
-  io::Box b = io::covered_box(img, int(c - 1));
+  const int c = lua_isnoneornil(L, 2) ? 4 : check_int32(L, 2, "sn.image.covered_box channel");
+  io::Box b = io::covered_box(img, c - 1);
   if (b.width == 0) return 0;
   lua_pushinteger(L, b.x + 1);
   lua_pushinteger(L, b.y + 1);

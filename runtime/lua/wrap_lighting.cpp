@@ -215,7 +215,7 @@ int w_attributes(lua_State* L) {
 
 glm::dvec3 vec3_option(const Options& o, const char* key, glm::dvec3 def) {
   if (!o.has(key)) return def;
-  auto v = o.numbers(key, 3);
+  auto v = o.finite_numbers(key, 3);  // a NaN base shaded NaN, a NaN normal a plausible colour
   return {v[0], v[1], v[2]};
 }
 
@@ -239,7 +239,7 @@ int w_shade(lua_State* L) {
   shading::Surface s = shading::make_surface(light, vec3_option(o, "normal", {0, 0, 0}), vec3_option(o, "view", {0, 0, 0}));
   s.base_color = vec3_option(o, "base", glm::dvec3(1.0));
   if (o.has("uv")) {
-    auto uv = o.numbers("uv", 2);
+    auto uv = o.finite_numbers("uv", 2);
     s.uv = {uv[0], uv[1]};
   }
   s.position = vec3_option(o, "position", glm::dvec3(0.0));

@@ -142,6 +142,12 @@ int w_transformed(lua_State* L) {
       throw Error("mesh:transformed: give either 'matrix' or translate/rotate/scale, not both");
     auto v = o.numbers("matrix", 16);
     t = glm::make_mat4(v.data());
+    // Positions are points (w = 1) and stay points: a projective bottom row would divide by w,
+    // which the transform does not do, so it is refused rather than ignored.
+    if (!(v[3] == 0 && v[7] == 0 && v[11] == 0 && v[15] == 1))
+      throw Error(o.where("matrix") + ": an affine transform expected, whose bottom row (elements 4, 8, 12, 16, "
+                  "column-major) is 0 0 0 1; got " + io::number_text(v[3]) + " " + io::number_text(v[7]) + " " +
+                  io::number_text(v[11]) + " " + io::number_text(v[15]));
   } else {
     if (o.has("translate")) {
       auto v = o.numbers("translate", 3);
@@ -166,7 +172,11 @@ int w_transformed(lua_State* L) {
       t = glm::scale(t, s);
     }
   }
-  push_mesh(L, scene::transformed(m, t));
+  try {
+    push_mesh(L, scene::transformed(m, t));
+  } catch (const std::invalid_argument& e) {
+    throw Error(std::string("mesh:transformed: ") + e.what());
+  }
   return 1;
 }
 

@@ -310,6 +310,10 @@ int w_new(lua_State* L) {
   s.outputs = o.int32("outputs", 3);
   for (double w : o.numbers("hidden")) {
     if (w != std::floor(w)) throw Error("sn.mlp option 'hidden': widths must be integers, got " + io::number_text(w));
+    // The range before the int cast (1e10 said "got -2147483648"); MlpSpec::validate's words.
+    if (!(w >= 1 && w <= nn::kMaxWidth))
+      throw Error("sn.mlp: hidden layer " + std::to_string(s.hidden.size() + 1) + " width must be 1.." +
+                  std::to_string(nn::kMaxWidth) + ", got " + io::number_text(w));
     s.hidden.push_back(int(w));
   }
   if (o.has("encoding")) {

@@ -1,6 +1,7 @@
 // sn.program{...} and program:dispatch{...}: compute and graphics programs from shaders/.
 #include <epoxy/gl.h>
 
+#include <cmath>
 #include <cstdio>
 #include <set>
 #include <string>
@@ -64,8 +65,18 @@ int w_dispatch(lua_State* L) {
   Options o(L, 2, "program:dispatch", {"groups", "buffers", "uniforms", "textures"});
   auto g = o.numbers("groups");
   if (g.empty() || g.size() > 3) throw Error("program:dispatch option 'groups': 1 to 3 numbers expected");
+  // Checked before the cast: 2^32 + 1 wrapped to 1 group, 1.9 ran 1, -1 read as 4294967295.
+  unsigned count[3] = {1, 1, 1};
+  for (std::size_t i = 0; i < g.size(); ++i) {
+    GLint max = 0;
+    glGetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, GLuint(i), &max);
+    if (!(g[i] == std::floor(g[i]) && g[i] >= 1 && g[i] <= double(max)))
+      throw Error(o.where("groups") + ": " + "xyz"[i] + " must be a whole number in 1.." + std::to_string(max) +
+                  " (this driver's limit), got " + io::whole_text(g[i]));
+    count[i] = unsigned(g[i]);
+  }
   apply_bindings(L, o, p);
-  gl::dispatch(p, unsigned(g[0]), g.size() > 1 ? unsigned(g[1]) : 1, g.size() > 2 ? unsigned(g[2]) : 1);
+  gl::dispatch(p, count[0], count[1], count[2]);
   return 0;
 }
 
@@ -125,8 +136,16 @@ void apply_bindings(lua_State* L, const Options& o, gl::Program& p) {
     while (lua_next(L, bi)) {
       auto& buf = check<gl::Buffer>(L, -1, "Buffer");
       GLuint binding;
-      if (lua_type(L, -2) == LUA_TNUMBER) {
-        binding = GLuint(lua_tonumber(L, -2) - 1);
+      const int key = lua_type(L, -2);
+      if (key != LUA_TNUMBER && key != LUA_TSTRING)
+        throw Error(o.where("buffers") + ": the key " + luaL_typename(L, -2) +
+                    " is neither a position (buffers[1] binds binding 0) nor a buffer block's name");
+      if (key == LUA_TNUMBER) {
+        const double k = lua_tonumber(L, -2);
+        if (!(k == std::floor(k) && k >= 1 && k <= 65536))
+          throw Error(o.where("buffers") + ": the key [" + io::number_text(k) +
+                      "] is not a position 1, 2, ... (buffers[1] binds binding 0)");
+        binding = GLuint(k - 1);
         bool found = false;
         for (const auto& b : blocks) found = found || GLuint(b.binding) == binding;
         if (!found)

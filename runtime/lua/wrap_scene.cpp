@@ -64,9 +64,16 @@ std::vector<scene::Camera> read_ring(lua_State* L, int idx, const std::string& w
   const long long count = o.integer("count", 8);
   if (count < 1 || count > 4096)
     throw Error(o.where("count") + ": a view ring needs 1..4096 cameras, got " + std::to_string(count));
+  // Checked here, by name: a NaN distance was reported as a camera standing "nan" from the meshes.
   std::optional<double> distance;
-  if (o.has("distance")) distance = o.number("distance");
-  return scene::framing_orbit(b, int(count), o.number("elevation", 20), o.number("fov", 45), distance);
+  if (o.has("distance")) {
+    distance = o.number("distance");
+    if (!(*distance > 0 && *distance <= 1e38))
+      throw Error(o.where("distance") + " must be a number in (0, 1e38], got " + io::number_text(*distance));
+  }
+  const double elevation = o.number("elevation", 20);
+  check_finite({elevation}, o.where("elevation"));
+  return scene::framing_orbit(b, int(count), elevation, o.number("fov", 45), distance);
 }
 
 // views = { count = 8, elevation = 20, ... } (one ring framing the meshes in every pose), or a
@@ -92,8 +99,10 @@ std::vector<scene::Camera> read_views(lua_State* L, int idx, const scene::Bounds
   return cams;
 }
 
+// Within a float's range: the shaders hold the transformed meshes in floats (a translate of 1e300
+// was reported as a camera standing 4.07 from the meshes, "where float runs out").
 glm::dvec3 vec3_option(const Options& o, const char* key) {
-  auto v = o.numbers(key, 3);
+  auto v = o.finite_numbers(key, 3, true);
   return {v[0], v[1], v[2]};
 }
 
@@ -114,6 +123,7 @@ glm::dmat4 read_transform(lua_State* L, int idx, const std::string& what, const 
       int si = o.push("scale");
       if (lua_type(L, si) == LUA_TNUMBER) {
         const double k = lua_tonumber(L, si);
+        check_finite({k}, o.where("scale"), true);
         t.scale = {k, k, k};
       } else {
         t.scale = vec3_option(o, "scale");
@@ -132,11 +142,13 @@ glm::dmat4 read_transform(lua_State* L, int idx, const std::string& what, const 
   std::vector<double> v;
   if (n == 16) {
     v = check_numbers(L, idx, what.c_str(), 16);
+    check_finite(v, what, true);
   } else if (n == 4) {
     for (int r = 1; r <= 4; ++r) {
       lua_rawgeti(L, idx, r);
       if (!lua_istable(L, -1)) throw Error(what + expected + " (row " + std::to_string(r) + " is " + type_name_at(L, -1) + ")");
       auto row = check_numbers(L, -1, (what + " row " + std::to_string(r)).c_str(), 4);
+      check_finite(row, what + " row " + std::to_string(r), true);
       v.insert(v.end(), row.begin(), row.end());
       lua_pop(L, 1);
     }

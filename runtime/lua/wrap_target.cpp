@@ -26,6 +26,7 @@ int w_clear(lua_State* L) {
   RenderTarget& t = self(L);
   if (!lua_isnoneornil(L, 2)) {
     auto v = check_numbers(L, 2, "target:clear colour", 4);
+    check_finite(v, "target:clear colour", true);
     for (int i = 0; i < 4; ++i) c[i] = float(v[i]);
   }
   t.clear(c);

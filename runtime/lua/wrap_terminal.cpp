@@ -121,7 +121,8 @@ int w_terminal_width(lua_State* L) {
 // sn.catch_interrupt([on = true]): from now on the first Ctrl-C only sets a flag (see
 // sn.interrupted()); sn.catch_interrupt(false) gives Ctrl-C its default action back (stop now).
 int w_catch_interrupt(lua_State* L) {
-  bool on = lua_isnoneornil(L, 1) ? true : lua_toboolean(L, 1) != 0;
+  // A boolean: "no" and 0 are true in Lua, and turned catching on.
+  const bool on = lua_isnoneornil(L, 1) ? true : check_boolean(L, 1, "sn.catch_interrupt argument 1");
   g_catching = on;
   if (on) {
     g_interrupts = 0;

@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "io/text.h"
 #include "scene/tangents.h"
 #include "scene/transform.h"
 
@@ -55,8 +56,16 @@ Mesh transformed(const Mesh& m, const glm::dmat4& transform) {
   out.tangent_source = m.tangent_source;
   out.positions.resize(m.positions.size());
   out.normals.resize(m.normals.size());
-  for (size_t i = 0; i < m.positions.size(); ++i)
-    out.positions[i] = glm::vec3(transform * glm::dvec4(glm::dvec3(m.positions[i]), 1.0));
+  for (size_t i = 0; i < m.positions.size(); ++i) {
+    const glm::dvec3 p(transform * glm::dvec4(glm::dvec3(m.positions[i]), 1.0));
+    // The matrix is finite in double; the vertex must be finite where it is stored, in float.
+    out.positions[i] = glm::vec3(p);
+    const glm::vec3& f = out.positions[i];
+    if (!std::isfinite(f.x) || !std::isfinite(f.y) || !std::isfinite(f.z))
+      throw std::invalid_argument("cannot transform mesh '" + m.name + "': vertex " + std::to_string(i + 1) +
+                                  " would land at (" + io::number_text(p.x) + ", " + io::number_text(p.y) + ", " +
+                                  io::number_text(p.z) + "), beyond a float's range (3.4e38)");
+  }
   for (size_t i = 0; i < m.normals.size(); ++i) {
     glm::dvec3 n = normal_matrix * glm::dvec3(m.normals[i]);
     double len = glm::length(n);

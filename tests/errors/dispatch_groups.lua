@@ -1,4 +1,4 @@
--- expect: dispatch_groups\.lua:6: workgroup count 0x1x1 is outside
+-- expect: dispatch_groups\.lua:6: program:dispatch option 'groups': x must be a whole number in 1\.\.[0-9]+ \(this driver's limit\), got 0
 local sn = require "shadenet"
 
 local b = sn.buffer { size = 8 }

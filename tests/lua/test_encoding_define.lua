@@ -134,7 +134,7 @@ end
 refused(def { glsl = "return cosine(x[0]);" }, "its GLSL does not compile:\nGLSL compile error in shaders/encoding_check.comp:\nencoding broken:1: error: no function with name 'cosine'")
 refused(def { glsl = "return 2.0 * x[0];" }, "its GLSL gives")
 refused(def { lua = function(x) return { x[1], x[1] } end }, "lua returned 2 numbers; outputs says 1 for an input of 1")
-refused(def { lua = function(x) return { 0 / 0 } end }, "as output 1 for an input of 1 component")
+refused(def { lua = function(x) return { 0 / 0 } end }, "encoding 'broken': lua returned nan as output 1 for the input {")
 refused(def { lua = function() error("boom") end }, "encoding 'broken': lua failed: ")
 refused(def { outputs = 0 }, "outputs for an input of 1 component is 0; it must be 1..256")
 refused(def { name = "frequency" }, "encoding 'frequency' is built in; choose another name")
