@@ -50,6 +50,14 @@ function check.size(size, what, level)
   end
 end
 
+-- A whole number in lo..hi (a count, a size in pixels): 1.5, -3 or NaN frames were 1 or 0 of
+-- them, and 2^31 ran for ever.
+function check.whole(v, lo, hi, what, level)
+  if type(v) ~= "number" or v % 1 ~= 0 or not (v >= lo and v <= hi) then
+    error(("%s must be a whole number in %d..%d, got %s"):format(what, lo, hi, tostring(v)), level + 1)
+  end
+end
+
 function check.is_camera(v)
   return type(v) == "userdata" and getmetatable(v) == debug.getregistry().Camera
 end

@@ -5,24 +5,30 @@ local check = require "shadenet.live.check"
 local view_of = require "shadenet.live.view"
 local busy = require "shadenet.live.busy"
 local live = sn.live
-local strict, is_mode, MODES = check.strict, check.is_mode, check.MODES
+local strict, is_mode, MODES, whole = check.strict, check.is_mode, check.MODES, check.whole
 local render, current_spec = view_of.render, view_of.current_spec
 
+local message_of = require("shadenet.where").message
+
 local absolute = sn.live_absolute
+local MAX_FRAMES = 100000
 
 -- sn.live.screenshot([path]) -> absolute path: saves the current view (PNG unless the path
 -- says otherwise); by default out/live/screenshot-NNNN.png.
 function live.screenshot(path)
+  if path ~= nil and type(path) ~= "string" then error("sn.live.screenshot: path must be a string, got " .. type(path), 2) end
   local spec = current_spec("sn.live.screenshot")
   local view = view_of.current_view(spec)
-  local image = render(spec, view):read()
+  local ok, image = pcall(function() return render(spec, view):read() end)
+  if not ok then error("sn.live.screenshot: " .. message_of(image), 2) end
   -- claimed, not looked for: another instance saving at the same moment gets the next number
   local claimed = path == nil
   path = path or sn.fs.claim("out/live", "screenshot", ".png")
-  local ok, err = pcall(image.save, image, path)
+  local err
+  ok, err = pcall(image.save, image, path)
   if not ok then
     if claimed then os.remove(path) end  -- no empty screenshot-NNNN.png left by a full disk
-    error("sn.live.screenshot: " .. tostring(err), 2)
+    error("sn.live.screenshot: " .. message_of(err), 2)
   end
   return absolute(path)
 end
@@ -46,6 +52,9 @@ function sn.record(o)
     end
     view.mode = o.mode
   end
+  -- Checked here: width = 0 was reported as "scene:render option 'size'" with no line.
+  if o.width ~= nil then whole(o.width, 1, 16384, "sn.record: width", 2) end
+  if o.height ~= nil then whole(o.height, 1, 16384, "sn.record: height", 2) end
   view.width, view.height = o.width or view.width, o.height or view.height
   local dir = o.dir
   local claimed = dir == nil
@@ -68,6 +77,16 @@ function sn.record(o)
   if o.orbit then
     strict(o.orbit, { "count", "elevation", "distance" }, "sn.record: orbit", 2)
     local count = o.orbit.count or 36
+    whole(count, 1, MAX_FRAMES, "sn.record: orbit.count", 2)
+    -- At +-90 degrees the camera looks along its up vector: no orbit can be framed there.
+    local elevation = o.orbit.elevation
+    if elevation ~= nil and not (type(elevation) == "number" and elevation > -90 and elevation < 90) then
+      error("sn.record: orbit.elevation must be a number of degrees in (-90, 90), got " .. tostring(elevation), 2)
+    end
+    local distance = o.orbit.distance
+    if distance ~= nil and not (type(distance) == "number" and distance > 0 and distance < math.huge) then
+      error("sn.record: orbit.distance must be a finite number > 0, got " .. tostring(distance), 2)
+    end
     local cam = view.camera
     local e, t = cam:eye(), cam:target()
     local d = { e[1] - t[1], e[2] - t[2], e[3] - t[3] }
@@ -84,12 +103,19 @@ function sn.record(o)
         frame(k)
       end
     end)
-    if not ok then error("sn.record: " .. tostring(err), 2) end
+    if not ok then error("sn.record: " .. message_of(err), 2) end
   else
     strict(o.sweep, { "set", "get", "from", "to", "count" }, "sn.record: sweep", 2)
     local s = o.sweep
     if type(s.set) ~= "function" then error("sn.record: sweep.set must be a function(value) that applies the value", 2) end
     local from, to, count = s.from or -2, s.to or 2, s.count or 9
+    whole(count, 1, MAX_FRAMES, "sn.record: sweep.count", 2)
+    for _, k in ipairs({ "from", "to" }) do
+      local v = s[k] or 0
+      if type(v) ~= "number" or v ~= v or v == math.huge or v == -math.huge then
+        error(("sn.record: sweep.%s must be a finite number, got %s"):format(k, tostring(s[k])), 2)
+      end
+    end
     local before = s.get and s.get()
     local ok, err = pcall(function()
       for k = 1, count do
@@ -98,8 +124,8 @@ function sn.record(o)
       end
     end)
     if before ~= nil then s.set(before) end
-    if not ok then error("sn.record: " .. tostring(err), 2) end
+    if not ok then error("sn.record: " .. message_of(err), 2) end
   end
-  return dir and absolute(dir), paths  -- nil when count was 0: nothing was written
+  return absolute(dir), paths
 end
 live.record = sn.record

@@ -4,6 +4,7 @@
 local sn = require "shadenet.core"
 local S = require "shadenet.live.state"
 local check = require "shadenet.live.check"
+local message_of = require("shadenet.where").message
 local live = sn.live
 local strict, check_vec3, check_light, check_size = check.strict, check.vec3, check.light, check.size
 local is_camera, type_is, is_mode, MODES = check.is_camera, check.type_is, check.is_mode, check.MODES
@@ -146,10 +147,7 @@ function M.draw(spec, which, view, cache)
   -- giving NaN showed runtime/live/shadenet.live.view.lua:145 as the place to fix).
   local ok, drawn = pcall(f, view, cache and cache[key])
   if not ok then
-    local msg = tostring(drawn)
-    local own = debug.getinfo(1, "S").short_src
-    if msg:sub(1, #own + 1) == own .. ":" then msg = msg:gsub("^[^:]*:%d+: ", "", 1) end
-    error(msg, 0)
+    error(message_of(drawn), 0)
   end
   local out = as_target(drawn, "sn.live.show's '" .. which .. "'", cache, key)
   if cache then cache[key] = out end

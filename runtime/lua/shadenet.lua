@@ -8,12 +8,20 @@ local sn = core
 -- per-element loops in LuaJIT. The pointer keeps its buffer alive (its finalizer holds it), so
 -- the collector cannot free the storage under it; buf:release() still ends it. After a dispatch
 -- call sn.finish() before reading through it.
+-- Its errors (a released buffer, a ctype that is no pointer) name the script's line, not this file's.
 local Buffer = debug.getregistry().Buffer.__index
 function Buffer.ffi(buf, ctype)
-  local kind = buf:type()
+  local ok, kind = pcall(Buffer.type, buf)  -- a C function under pcall: its message has no position
+  if not ok then error("buf:ffi: " .. tostring(kind), 2) end
   ctype = ctype or ((kind == "uint32" or kind == "uvec4") and "uint32_t*"
                     or (kind == "int32" or kind == "ivec4") and "int32_t*" or "float*")
-  return ffi.gc(ffi.cast(ctype, buf:pointer()), function() return buf end)
+  local cast
+  ok, cast = pcall(ffi.cast, ctype, Buffer.pointer(buf))
+  if not ok then
+    error(("buf:ffi: ctype %s: %s (a pointer type expected, such as \"float*\")"):format(
+      type(ctype) == "string" and "'" .. ctype .. "'" or tostring(ctype), tostring(cast):gsub("^[^\n]-:%d+: ", "")), 2)
+  end
+  return ffi.gc(cast, function() return buf end)
 end
 
 -- os.exit(code) closes the Lua state first, as the end of a script does, so finalizers run and
@@ -52,9 +60,18 @@ end
 -- sn.near(name, names) -> the names of the list `names` near `name` (a typo of one of them:
 -- at most one edit in four characters), sorted; for "did you mean" in scripts' own errors.
 function sn.near(name, names)
+  if type(name) ~= "string" then error("sn.near: argument 1 (the name): string expected, got " .. type(name), 2) end
+  if type(names) ~= "table" then
+    error("sn.near: argument 2 (the names): a list of strings expected, got " .. type(names), 2)
+  end
+  for i, k in ipairs(names) do
+    if type(k) ~= "string" then
+      error(("sn.near: argument 2 (the names): element %d is a %s, not a string"):format(i, type(k)), 2)
+    end
+  end
   local out = {}
   for _, k in ipairs(names) do
-    if type(k) == "string" and distance(k, name) <= math.max(1, math.floor(#name / 4)) then out[#out + 1] = k end
+    if distance(k, name) <= math.max(1, math.floor(#name / 4)) then out[#out + 1] = k end
   end
   table.sort(out)
   return out

@@ -31,6 +31,15 @@ local function gbuffer_for_render(scene, where)
   error((tostring(g):gsub("^scene:gbuffer", "scene:render")), 3)
 end
 
+-- obj:method() for scene:render: its error (a released model, network or scene) is raised at the
+-- script's line under scene:render's name; called here, it named this file's line.
+local message_of = require("shadenet.where").message
+local function method(obj, name)
+  local ok, r = pcall(function() return obj[name](obj) end)
+  if not ok then error("scene:render: " .. message_of(r), 3) end
+  return r
+end
+
 local RENDER_KEYS = { view = true, pose = true, camera = true, light = true, size = true, values = true,
                       backend = true, target = true, nonfinite = true }
 function Scene.render(scene, what, options)
@@ -55,7 +64,7 @@ function Scene.render(scene, what, options)
       error("scene:render: 'backend', 'target' and 'nonfinite' are a network's (net:render); a lighting model is "
             .. "drawn by its shader into a new Image", 2)
     end
-    local light = scene:light()
+    local light = method(scene, "light")
     if options.light ~= nil then
       if type(options.light) ~= "table" then
         error("scene:render option 'light': { dir = {x, y, z}, color = {r, g, b} } expected, got " .. type(options.light), 2)
@@ -67,21 +76,21 @@ function Scene.render(scene, what, options)
       end
       light = { dir = options.light.dir or light.dir, color = options.light.color or light.color }
     end
-    where.attributes = what:attributes()
+    where.attributes = method(what, "attributes")
     local g = gbuffer_for_render(scene, where)
     local ok, img = pcall(sn.render_truth, g, what, light)
     g:release()  -- its target goes back to the pool now, not at the next garbage collection
     if not ok then error((tostring(img):gsub("^sn%.render_truth", "scene:render")), 2) end
     return img
   elseif kind == "Mlp" then
-    local inputs = what:inputs()
+    local inputs = method(what, "inputs")
     if #inputs == 0 then
       error("scene:render: this network does not know which G-buffer attributes it reads; train it on a "
             .. "scene:dataset (or give it input names) first", 2)
     end
     if not what.render then error("scene:render: this build cannot render networks (net:render is missing)", 2) end
     local conditions = {}
-    for _, c in ipairs(what:conditions()) do conditions[c.name] = true end
+    for _, c in ipairs(method(what, "conditions")) do conditions[c.name] = true end
     local attributes = {}
     for _, name in ipairs(inputs) do
       if not conditions[name] then attributes[#attributes + 1] = name end
