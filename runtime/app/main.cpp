@@ -72,7 +72,8 @@ bool shows_a_view(lua_State* L) {
   lua_getfield(L, -1, "shadenet.live");
   bool has = false;
   if (lua_istable(L, -1)) {
-    lua_getfield(L, -1, "_has_view");
+    lua_pushstring(L, "_has_view");
+    lua_rawget(L, -2);  // raw: sn.live's __index raises an error for a missing name
     has = lua_isfunction(L, -1) && lua_pcall(L, 0, 1, 0) == 0 && lua_toboolean(L, -1);
   }
   lua_settop(L, 0);

@@ -199,7 +199,8 @@ class Loop {
 
 bool Loop::push_live(const char* fn) {
   lua_rawgeti(L_, LUA_REGISTRYINDEX, live_ref_);
-  lua_getfield(L_, -1, fn);
+  lua_pushstring(L_, fn);
+  lua_rawget(L_, -2);  // raw: sn.live's __index raises an error for a missing name, outside any pcall here
   lua_remove(L_, -2);
   if (lua_isfunction(L_, -1)) return true;
   lua_pop(L_, 1);

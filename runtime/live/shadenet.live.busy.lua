@@ -11,7 +11,7 @@ local busy = {}
 -- Shows `text` and `fraction` (0..1) in the window; raises an error when the user cancelled (Esc)
 -- or closed the window.
 function busy.tick(text, fraction)
-  local tick = live._tick  -- set by the C++ loop while it runs
+  local tick = rawget(live, "_tick")  -- set by the C++ loop while it runs (raw: sn.live is strict)
   if not (S.active and tick) then return end
   local why = tick(text, fraction or 0)
   if why then error(why, 0) end
@@ -22,7 +22,7 @@ end
 -- them. Esc stops the training at its next step and fails the run, so the last good state stays.
 local plain_train = sn.train
 function sn.train(o)
-  if not (S.active and live._tick) or type(o) ~= "table" then return plain_train(o) end
+  if not (S.active and rawget(live, "_tick")) or type(o) ~= "table" then return plain_train(o) end
   local copy = {}
   for k, v in pairs(o) do copy[k] = v end
   local nets = type(o.nets) == "table" and #o.nets or 1

@@ -98,17 +98,39 @@ for name, mt in pairs(debug.getregistry()) do
   end
 end
 
-setmetatable(sn, { __index = function(_, name)
-  if type(name) ~= "string" then return nil end
+-- The message for `path`.name missing from the table t (sn itself, or one of its tables): the
+-- names of t near it, and the name where the module has it elsewhere (sn.mse: sn.image.mse).
+local function not_part(path, t, name)
   local names, near = {}, {}
+  for k in pairs(t) do if type(k) == "string" then names[#names + 1] = k end end
+  for _, k in ipairs(sn.near(name, names)) do near[#near + 1] = path .. "." .. k end
+  if t ~= sn and rawget(sn, name) ~= nil then near[#near + 1] = "sn." .. name end
   for k, v in pairs(sn) do
-    if type(k) == "string" then names[#names + 1] = k end
-    if type(v) == "table" and type(k) == "string" and rawget(v, name) ~= nil then near[#near + 1] = "sn." .. k .. "." .. name end
+    if type(k) == "string" and type(v) == "table" and v ~= t and rawget(v, name) ~= nil then
+      near[#near + 1] = "sn." .. k .. "." .. name
+    end
   end
-  for _, k in ipairs(sn.near(name, names)) do near[#near + 1] = "sn." .. k end
   table.sort(near)
-  error("sn." .. name .. " is not part of shadenet" .. (#near > 0 and " (did you mean " .. table.concat(near, ", ") .. "?)" or
-        " (the API: docs/lua-api.md)"), 2)
-end })
+  return path .. "." .. name .. " is not part of shadenet" ..
+         (#near > 0 and " (did you mean " .. table.concat(near, ", ") .. "?)" or " (the API: docs/lua-api.md)")
+end
+local function strict_index(path)
+  return function(t, name)
+    if type(name) ~= "string" then return nil end
+    error(not_part(path, t, name), 2)
+  end
+end
+
+setmetatable(sn, { __index = strict_index("sn") })
+-- sn's tables too (sn.image.mes, sn.mesh.shpere{} read nil): those without a metatable get one;
+-- a callable one (__call) gets the __index; one with its own __index (sn.lighting: the models
+-- by name) keeps it. Fields added later are read as usual; rawget still probes quietly.
+for k, v in pairs(sn) do
+  if type(k) == "string" and type(v) == "table" then
+    local mt = getmetatable(v)
+    if mt == nil then setmetatable(v, { __index = strict_index("sn." .. k) })
+    elseif type(mt) == "table" and rawget(mt, "__index") == nil then mt.__index = strict_index("sn." .. k) end
+  end
+end
 
 return sn
