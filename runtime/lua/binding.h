@@ -123,7 +123,7 @@ std::shared_ptr<T> check_shared(lua_State* L, int idx, const char* type) {
 // :release() for Box<T>: frees the C++ object once; later use is a clear error. The type name is
 // the closure's upvalue: b.release(io.stdout) (a '.' for ':') must not free a FILE* as a Box.
 template <class T>
-int release_body(lua_State* L) {
+int release(lua_State* L) {
   const char* type = lua_tostring(L, lua_upvalueindex(1));
   void* ud = test_type(L, 1, type);
   if (!ud)
@@ -131,10 +131,6 @@ int release_body(lua_State* L) {
                 " (call it with ':', obj:release())");
   static_cast<Box<T>*>(ud)->ptr.reset();
   return 0;
-}
-template <class T>
-int release(lua_State* L) {
-  return guarded(L, release_body<T>);
 }
 // __gc for Box<T>; Lua calls it on the type's own userdata only, but a script can reach it through
 // getmetatable(obj).__gc, so it checks too.
@@ -155,7 +151,7 @@ void define_box_type(lua_State* L, const char* type, const luaL_Reg* methods, lu
   lua_getfield(L, -1, "__index");
   if (lua_istable(L, -1)) {
     lua_pushstring(L, type);
-    lua_pushcclosure(L, release<T>, 1);
+    lua_pushcclosure(L, wrap<release<T>>, 1);
     lua_setfield(L, -2, "release");
   }
   lua_pop(L, 2);
