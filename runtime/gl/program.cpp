@@ -175,7 +175,11 @@ bool Program::set_uniform(const std::string& name, const std::vector<double>& v)
     case GL_UNSIGNED_INT: case GL_UNSIGNED_INT_VEC2: case GL_UNSIGNED_INT_VEC3: case GL_UNSIGNED_INT_VEC4:
       whole(0, 4294967295.0, "uint");
       break;
-    default: break;
+    default:  // float: a NaN, an infinity or a double past float's range reached the shader as NaN or inf
+      for (double x : v)
+        if (!(std::abs(x) <= double(std::numeric_limits<float>::max())))
+          throw std::invalid_argument("uniform '" + name + "' (float): " + io::number_text(x) +
+                                      " is not a finite number in float's range (|x| <= 3.40282e+38)");
   }
   std::vector<float> f(v.begin(), v.end());
   std::vector<int> iv(v.size());

@@ -32,6 +32,17 @@ fails(function() run({ 1, 0 }, 8) end, "program:dispatch option 'groups': y must
 fails(function() run(2, 2.7) end, "uniform 'u_count' (uint): 2.7 is not a whole number in 0..4294967295")
 fails(function() run(2, -1) end, "uniform 'u_count' (uint): -1 is not a whole number in 0..4294967295")
 fails(function() run(2, 0 / 0) end, "uniform 'u_count' (uint): nan is not")
+-- A float uniform: NaN, an infinity or a double past float's range reached the shader as NaN or inf.
+local poly = sn.program { compute = "tests/data/shaders/poly.comp", defines = { LOCAL_SIZE = 4 } }
+local function scaled(scale)
+  local ys = sn.buffer { size = 4 }
+  poly:dispatch { groups = 1, buffers = { sn.buffer { data = { 1, 2, 3, 4 } }, ys }, uniforms = { u_count = 4, u_scale = scale } }
+  return ys:download()
+end
+fails(function() scaled(0 / 0) end, "uniform 'u_scale' (float): nan is not a finite number in float's range")
+fails(function() scaled(math.huge) end, "uniform 'u_scale' (float): inf is not a finite number")
+fails(function() scaled(1e39) end, "uniform 'u_scale' (float): 1e+39 is not a finite number")
+assert(math.abs(scaled(3e38)[1] - (3e38 * (1 - 2) + math.tanh(1))) <= 3e38 * 1e-6, "the largest floats still pass")
 local b4 = sn.buffer { size = 4 }
 fails(function() run(1, 4, { [true] = b4 }) end,
       "program:dispatch option 'buffers': the key boolean is neither a position (buffers[1] binds binding 0) nor a buffer block's name")
