@@ -33,6 +33,13 @@ DatasetPaths numpy_paths(const std::string& sidecar, const std::string& stem) {
   return d;
 }
 
+// A numbered column name: "y3". (Built with +=: GCC 12 warns falsely (-Wrestrict) on "y" + std::to_string(k).)
+std::string numbered(char letter, std::size_t k) {
+  std::string name(1, letter);
+  name += std::to_string(k);
+  return name;
+}
+
 // The sidecar a path names, links followed: its arrays lie beside it (an export through a link
 // writes them there, the loader reads them there).
 std::string real_sidecar(const std::string& main) { return io::through_links(main); }
@@ -70,14 +77,14 @@ std::string color_columns(shading::ColorSpace c, int outputs, std::vector<std::s
   if (c != shading::ColorSpace::rgb)
     return std::string("CSV names the colour space by its three target columns; ") + std::to_string(outputs) +
            " targets in " + shading::color_space_name(c) + " cannot be written (use .json: the NumPy sidecar keeps it)";
-  for (int k = 1; k <= outputs; ++k) names->push_back("y" + std::to_string(k));
+  for (int k = 1; k <= outputs; ++k) names->push_back(numbered('y', k));
   return "";
 }
 
 std::vector<std::string> csv_columns(const Dataset& d) {
   std::vector<std::string> cols;
   if (d.input_names.empty()) {
-    for (int k = 1; k <= d.inputs; ++k) cols.push_back("x" + std::to_string(k));
+    for (int k = 1; k <= d.inputs; ++k) cols.push_back(numbered('x', k));
   } else {
     std::vector<InputSlot> layout;
     try {
@@ -316,14 +323,14 @@ TargetColumns target_columns(const std::vector<std::string>& cols, std::size_t e
          cols[first - 1].find_first_not_of("0123456789", 1) == std::string::npos)
     --first;
   for (std::size_t i = first; i < end; ++i)
-    if (cols[i] != "y" + std::to_string(i - first + 1)) return {};
+    if (cols[i] != numbered('y', i - first + 1)) return {};
   return {shading::ColorSpace::rgb, int(end - first)};
 }
 
 // Input names from columns "normal_x,normal_y,normal_z,uv_u,uv_v" (or none from "x1..xn").
 std::vector<std::string> input_names_of(const std::vector<std::string>& cols, std::size_t n, const std::string& where) {
   bool plain = true;
-  for (std::size_t i = 0; i < n; ++i) plain = plain && cols[i] == "x" + std::to_string(i + 1);
+  for (std::size_t i = 0; i < n; ++i) plain = plain && cols[i] == numbered('x', i + 1);
   if (plain) return {};
   std::vector<std::string> names;
   for (std::size_t i = 0; i < n;) {
