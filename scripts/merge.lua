@@ -9,6 +9,7 @@
 package.path = (arg and arg[0] and arg[0]:match("^(.*)/[^/]*$") or ".") .. "/?.lua;" .. package.path
 local sn = require "shadenet"
 local results = require "lib.results"
+local cli = require "lib.cli"
 local json = require "lib.json"
 
 local usage = "usage: shadenet scripts/merge.lua [--out DIR] SHARD_DIR..."
@@ -35,12 +36,11 @@ if #dirs == 0 then error("merge.lua: no shard folders given\n" .. usage, 0) end
 -- The options that choose the experiment's data (--data, --ggx) as a shard's run.json records
 -- them; a run.json from before `options` was recorded has them on its command line (absent
 -- there: the defaults). nil when neither tells.
-local defaults = { data = "poses", ggx = "thesis" }
 local function recorded(info, key)
   if type(info.options) == "table" and info.options[key] then return info.options[key] end
   if type(info.command) ~= "string" then return nil end
   return info.command:match("%-%-" .. key .. "=(%S+)") or info.command:match("%-%-" .. key .. "%s+(%S+)")
-         or defaults[key]
+         or cli.defaults[key]
 end
 
 -- Which experiment, in which mode, on which data: every shard must agree.

@@ -17,6 +17,10 @@ local common = {
   { flag = "--help", help = "print this help" },
 }
 
+-- The choices an experiment takes when its command line names none (run records from before
+-- `options` was recorded, and merge.lua, read them too).
+cli.defaults = { data = "poses", ggx = "thesis" }
+
 -- What a flag takes: its value's name, its choices ("a|b"), or nil (a switch).
 local function value_of(f)
   return f.value or (f.choices and table.concat(f.choices, "|"))

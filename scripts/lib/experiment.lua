@@ -40,10 +40,12 @@ end
 -- end, was missing after a kill -9); writing it also finds an unwritable folder before any
 -- training. Shards of one sweep may share a folder: they agree on all of it.
 function exp.claim_folder(R, name, opts)
-  local mine = { experiment = name, quick = opts.quick, options = { data = opts.data or "poses", ggx = opts.ggx or "thesis" } }
+  local d = cli.defaults
+  local mine = { experiment = name, quick = opts.quick, options = { data = opts.data or d.data, ggx = opts.ggx or d.ggx } }
   local function describe(e)
-    return string.format("%s%s (--data %s, --ggx %s)", e.experiment, e.quick and " --quick" or "",
-                         e.options and e.options.data or "poses", e.options and e.options.ggx or "thesis")
+    local o = e.options or {}
+    return string.format("%s%s (--data %s, --ggx %s)", e.experiment, e.quick and " --quick" or "", o.data or d.data,
+                         o.ggx or d.ggx)
   end
   for _, file in ipairs { "experiment.json", "run.json" } do  -- run.json: a folder from before experiment.json
     local text = results.read_file(R:path(file))
@@ -85,8 +87,8 @@ function exp.start(name, args, o)
     -- the script as it was run (a user's own experiment may live anywhere); merge.lua runs it
     script = args and type(args[0]) == "string" and args[0] or "scripts/" .. name .. ".lua",
     backend = opts.backend or o.backend or "auto",
-    data_choice = opts.data or "poses",
-    ggx_choice = opts.ggx or "thesis",
+    data_choice = opts.data or cli.defaults.data,
+    ggx_choice = opts.ggx or cli.defaults.ggx,
     t0 = sn.clock(), timings = {}, datasets = {}, scenes = {}, sweeps = {}, baselines = {},
     load_at_start = results.load_average(),
   }, E)
