@@ -2,17 +2,31 @@
 
 #include <chrono>
 #include <cstdlib>
+#include <stdexcept>
+#include <string>
 #include <system_error>
 
 namespace sn::io {
 
+// More threads than any machine's cores only queue: a typo such as 20000 is refused.
+constexpr long kMaxThreads = 1024;
+
 int default_threads() {
-  if (const char* env = std::getenv("SHADENET_THREADS")) {
-    int n = std::atoi(env);
-    if (n > 0) return n;
-  }
-  unsigned hw = std::thread::hardware_concurrency();
-  return hw ? int(hw) : 1;
+  // SHADENET_THREADS checked: "abc" and 0 ran on every core without a word. (A throw leaves the
+  // static unset, so every call says it.)
+  static const int threads = [] {
+    const unsigned hw = std::thread::hardware_concurrency();
+    const char* env = std::getenv("SHADENET_THREADS");
+    if (!env || !*env) return hw ? int(hw) : 1;
+    char* end = nullptr;
+    const long n = std::strtol(env, &end, 10);
+    if (*end || n < 1 || n > kMaxThreads)
+      throw std::invalid_argument(std::string("SHADENET_THREADS='") + env + "' is not a whole number of threads in 1.." +
+                                  std::to_string(kMaxThreads) + " (unset: all " + std::to_string(hw ? hw : 1) +
+                                  " cores)");
+    return int(n);
+  }();
+  return threads;
 }
 
 namespace detail {
