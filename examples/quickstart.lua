@@ -3,7 +3,7 @@
 -- they never saw. Run from the repository root:
 --   build/shadenet examples/quickstart.lua [OUT_DIR]      (default results/quickstart)
 -- It writes OUT_DIR/quickstart.png (per model: truth, network and error on every mesh),
--- OUT_DIR/coverage.png (what the training rows cover) and OUT_DIR/table.md, and prints where they are. About a minute on a 2-core machine without a GPU.
+-- OUT_DIR/coverage.png (what the training rows cover) and OUT_DIR/table.md, and prints where they are. 3-6 s on a 2-core machine without a GPU.
 local sn = require "shadenet"
 
 local out = arg and arg[1] or "results/quickstart"
