@@ -7,6 +7,7 @@
 
 #include "gl/shader_source.h"
 #include "io/hash.h"
+#include "io/limits.h"
 #include "shading/lighting_gpu.h"
 #include "io/text.h"
 #include "scene/gbuffer.h"
@@ -118,8 +119,18 @@ std::shared_ptr<Dataset> cached(const std::string& key, const std::function<std:
   d->key = "dataset-" + hex64(f.h);
   ++c.builds;
   c.entries.emplace_front(key, d);
-  if (c.entries.size() > kDatasetCacheCapacity) c.entries.pop_back();
+  std::size_t bytes = 0;
+  for (const auto& e : c.entries) bytes += dataset_bytes(*e.second);
+  const std::uint64_t most = io::limits().dataset_cache_bytes;
+  while (c.entries.size() > 1 && (c.entries.size() > kDatasetCacheCapacity || bytes > most)) {
+    bytes -= dataset_bytes(*c.entries.back().second);
+    c.entries.pop_back();
+  }
   return d;
+}
+
+std::size_t dataset_bytes(const Dataset& d) {
+  return (d.train_x.size() + d.train_y.size() + d.val_x.size() + d.val_y.size()) * sizeof(float);
 }
 
 DatasetStats dataset_stats() {

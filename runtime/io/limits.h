@@ -1,4 +1,4 @@
-// The resource limits every loader checks before it asks for memory (docs/reliability.md,
+// The resource limits every loader checks before it asks for memory, and the dataset cache's size (docs/reliability.md,
 // "Limits"), one set for the whole process. Each exceeded limit is an error naming the file,
 // the quantity and the limit, and how to raise it: sn.limits{...} from Lua (lua/wrap_files.cpp),
 // set_limits here.
@@ -22,6 +22,9 @@ struct Limits {
   std::uint64_t node_placements = std::uint64_t(1) << 16;
   std::uint64_t mesh_vertices = std::uint64_t(1) << 26;
   std::uint64_t mesh_indices = std::uint64_t(1) << 28;
+  // The rows the dataset cache holds for reuse (data/dataset_cache.h), all its datasets
+  // together; the one just built stays whatever its size. 1 GiB.
+  std::uint64_t dataset_cache_bytes = std::uint64_t(1) << 30;
 };
 
 // The limits in force (a copy: thread-safe).

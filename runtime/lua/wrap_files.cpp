@@ -163,7 +163,7 @@ constexpr LimitField kLimitFields[] = {
     {"file_bytes", &io::Limits::file_bytes},         {"shader_bytes", &io::Limits::shader_bytes},
     {"image_pixels", &io::Limits::image_pixels},     {"image_channels", &io::Limits::image_channels},
     {"node_placements", &io::Limits::node_placements}, {"mesh_vertices", &io::Limits::mesh_vertices},
-    {"mesh_indices", &io::Limits::mesh_indices},
+    {"mesh_indices", &io::Limits::mesh_indices},     {"dataset_cache_bytes", &io::Limits::dataset_cache_bytes},
 };
 
 void push_limits(lua_State* L, const io::Limits& l) {
@@ -175,14 +175,15 @@ void push_limits(lua_State* L, const io::Limits& l) {
 }
 
 // sn.limits([{ file_bytes = n, shader_bytes = n, image_pixels = n, image_channels = n,
-//              node_placements = n, mesh_vertices = n, mesh_indices = n }]) -> the limits before
+//              node_placements = n, mesh_vertices = n, mesh_indices = n, dataset_cache_bytes = n }])
+//   -> the limits before
 // the call (all of them, so sn.limits(old) puts them back). Process-wide; each a whole number
 // in 1..2^53.
 int w_limits(lua_State* L) {
   const io::Limits old = io::limits();
   if (!lua_isnoneornil(L, 1)) {
     Options o(L, 1, "sn.limits", {"file_bytes", "shader_bytes", "image_pixels", "image_channels", "node_placements",
-                                  "mesh_vertices", "mesh_indices"});
+                                  "mesh_vertices", "mesh_indices", "dataset_cache_bytes"});
     io::Limits next = old;
     for (const LimitField& f : kLimitFields) {
       if (!o.has(f.name)) continue;

@@ -6,7 +6,23 @@ local sn = require "shadenet"
 local defaults = sn.limits()
 assert(defaults.file_bytes == 2 ^ 30 and defaults.shader_bytes == 2 ^ 24 and defaults.image_pixels == 2 ^ 28
        and defaults.image_channels == 64 and defaults.node_placements == 2 ^ 16 and defaults.mesh_vertices == 2 ^ 26
-       and defaults.mesh_indices == 2 ^ 28, "the documented defaults")
+       and defaults.mesh_indices == 2 ^ 28 and defaults.dataset_cache_bytes == 2 ^ 30, "the documented defaults")
+
+-- The dataset cache keeps at most dataset_cache_bytes of rows: two datasets of ~28 KB each
+-- under a 40 KB bound leave one cached, and the first is built again.
+do
+  local old = sn.limits { dataset_cache_bytes = 40000 }
+  sn.dataset_cache_clear()
+  local function sample(seed) return sn.dataset.sample { target = sn.lighting.phong {}, n = 800, seed = seed } end
+  sample(1)
+  sample(2)
+  assert(sn.dataset_stats().cached == 1, "one dataset of 28.8 KB under the 40 KB bound")
+  local builds = sn.dataset_stats().builds
+  sample(1)
+  assert(sn.dataset_stats().builds == builds + 1, "the dropped one is built again")
+  sn.limits(old)
+  sn.dataset_cache_clear()
+end
 
 local function fails(f, text, ...)
   local ok, err = pcall(f, ...)
