@@ -7,6 +7,7 @@
 
 #include "gl/context.h"
 #include "gl/pool.h"
+#include "io/memory.h"
 
 namespace sn::gl {
 
@@ -23,6 +24,7 @@ constexpr GLbitfield kMapAccess = GL_MAP_READ_BIT | GL_MAP_WRITE_BIT | GL_MAP_PE
 
 // A buffer object of `bytes` with `flags`; throws when the driver is out of memory.
 GLuint create_storage(std::size_t bytes, GLbitfield flags) {
+  if (current().info().software) io::check_memory(bytes, "a buffer of " + std::to_string(bytes) + " bytes");
   check_gl_errors_before("creating a buffer");
   GLuint id = 0;
   glCreateBuffers(1, &id);

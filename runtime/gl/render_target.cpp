@@ -9,6 +9,7 @@
 
 #include "gl/context.h"
 #include "gl/pool.h"
+#include "io/memory.h"
 
 namespace sn::gl {
 
@@ -21,6 +22,11 @@ RenderTarget::RenderTarget(int width, int height, int n)
                                 " is outside 1.." + std::to_string(max_size));
   if (n < 1 || n > kMaxAttachments)
     throw std::invalid_argument("render target colour attachments must be 1.." + std::to_string(kMaxAttachments));
+  // A software driver keeps the target in host memory (16 bytes a pixel per attachment, 4 of depth).
+  if (current().info().software)
+    io::check_memory(std::uint64_t(width) * std::uint64_t(height) * (16u * unsigned(n) + 4u),
+                     "a " + std::to_string(width) + "x" + std::to_string(height) + " render target with " +
+                         std::to_string(n) + " attachment(s)");
   check_gl_errors_before("creating a render target");
   glCreateFramebuffers(1, &fbo_);
   glCreateTextures(GL_TEXTURE_2D, n, color_);

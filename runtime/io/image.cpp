@@ -12,6 +12,7 @@
 #include "io/atomic_write.h"
 #include "io/image_codec.h"
 #include "io/limits.h"
+#include "io/memory.h"
 
 namespace sn::io {
 
@@ -201,6 +202,13 @@ double mse(const Image& a, const Image& b, int channels, const Image* mask, int 
     throw std::invalid_argument("mse: the mask covers no pixel (its channel " + std::to_string(mask_channel + 1) +
                                 " is above 0.5 nowhere)");
   return sum / (double(n) * channels);
+}
+
+size_t Image::checked_size(int w, int h, int c) {
+  const size_t n = size_t(w) * size_t(h) * size_t(c);
+  check_memory(n * sizeof(float), "a " + std::to_string(w) + "x" + std::to_string(h) + " image of " + std::to_string(c) +
+                                      " channel(s)");
+  return n;
 }
 
 }  // namespace sn::io

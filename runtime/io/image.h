@@ -12,11 +12,14 @@ namespace sn::io {
 // read; volumes (depth > 1) are refused.
 
 struct Image {
+  // w * h * c, checked against the free memory first (io/memory.h).
+  static size_t checked_size(int w, int h, int c);
+
   int width = 0, height = 0, channels = 0;
   std::vector<float> pixels;  // width * height * channels
 
   Image() = default;
-  Image(int w, int h, int c, float fill = 0.f) : width(w), height(h), channels(c), pixels(size_t(w) * h * c, fill) {}
+  Image(int w, int h, int c, float fill = 0.f) : width(w), height(h), channels(c), pixels(checked_size(w, h, c), fill) {}
   float& at(int x, int y, int c) { return pixels[(size_t(y) * width + x) * channels + c]; }
   float at(int x, int y, int c) const { return pixels[(size_t(y) * width + x) * channels + c]; }
 };
