@@ -31,7 +31,8 @@ GLuint create_storage(std::size_t bytes, GLbitfield flags) {
   glNamedBufferStorage(id, GLsizeiptr(bytes), nullptr, flags);
   if (take_gl_errors() == GL_OUT_OF_MEMORY) {
     glDeleteBuffers(1, &id);
-    throw std::runtime_error("out of GPU memory for a buffer of " + std::to_string(bytes) + " bytes");
+    throw std::runtime_error(std::string("out of ") + device_memory_name() + " for a buffer of " + std::to_string(bytes) +
+                             " bytes");
   }
   return id;
 }

@@ -149,4 +149,8 @@ std::string gl_error_text(unsigned error) {
   }
 }
 
+const char* device_memory_name() {
+  return current().info().software ? "memory (the software GL driver's: host memory)" : "GPU memory";
+}
+
 }  // namespace sn::gl

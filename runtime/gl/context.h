@@ -69,6 +69,9 @@ Context& current();
 bool has_current();
 void set_current(std::unique_ptr<Context> ctx);
 void destroy_current();
+// "GPU memory", or on a software driver (llvmpipe) "memory (the software GL driver's: host memory)",
+// for out-of-memory errors.
+const char* device_memory_name();
 
 // Reads and clears every pending GL error flag; returns the first (0 = none).
 unsigned take_gl_errors();

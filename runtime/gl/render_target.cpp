@@ -45,7 +45,7 @@ RenderTarget::RenderTarget(int width, int height, int n)
   if (GLenum e = take_gl_errors(); e != GL_NO_ERROR) {
     release();
     throw std::runtime_error(e == GL_OUT_OF_MEMORY
-                                 ? "out of GPU memory for a " + std::to_string(width) + "x" + std::to_string(height) +
+                                 ? std::string("out of ") + device_memory_name() + " for a " + std::to_string(width) + "x" + std::to_string(height) +
                                        " render target with " + std::to_string(n) + " attachment(s)"
                                  : "cannot make a " + std::to_string(width) + "x" + std::to_string(height) +
                                        " render target: " + gl_error_text(e));
