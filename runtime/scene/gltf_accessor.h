@@ -21,6 +21,19 @@ struct FileError : std::runtime_error {
       : std::runtime_error("mesh file '" + path + "': " + reason) {}
 };
 
+// "unsigned byte", "short", ...; "" for a number glTF does not define.
+inline const char* component_type_name(int type) {
+  switch (type) {
+    case TINYGLTF_COMPONENT_TYPE_BYTE: return "byte";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return "unsigned byte";
+    case TINYGLTF_COMPONENT_TYPE_SHORT: return "short";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return "unsigned short";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return "unsigned int";
+    case TINYGLTF_COMPONENT_TYPE_FLOAT: return "float";
+    default: return "";
+  }
+}
+
 // Reads accessors with every check a malformed file could need: indices of views and
 // buffers, byte ranges inside their buffers, component types the attribute may use.
 class AccessorReader {
@@ -43,10 +56,8 @@ class AccessorReader {
       throw FileError(path_, what + " (accessor " + std::to_string(index) +
                                  ") must be unsigned byte, short or int, got component type " +
                                  std::to_string(a.componentType));
+    check_component_type(a.componentType, what + " (accessor " + std::to_string(index) + ")");
     int csize = tinygltf::GetComponentSizeInBytes(uint32_t(a.componentType));
-    if (csize <= 0)
-      throw FileError(path_, what + " (accessor " + std::to_string(index) + ") has unknown component type " +
-                                 std::to_string(a.componentType));
     // Check every range before allocating: `count` comes from the file.
     const unsigned char* base = nullptr;
     size_t stride = 0;
@@ -85,6 +96,18 @@ class AccessorReader {
   }
 
  private:
+  // Before the size: tinygltf gives 5130 (GL_DOUBLE, not glTF's) 8 bytes, and its values came
+  // out NaN ("not a finite number" for POSITION, a NORMAL silently "repaired").
+  void check_component_type(int type, const std::string& what) const {
+    if (*component_type_name(type)) return;
+    std::string valid;
+    for (int t : {TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_SHORT,
+                  TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT,
+                  TINYGLTF_COMPONENT_TYPE_FLOAT})
+      valid += (valid.empty() ? "" : ", ") + std::to_string(t) + " " + component_type_name(t);
+    throw FileError(path_, what + " has unknown component type " + std::to_string(type) + " (valid: " + valid + ")");
+  }
+
   static bool is_unsigned_integer(int t) {
     return t == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE || t == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ||
            t == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
@@ -154,6 +177,7 @@ class AccessorReader {
     if (s.count < 0 || size_t(s.count) > a.count)
       throw FileError(path_, w + ": " + std::to_string(s.count) + " sparse values for " + std::to_string(a.count) +
                                  " elements");
+    check_component_type(s.indices.componentType, w + " indices");
     int isize = tinygltf::GetComponentSizeInBytes(uint32_t(s.indices.componentType));
     if (!is_unsigned_integer(s.indices.componentType))
       throw FileError(path_, w + ": sparse indices must be unsigned integers");
