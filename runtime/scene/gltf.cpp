@@ -402,20 +402,20 @@ class GltfLoader {
       return;  // points and lines cover no area
     auto pos_it = prim.attributes.find("POSITION");
     if (pos_it == prim.attributes.end()) throw FileError(path_, what + " has no POSITION attribute");
-    std::vector<double> pos = reader_.read(pos_it->second, 3, what + " POSITION");
+    std::vector<double> pos = reader_.read(pos_it->second, 3, what + " POSITION", storages::kPosition);
     size_t count = pos.size() / 3;
     if (count == 0) return;
 
     std::vector<double> nrm, uv;
     if (auto it = prim.attributes.find("NORMAL"); it != prim.attributes.end()) {
-      nrm = reader_.read(it->second, 3, what + " NORMAL");
+      nrm = reader_.read(it->second, 3, what + " NORMAL", storages::kDirection);
       if (nrm.size() != pos.size())
         throw FileError(path_, what + ": NORMAL has " + std::to_string(nrm.size() / 3) + " elements, POSITION " +
                                    std::to_string(count));
     }
     std::vector<double> tan;
     if (auto it = prim.attributes.find("TANGENT"); it != prim.attributes.end()) {
-      tan = reader_.read(it->second, 4, what + " TANGENT");
+      tan = reader_.read(it->second, 4, what + " TANGENT", storages::kDirection);
       if (tan.size() != count * 4)
         throw FileError(path_, what + ": TANGENT has " + std::to_string(tan.size() / 4) + " elements, POSITION " +
                                    std::to_string(count));
@@ -426,7 +426,7 @@ class GltfLoader {
     const tinygltf::TextureInfo* texture = base_color_texture(prim);
     const std::string uv_set = "TEXCOORD_" + std::to_string(texture ? texture->texCoord : 0);
     if (auto it = prim.attributes.find(uv_set); it != prim.attributes.end()) {
-      uv = reader_.read(it->second, 2, what + " " + uv_set);
+      uv = reader_.read(it->second, 2, what + " " + uv_set, storages::kTexcoord);
       if (uv.size() != count * 2)
         throw FileError(path_, what + ": " + uv_set + " has " + std::to_string(uv.size() / 2) + " elements, POSITION " +
                                    std::to_string(count));
@@ -441,7 +441,7 @@ class GltfLoader {
 
     std::vector<uint32_t> local;
     if (prim.indices >= 0) {
-      std::vector<double> idx = reader_.read(prim.indices, 1, what + " indices", true);
+      std::vector<double> idx = reader_.read(prim.indices, 1, what + " indices", storages::kIndex);
       local.resize(idx.size());
       for (size_t i = 0; i < idx.size(); ++i) {
         if (idx[i] >= double(count))

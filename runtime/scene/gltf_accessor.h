@@ -21,6 +21,46 @@ struct FileError : std::runtime_error {
       : std::runtime_error("mesh file '" + path + "': " + reason) {}
 };
 
+// One way an accessor may store its values: a component type, its integers normalised or not.
+// `quantized`: allowed by KHR_mesh_quantization only, not by glTF 2.0 itself.
+struct Storage {
+  int type;
+  bool normalized;
+  bool quantized = false;
+};
+using Storages = std::vector<Storage>;
+
+// What each accessor the loader reads may be stored as (glTF 2.0, 3.7.2.1, 3.7.3.3 and 3.11;
+// the tables of KHR_mesh_quantization). Other types loaded as garbage: POSITION as unsigned int
+// came out 1e9 wide, NORMAL as unsigned byte normalised (no negative directions) turned every
+// normal.
+//
+// The quantized types are read whether or not the file lists KHR_mesh_quantization in
+// extensionsUsed / extensionsRequired: their values decode the same either way, and viewers
+// (three.js, Babylon.js) draw such files without the declaration, so refusing them would only
+// lose meshes that show everywhere else.
+namespace storages {
+inline constexpr int kByte = TINYGLTF_COMPONENT_TYPE_BYTE, kUByte = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                     kShort = TINYGLTF_COMPONENT_TYPE_SHORT, kUShort = TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
+                     kUInt = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, kFloat = TINYGLTF_COMPONENT_TYPE_FLOAT;
+inline const Storages kPosition = {{kFloat, false},       {kByte, false, true},   {kByte, true, true},
+                                   {kUByte, false, true}, {kUByte, true, true},   {kShort, false, true},
+                                   {kShort, true, true},  {kUShort, false, true}, {kUShort, true, true}};
+inline const Storages kTexcoord = {{kFloat, false},       {kUByte, true},        {kUShort, true},
+                                   {kByte, false, true},  {kByte, true, true},   {kUByte, false, true},
+                                   {kShort, false, true}, {kShort, true, true},  {kUShort, false, true}};
+// NORMAL and TANGENT, and a morph target's NORMAL and TANGENT displacements: signed, normalised.
+inline const Storages kDirection = {{kFloat, false}, {kByte, true, true}, {kShort, true, true}};
+// A morph target's POSITION displacements: signed, as they move either way.
+inline const Storages kMorphPosition = {
+    {kFloat, false}, {kByte, false, true}, {kByte, true, true}, {kShort, false, true}, {kShort, true, true}};
+inline const Storages kIndex = {{kUByte, false}, {kUByte, true}, {kUShort, false}, {kUShort, true},
+                                {kUInt, false},  {kUInt, true}};
+inline const Storages kJoints = {{kUByte, false}, {kUShort, false}};
+inline const Storages kWeights = {{kFloat, false}, {kUByte, true}, {kUShort, true}};
+inline const Storages kMatrix = {{kFloat, false}};
+}  // namespace storages
+
 // "unsigned byte", "short", ...; "" for a number glTF does not define.
 inline const char* component_type_name(int type) {
   switch (type) {
@@ -44,19 +84,16 @@ class AccessorReader {
 
   AccessorReader(const tinygltf::Model& m, const std::string& path) : m_(m), path_(path) {}
 
-  // `count` x `components` values as doubles; integer components of normalised accessors are
-  // mapped to [0,1] / [-1,1] as the glTF specification says.
-  std::vector<double> read(int index, int components, const std::string& what, bool integer_only = false) const {
+  // `count` x `components` values as doubles, stored as one of `allowed` (storages:: above);
+  // integer components of normalised accessors are mapped to [0,1] / [-1,1] as the glTF
+  // specification says.
+  std::vector<double> read(int index, int components, const std::string& what, const Storages& allowed) const {
     const tinygltf::Accessor& a = accessor(index, what);
     int n = tinygltf::GetNumComponentsInType(uint32_t(a.type));
     if (n != components)
       throw FileError(path_, what + " (accessor " + std::to_string(index) + ") has " + std::to_string(n) +
                                  " components, expected " + std::to_string(components));
-    if (integer_only && !is_unsigned_integer(a.componentType))
-      throw FileError(path_, what + " (accessor " + std::to_string(index) +
-                                 ") must be unsigned byte, short or int, got component type " +
-                                 std::to_string(a.componentType));
-    check_component_type(a.componentType, what + " (accessor " + std::to_string(index) + ")");
+    check_storage(a, what + " (accessor " + std::to_string(index) + ")", allowed);
     int csize = tinygltf::GetComponentSizeInBytes(uint32_t(a.componentType));
     // Check every range before allocating: `count` comes from the file.
     const unsigned char* base = nullptr;
@@ -106,6 +143,27 @@ class AccessorReader {
                   TINYGLTF_COMPONENT_TYPE_FLOAT})
       valid += (valid.empty() ? "" : ", ") + std::to_string(t) + " " + component_type_name(t);
     throw FileError(path_, what + " has unknown component type " + std::to_string(type) + " (valid: " + valid + ")");
+  }
+
+  void check_storage(const tinygltf::Accessor& a, const std::string& what, const Storages& allowed) const {
+    check_component_type(a.componentType, what);
+    // "normalized" on floats changes nothing (glTF forbids it; the values read the same), so they
+    // count as float; on integers it changes every value.
+    const bool normalized = a.normalized && a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT;
+    for (const Storage& s : allowed)
+      if (s.type == a.componentType && s.normalized == normalized) return;
+    auto name = [](const Storage& s) {
+      return std::string(component_type_name(s.type)) + (s.normalized ? " normalized" : "");
+    };
+    std::string core, quantized;
+    for (const Storage& s : allowed) {
+      std::string& list = s.quantized ? quantized : core;
+      list += (list.empty() ? "" : ", ") + name(s);
+    }
+    throw FileError(path_, what + " is stored as " + std::to_string(a.componentType) + " " +
+                               name({a.componentType, normalized}) + ", which glTF does not allow there (allowed: " +
+                               core + (quantized.empty() ? "" : "; with KHR_mesh_quantization also " + quantized) +
+                               ")");
   }
 
   static bool is_unsigned_integer(int t) {

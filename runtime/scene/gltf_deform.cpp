@@ -15,19 +15,19 @@ void add_morph_targets(const AccessorReader& reader, const tinygltf::Primitive& 
     if (w == 0.0) continue;
     const std::string name = what + " morph target " + std::to_string(t);
     // A target's displacements are 3 components, also a tangent's (its w, the handedness, stays).
-    auto add = [&](const char* attribute, std::vector<double>& base, std::size_t stride) {
+    auto add = [&](const char* attribute, std::vector<double>& base, std::size_t stride, const Storages& allowed) {
       auto it = prim.targets[t].find(attribute);
       if (it == prim.targets[t].end() || base.empty()) return;
-      const std::vector<double> d = reader.read(it->second, 3, name + " " + attribute);
+      const std::vector<double> d = reader.read(it->second, 3, name + " " + attribute, allowed);
       if (d.size() != count * 3)
         throw FileError(path, name + ": " + attribute + " has " + std::to_string(d.size() / 3) +
                                   " elements, the primitive " + std::to_string(count));
       for (std::size_t i = 0; i < count; ++i)
         for (std::size_t c = 0; c < 3; ++c) base[i * stride + c] += w * d[i * 3 + c];
     };
-    add("POSITION", pos, 3);
-    add("NORMAL", nrm, 3);
-    add("TANGENT", tan, 4);
+    add("POSITION", pos, 3, storages::kMorphPosition);
+    add("NORMAL", nrm, 3, storages::kDirection);
+    add("TANGENT", tan, 4, storages::kDirection);
   }
 }
 
@@ -42,7 +42,7 @@ std::vector<glm::dmat4> skin_matrices(const AccessorReader& reader, const tinygl
   const std::string skin_name = "skin " + std::to_string(skin);
   std::vector<double> inverse_bind;
   if (s.inverseBindMatrices >= 0) {
-    inverse_bind = reader.read(s.inverseBindMatrices, 16, skin_name + " inverseBindMatrices");
+    inverse_bind = reader.read(s.inverseBindMatrices, 16, skin_name + " inverseBindMatrices", storages::kMatrix);
     if (inverse_bind.size() < s.joints.size() * 16)
       throw FileError(path, skin_name + " has " + std::to_string(s.joints.size()) + " joints but " +
                                 std::to_string(inverse_bind.size() / 16) + " inverse bind matrices");
@@ -69,8 +69,8 @@ std::vector<glm::dmat4> skin_matrices(const AccessorReader& reader, const tinygl
                                   (j_it == prim.attributes.end() ? js : ws) + ", which glTF 2.0 requires of it");
       break;
     }
-    const std::vector<double> joints = reader.read(j_it->second, 4, what + " " + js, true);
-    const std::vector<double> weights = reader.read(w_it->second, 4, what + " " + ws);
+    const std::vector<double> joints = reader.read(j_it->second, 4, what + " " + js, storages::kJoints);
+    const std::vector<double> weights = reader.read(w_it->second, 4, what + " " + ws, storages::kWeights);
     if (joints.size() != count * 4 || weights.size() != count * 4)
       throw FileError(path, what + ": " + js + " and " + ws + " have " + std::to_string(joints.size() / 4) + " and " +
                                 std::to_string(weights.size() / 4) + " elements, POSITION " + std::to_string(count));

@@ -51,6 +51,96 @@ std::string with_accessor(const std::string& name, const std::vector<unsigned ch
 
 }  // namespace
 
+TEST(GltfAccessor, AttributesStoredAsTypesGltfDoesNotAllowAreRefusedByName) {
+  // POSITION as unsigned int: read as integers, a mesh 1e9 wide (glTF: float, or with
+  // KHR_mesh_quantization 8- and 16-bit integers).
+  std::vector<unsigned char> bytes;
+  append(bytes, std::vector<uint32_t>{0, 0, 0, 1000000000, 0, 0, 0, 3000000000u, 0});
+  std::string p = raw_fixture(temp_dir() / "pos_uint.gltf", bytes,
+                              R"([{"buffer": 0, "byteOffset": 0, "byteLength": 36}])",
+                              R"([{"bufferView": 0, "componentType": 5125, "count": 3, "type": "VEC3"}])",
+                              R"({"attributes": {"POSITION": 0}})");
+  std::string e = message_of([&] { load_mesh(p); });
+  EXPECT_NE(e.find("pos_uint.gltf': mesh 0 primitive 0 POSITION (accessor 0) is stored as 5125 unsigned int, which "
+                   "glTF does not allow there (allowed: float; with KHR_mesh_quantization also byte, byte normalized, "
+                   "unsigned byte, unsigned byte normalized, short, short normalized, unsigned short, unsigned short "
+                   "normalized)"),
+            std::string::npos)
+      << e;
+
+  // NORMAL as unsigned byte normalised: [0, 1] cannot point backwards, every normal came out turned.
+  bytes.clear();
+  append(bytes, std::vector<uint8_t>{128, 128, 255, 0, 128, 128, 255, 0, 128, 128, 255, 0});
+  p = with_accessor("normal_u8.gltf", bytes, "NORMAL",
+                    R"("componentType": 5121, "normalized": true, "count": 3, "type": "VEC3")", "4");
+  e = message_of([&] { load_mesh(p); });
+  EXPECT_NE(e.find("mesh 0 primitive 0 NORMAL (accessor 1) is stored as 5121 unsigned byte normalized, which glTF "
+                   "does not allow there (allowed: float; with KHR_mesh_quantization also byte normalized, short "
+                   "normalized)"),
+            std::string::npos)
+      << e;
+
+  // TANGENT likewise; TEXCOORD_0 as unsigned int.
+  p = with_accessor("tangent_u8.gltf", bytes, "TANGENT",
+                    R"("componentType": 5121, "normalized": true, "count": 3, "type": "VEC4")");
+  e = message_of([&] { load_mesh(p); });
+  EXPECT_NE(e.find("TANGENT (accessor 1) is stored as 5121 unsigned byte normalized"), std::string::npos) << e;
+  bytes.clear();
+  append(bytes, std::vector<uint32_t>{0, 0, 1, 0, 0, 1});
+  p = with_accessor("uv_uint.gltf", bytes, "TEXCOORD_0", R"("componentType": 5125, "count": 3, "type": "VEC2")");
+  e = message_of([&] { load_mesh(p); });
+  EXPECT_NE(e.find("TEXCOORD_0 (accessor 1) is stored as 5125 unsigned int, which glTF does not allow there (allowed: "
+                   "float, unsigned byte normalized, unsigned short normalized; with KHR_mesh_quantization also byte, "
+                   "byte normalized, unsigned byte, short, short normalized, unsigned short)"),
+            std::string::npos)
+      << e;
+
+  // A morph target's POSITION displacements as unsigned bytes: they move one way only.
+  bytes = float_bytes({0, 0, 0, 1, 0, 0, 0, 1, 0});
+  bytes.insert(bytes.end(), {1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0});
+  p = raw_fixture(temp_dir() / "morph_u8.gltf", bytes,
+                  R"([{"buffer": 0, "byteOffset": 0, "byteLength": 36},
+                      {"buffer": 0, "byteOffset": 36, "byteLength": 12, "byteStride": 4}])",
+                  R"([{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"},
+                      {"bufferView": 1, "componentType": 5121, "count": 3, "type": "VEC3"}])",
+                  R"({"attributes": {"POSITION": 0}, "targets": [{"POSITION": 1}]})", R"([{"mesh": 0, "weights": [1]}])");
+  e = message_of([&] { load_mesh(p); });
+  EXPECT_NE(e.find("mesh 0 primitive 0 morph target 0 POSITION (accessor 1) is stored as 5121 unsigned byte, which "
+                   "glTF does not allow there (allowed: float; with KHR_mesh_quantization also byte, byte normalized, "
+                   "short, short normalized)"),
+            std::string::npos)
+      << e;
+}
+
+TEST(GltfAccessor, QuantizedAttributesLoadWithOrWithoutTheExtensionDeclared) {
+  // POSITION as short (integers, placed by the node's scale as quantizers write them), NORMAL as
+  // byte normalised, TEXCOORD_0 as unsigned short normalised (core glTF).
+  std::vector<unsigned char> bytes;
+  append(bytes, std::vector<int16_t>{0, 0, 0, 0, 100, 0, 0, 0, 0, 100, 0, 0});  // stride 8
+  append(bytes, std::vector<int8_t>{0, 0, 127, 0, 0, 0, 127, 0, 0, 0, 127, 0});  // stride 4
+  append(bytes, std::vector<uint16_t>{0, 0, 65535, 0, 0, 65535});
+  const std::string views = R"([{"buffer": 0, "byteOffset": 0, "byteLength": 24, "byteStride": 8},
+                                {"buffer": 0, "byteOffset": 24, "byteLength": 12, "byteStride": 4},
+                                {"buffer": 0, "byteOffset": 36, "byteLength": 12}])";
+  const std::string accessors = R"([{"bufferView": 0, "componentType": 5122, "count": 3, "type": "VEC3"},
+      {"bufferView": 1, "componentType": 5120, "normalized": true, "count": 3, "type": "VEC3"},
+      {"bufferView": 2, "componentType": 5123, "normalized": true, "count": 3, "type": "VEC2"}])";
+  const std::string prim = R"({"attributes": {"POSITION": 0, "NORMAL": 1, "TEXCOORD_0": 2}})";
+  // The declaration follows the accessors, which raw_fixture writes last in the top-level object.
+  const std::string extension = R"(, "extensionsUsed": ["KHR_mesh_quantization"],
+                                    "extensionsRequired": ["KHR_mesh_quantization"])";
+  for (const std::string& declared : {std::string(), extension}) {
+    std::string p = raw_fixture(temp_dir() / "quantized.gltf", bytes, views, accessors + declared, prim,
+                                R"([{"mesh": 0, "scale": [0.01, 0.01, 0.01]}])");
+    Mesh m = load_mesh(p);
+    ASSERT_EQ(m.vertex_count(), 3u) << declared;
+    expect_near(m.positions[1], {1, 0, 0}, 1e-6, "position" + declared);
+    expect_near(m.normals[0], {0, 0, 1}, 1e-6, "normal" + declared);
+    EXPECT_EQ(m.uvs[1], glm::vec2(1, 0)) << declared;
+    EXPECT_FALSE(m.normals_computed) << declared;
+  }
+}
+
 TEST(GltfAccessor, AComponentTypeGltfDoesNotDefineIsNamedWithTheValidOnes) {
   // 5130 (GL_DOUBLE): tinygltf gives it 8 bytes, and its values came out NaN: "not a finite
   // number" for POSITION, a silent "repair" for NORMAL.
