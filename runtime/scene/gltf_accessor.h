@@ -54,8 +54,8 @@ inline const Storages kDirection = {{kFloat, false}, {kByte, true, true}, {kShor
 // A morph target's POSITION displacements: signed, as they move either way.
 inline const Storages kMorphPosition = {
     {kFloat, false}, {kByte, false, true}, {kByte, true, true}, {kShort, false, true}, {kShort, true, true}};
-inline const Storages kIndex = {{kUByte, false}, {kUByte, true}, {kUShort, false}, {kUShort, true},
-                                {kUInt, false},  {kUInt, true}};
+// Never normalised: read as fractions, every index came out 0 and every triangle collapsed.
+inline const Storages kIndex = {{kUByte, false}, {kUShort, false}, {kUInt, false}};
 inline const Storages kJoints = {{kUByte, false}, {kUShort, false}};
 inline const Storages kWeights = {{kFloat, false}, {kUByte, true}, {kUShort, true}};
 inline const Storages kMatrix = {{kFloat, false}};

@@ -159,3 +159,19 @@ TEST(GltfAccessor, AComponentTypeGltfDoesNotDefineIsNamedWithTheValidOnes) {
   e = message_of([&] { load_mesh(p); });
   EXPECT_NE(e.find("mesh 0 primitive 0 NORMAL (accessor 1)" + valid), std::string::npos) << e;
 }
+
+TEST(GltfAccessor, NormalisedIndicesAreRefused) {
+  // glTF forbids normalised indices; read as fractions of 255 every index was 0 and every
+  // triangle collapsed onto vertex 0.
+  std::vector<unsigned char> bytes = {0, 1, 2};
+  std::string p = with_accessor("idx_norm.gltf", bytes, "indices",
+                                R"("componentType": 5121, "normalized": true, "count": 3, "type": "SCALAR")");
+  std::string e = message_of([&] { load_mesh(p); });
+  EXPECT_NE(e.find("idx_norm.gltf': mesh 0 primitive 0 indices (accessor 1) is stored as 5121 unsigned byte "
+                   "normalized, which glTF does not allow there (allowed: unsigned byte, unsigned short, unsigned int)"),
+            std::string::npos)
+      << e;
+  // The same without "normalized" is a triangle.
+  p = with_accessor("idx.gltf", bytes, "indices", R"("componentType": 5121, "count": 3, "type": "SCALAR")");
+  EXPECT_EQ(load_mesh(p).indices, (std::vector<uint32_t>{0, 1, 2}));
+}
