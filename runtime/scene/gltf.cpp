@@ -477,6 +477,7 @@ class GltfLoader {
       count = tris.size();
       for (size_t i = 0; i < count; ++i) tris[i] = uint32_t(i);
       primitives_flat_.add(what);
+      mesh_.normals_computed = true;
     }
 
     size_t base = mesh_.positions.size();
@@ -500,7 +501,6 @@ class GltfLoader {
     std::vector<glm::vec3> computed;
     auto fallback = [&](size_t i) {
       if (computed.empty()) computed = area_weighted_normals(world_pos, tris);
-      mesh_.normals_computed = true;
       return computed[i];
     };
     for (size_t i = 0; i < count; ++i) {

@@ -37,8 +37,9 @@ struct Mesh {
   std::string tangent_source;  // "file" (glTF TANGENT), "analytic", or "" (generated when drawn)
   bool has_normals = false;
   bool has_uvs = false;
-  // The file lacked some normals, so they were computed (flat for a primitive without normals,
-  // area-weighted where a normal was zero); callers tell the user.
+  // Some normals did not come from the file or the shape: a primitive without normals got flat
+  // ones; callers tell the user. Zero or non-finite normals a file has are repaired without
+  // setting it (the loader's note counts them).
   bool normals_computed = false;
   // What loading the file changed or left out, each a sentence the bindings print as
   // "note: mesh file 'PATH' <note>" (computed normals, indices that make no whole triangle).

@@ -667,6 +667,23 @@ TEST(Mesh, AFileWithoutNormalsGetsFlatNormalsAsGltfRequires) {
       << m.notes[0];
 }
 
+// normals_computed says that some normals did not come from the file; zero ones the file has are
+// repaired and counted in a note, but the file had normals (it said true, against its docs).
+TEST(Mesh, RepairedNormalsAreANoteNotComputedNormals) {
+  Fixture f;
+  tinygltf::Mesh mesh;
+  mesh.primitives.push_back(primitive(TINYGLTF_MODE_TRIANGLES, f.vec3s({0, 0, 0, 1, 0, 0, 0, 1, 0}),
+                                      f.vec3s({0, 0, 1, 0, 0, 0, 0, 0, 1})));
+  f.model.meshes.push_back(mesh);
+  f.place(0);
+  const Mesh m = load_mesh(f.write(temp_dir() / "zero_normal.gltf"));
+  EXPECT_FALSE(m.normals_computed);
+  expect_near(m.normals[1], {0, 0, 1}, 1e-7, "repaired normal");
+  ASSERT_EQ(m.notes.size(), 1u);
+  EXPECT_EQ(m.notes[0], "has 1 zero or non-finite normals: replaced by the area-weighted normals of the triangles "
+                        "around them");
+}
+
 TEST(Mesh, TransformedUsesTheInverseTransposeForNormals) {
   // A sphere stretched to an ellipsoid x^2/4 + y^2 + z^2 = 1: its normal is the gradient (x/4, y, z).
   Mesh s = sphere(1, 32, 16);
