@@ -377,19 +377,20 @@ class GltfLoader {
     if (size_t(index) >= m_.meshes.size())
       throw FileError(path_, "refers to mesh " + std::to_string(index) + ", but the file has " +
                                  std::to_string(m_.meshes.size()));
-    glm::dmat3 linear(world);
-    double det = glm::determinant(linear);
-    // A node scaled to zero hides its mesh; nothing of it would cover a pixel.
-    if (!(std::abs(det) > 1e-300)) {
+    const glm::dmat3 linear(world);
+    // A node scaled to zero along one axis flattens its mesh, which is drawn flat as a glTF viewer
+    // draws it (it vanished: the inverse transpose does not exist, the cofactor matrix does). One
+    // scaled to zero along two or three leaves no area that could cover a pixel.
+    const glm::dmat3 normals = normal_matrix(linear);
+    if (normals == glm::dmat3(0.0)) {
       ++placements_hidden_;
       return;
     }
-    glm::dmat3 normal_matrix = glm::transpose(glm::inverse(linear));
     const tinygltf::Mesh& mesh = m_.meshes[size_t(index)];
     const std::vector<double>& weights = node_weights.empty() ? mesh.weights : node_weights;
     for (size_t p = 0; p < mesh.primitives.size(); ++p)
       add_primitive(mesh.primitives[p], "mesh " + std::to_string(index) + " primitive " + std::to_string(p), world,
-                    normal_matrix, det < 0, weights, skin);
+                    normals, glm::determinant(linear) < 0, weights, skin);
   }
 
   void add_primitive(const tinygltf::Primitive& prim, const std::string& what, const glm::dmat4& world,
@@ -506,13 +507,17 @@ class GltfLoader {
     for (size_t i = 0; i < count; ++i) {
       glm::vec3 n;
       if (!nrm.empty()) {
-        glm::dvec3 d = normal_matrix * glm::dvec3(nrm[3 * i], nrm[3 * i + 1], nrm[3 * i + 2]);
-        double len = glm::length(d);
-        if (std::isfinite(len) && len > 1e-12) {
-          n = glm::vec3(d / len);
-        } else {
+        const glm::dvec3 file(nrm[3 * i], nrm[3 * i + 1], nrm[3 * i + 2]);
+        const double file_len = glm::length(file);
+        const glm::dvec3 d = normal_matrix * file;
+        const double len = glm::length(d);
+        if (!(std::isfinite(file_len) && file_len > 1e-12)) {
           n = fallback(i);
           ++normals_repaired_;
+        } else if (len > 1e-9 * file_len) {
+          n = glm::vec3(d / len);
+        } else {
+          n = fallback(i);  // a face a flattening node turned edge on: it covers no pixel
         }
       } else {
         n = fallback(i);

@@ -4,6 +4,8 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "scene/transform.h"
+
 namespace sn::scene {
 
 void add_morph_targets(const AccessorReader& reader, const tinygltf::Primitive& prim,
@@ -105,9 +107,9 @@ std::vector<char> apply_skin(const std::vector<glm::dmat4>& skins, std::vector<d
     mirrors[i] = det < 0;
     const glm::dvec4 p = skins[i] * glm::dvec4(pos[3 * i], pos[3 * i + 1], pos[3 * i + 2], 1.0);
     for (int k = 0; k < 3; ++k) pos[3 * i + k] = p[k];
-    if (!nrm.empty() && std::abs(det) > 1e-300) {  // a collapsed vertex keeps its normal
-      const glm::dmat3 normal_matrix = glm::transpose(glm::inverse(linear));
-      const glm::dvec3 n = normal_matrix * glm::dvec3(nrm[3 * i], nrm[3 * i + 1], nrm[3 * i + 2]);
+    const glm::dmat3 normals = nrm.empty() ? glm::dmat3(0.0) : normal_matrix(linear);
+    if (normals != glm::dmat3(0.0)) {  // a vertex collapsed to a line or a point keeps its normal
+      const glm::dvec3 n = normals * glm::dvec3(nrm[3 * i], nrm[3 * i + 1], nrm[3 * i + 2]);
       for (int k = 0; k < 3; ++k) nrm[3 * i + k] = n[k];
     }
     if (!tan.empty()) {

@@ -44,7 +44,7 @@ Mesh transformed(const Mesh& m, const glm::dmat4& transform) {
   double det = glm::determinant(linear);
   if (!is_finite(transform) || !(std::abs(det) > 1e-300))
     throw std::invalid_argument("cannot transform mesh '" + m.name + "': the matrix is singular or not finite");
-  glm::dmat3 normal_matrix = glm::transpose(glm::inverse(linear));
+  const glm::dmat3 normals = normal_matrix(linear);
   Mesh out;
   out.name = m.name;
   out.uvs = m.uvs;
@@ -67,7 +67,7 @@ Mesh transformed(const Mesh& m, const glm::dmat4& transform) {
                                   io::number_text(p.z) + "), beyond a float's range (3.4e38)");
   }
   for (size_t i = 0; i < m.normals.size(); ++i) {
-    glm::dvec3 n = normal_matrix * glm::dvec3(m.normals[i]);
+    glm::dvec3 n = normals * glm::dvec3(m.normals[i]);
     double len = glm::length(n);
     out.normals[i] = len > 0 ? glm::vec3(n / len) : glm::vec3(0, 1, 0);
   }

@@ -1,5 +1,6 @@
 #include "scene/transform.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -14,6 +15,15 @@ bool is_finite(const glm::dmat4& m) {
     for (int r = 0; r < 4; ++r)
       if (!std::isfinite(m[c][r])) return false;
   return true;
+}
+
+glm::dmat3 normal_matrix(const glm::dmat3& m) {
+  glm::dmat3 cofactor(glm::cross(m[1], m[2]), glm::cross(m[2], m[0]), glm::cross(m[0], m[1]));
+  double largest = 0;
+  for (int c = 0; c < 3; ++c)
+    for (int r = 0; r < 3; ++r) largest = std::max(largest, std::abs(cofactor[c][r]));
+  if (!(largest > 0) || !std::isfinite(largest)) return glm::dmat3(0.0);
+  return cofactor * ((glm::determinant(m) < 0 ? -1.0 : 1.0) / largest);
 }
 
 void check_transform(const glm::dmat4& m, const std::string& what) {

@@ -11,6 +11,15 @@ namespace sn::scene {
 // Whether every entry of m is a finite number.
 bool is_finite(const glm::dmat4& m);
 
+// The matrix that turns normals under the linear map `m` (a transform's 3x3 part): the inverse
+// transpose up to a positive factor, and defined when `m` has none. It is m's cofactor matrix,
+// det(m) times the inverse transpose, which takes the normal of a face to the normal of the moved
+// face ((m a) x (m b) = cof(m) (a x b)) even when m flattens (a glTF node scaled to zero along
+// one axis). Its sign is turned for a mirror, whose winding callers turn instead, and it is
+// scaled to a largest entry of 1, so a normal's length after it says nothing of the mesh's size.
+// All zeros when m leaves no area (it collapses to a line or a point).
+glm::dmat3 normal_matrix(const glm::dmat3& m);
+
 // Throws naming `what` unless m is finite, affine (last row 0 0 0 1) and invertible.
 void check_transform(const glm::dmat4& m, const std::string& what);
 

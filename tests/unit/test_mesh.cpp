@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <utility>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -254,6 +255,69 @@ TEST(Mesh, AMirroringNodeFlipsTheWindingSoTrianglesStillFaceTheirNormals) {
   expect_near(m.normals[0], {0, 0, -1}, 1e-7, "mirrored normal");
   EXPECT_EQ(m.indices, (std::vector<uint32_t>{0, 2, 1}));
   expect_consistent_winding(m);
+}
+
+// A cube of side 2 about the origin with a normal per face: 24 vertices, 36 uint16 indices.
+int cube_mesh(Fixture& f) {
+  std::vector<float> pos, nrm;
+  std::vector<uint16_t> idx;
+  for (int axis = 0; axis < 3; ++axis)
+    for (float side : {1.0f, -1.0f}) {
+      glm::vec3 n(0), u(0), v(0);
+      n[axis] = side;
+      u[(axis + 1) % 3] = 1, v[(axis + 2) % 3] = 1;
+      if (side < 0) std::swap(u, v);  // u x v = n: counter-clockwise seen from outside
+      const auto first = uint16_t(pos.size() / 3);
+      for (glm::vec3 c : {n - u - v, n + u - v, n + u + v, n - u + v}) {
+        pos.insert(pos.end(), {c.x, c.y, c.z});
+        nrm.insert(nrm.end(), {n.x, n.y, n.z});
+      }
+      for (int k : {0, 1, 2, 0, 2, 3}) idx.push_back(uint16_t(first + k));
+    }
+  tinygltf::Mesh mesh;
+  mesh.primitives.push_back(primitive(TINYGLTF_MODE_TRIANGLES, f.vec3s(pos), f.vec3s(nrm),
+                                      f.accessor(f.view(idx), TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
+                                                 TINYGLTF_TYPE_SCALAR, idx.size())));
+  f.model.meshes.push_back(mesh);
+  return int(f.model.meshes.size()) - 1;
+}
+
+// A node scaled to zero along one axis flattens its mesh, and a glTF viewer draws it so: it used
+// to vanish without a word (its normal matrix, the inverse transpose, does not exist).
+TEST(Mesh, ANodeScaledToZeroAlongOneAxisDrawsItsMeshFlat) {
+  for (double mirror : {1.0, -1.0}) {
+    Fixture f;
+    const int cube = cube_mesh(f);
+    f.model.nodes[size_t(f.place(cube))].translation = {-3, 0, 0};
+    tinygltf::Node& flat = f.model.nodes[size_t(f.place(cube))];
+    flat.translation = {3, 0, 0};
+    flat.rotation = {0, std::sin(kPi / 12), 0, std::cos(kPi / 12)};  // 30 degrees about y
+    flat.scale = {mirror, 0, 1};
+    const Mesh m = load_mesh(f.write(temp_dir() / "flat_node.gltf"));
+    const std::string what = mirror < 0 ? "mirrored" : "plain";
+    ASSERT_EQ(m.vertex_count(), 48u) << what;
+    EXPECT_TRUE(m.notes.empty()) << what << ": " << m.notes[0];
+    EXPECT_FALSE(m.normals_computed) << what;
+    for (size_t i = 24; i < 48; ++i) {
+      ASSERT_NEAR(m.positions[i].y, 0, 1e-6) << what << " vertex " << i;
+      ASSERT_NEAR(glm::length(m.normals[i]), 1, 1e-6) << what << " vertex " << i;
+    }
+    // The faces that had area still do, lie in y = 0 and face the way their normals point: the
+    // top (cube vertices 8..11) up and the bottom (12..15) down, the other way round under the
+    // mirror, which turns their winding (a viewer does not rewind them: the determinant is 0).
+    size_t with_area = 0;
+    for (size_t t = 36; t < m.indices.size(); t += 3) {
+      glm::dvec3 a(m.positions[m.indices[t]]), b(m.positions[m.indices[t + 1]]), c(m.positions[m.indices[t + 2]]);
+      glm::dvec3 face = glm::cross(b - a, c - a);
+      if (glm::length(face) < 1e-6) continue;  // a side, seen edge on
+      ++with_area;
+      for (int k = 0; k < 3; ++k)
+        ASSERT_GT(glm::dot(face, glm::dvec3(m.normals[m.indices[t + k]])), 0) << what << " triangle " << t / 3;
+    }
+    EXPECT_EQ(with_area, 4u) << what;
+    expect_near(m.normals[24 + 8], {0, mirror, 0}, 1e-6, what + " top");
+    expect_near(m.normals[24 + 12], {0, -mirror, 0}, 1e-6, what + " bottom");
+  }
 }
 
 // A mesh placed far from the origin (a georeferenced or CAD export: small local coordinates under
