@@ -96,9 +96,9 @@ GBuffer render_gbuffer(const std::vector<MeshDraw>& draws, const Camera& camera,
   for (const auto& [m, model] : draws) {
     for (const auto& a : attributes) {
       if (a == "uv" && !m->has_uvs)
-        throw std::invalid_argument("attribute 'uv': mesh '" + m->name +
-                                    "' has no texture coordinates (TEXCOORD_0); choose inputs it has, e.g. "
-                                    "\"normal\", \"view\", \"position\"");
+        throw std::invalid_argument("attribute 'uv': mesh '" + m->name + "' has no texture coordinates" +
+                                    (m->uv_sets.empty() ? std::string() : " (" + m->uv_sets + ")") +
+                                    "; choose inputs it has, e.g. \"normal\", \"view\", \"position\"");
       if (a == "base_color" && !m->base_color)
         throw std::invalid_argument("attribute 'base_color': mesh '" + m->name +
                                     "' has no base-colour texture (a textured model needs one, e.g. Duck.gltf)");

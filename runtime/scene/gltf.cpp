@@ -296,13 +296,18 @@ class GltfLoader {
     mesh_.has_normals = true;
     // A primitive without texture coordinates (a textured body's untextured eyes) keeps (0, 0)
     // rather than taking the others' away: they used to be zeroed too, drawing one flat colour.
+    // The note comes wherever uvs matter: the mesh has a texture (it was missing when no
+    // primitive had the set its texture reads) or other primitives have uvs.
     mesh_.has_uvs = primitives_with_uvs_ > 0;
-    if (mesh_.has_uvs && !primitives_without_uvs_.empty()) {
+    mesh_.uv_sets = io::join(std::vector<std::string>(uv_sets_.begin(), uv_sets_.end()));
+    if ((mesh_.has_uvs || texture_image_ >= 0) && !primitives_without_uvs_.empty()) {
+      // At uv (0, 0), the corner where the four corner texels meet: repeat and linear blend them.
       mesh_.notes.push_back("has " + std::to_string(primitives_without_uvs_.count) + " of " +
                             std::to_string(primitives_used_) + " primitives without texture coordinates (" +
                             primitives_without_uvs_.text() +
-                            "): their uvs are (0, 0), so a texture shows its top-left texel there; give them "
-                            "texture coordinates in the file for more");
+                            "): their uvs are (0, 0), where a texture shows one flat colour (the average of its "
+                            "four corner texels under repeat wrapping and linear filtering, else its top-left "
+                            "texel); give them texture coordinates in the file");
     }
     // The file's tangents are used when every primitive has them (a degenerate one is replaced by
     // the generated frame); otherwise all are generated alike when drawn (tangents.h).
@@ -537,6 +542,7 @@ class GltfLoader {
       file_tangents_.push_back(t);
       mesh_.uvs.push_back(uv.empty() ? glm::vec2(0) : glm::vec2(float(uv[2 * i]), float(uv[2 * i + 1])));
     }
+    uv_sets_.insert(uv_set);
     if (!uv.empty()) ++primitives_with_uvs_;
     else primitives_without_uvs_.add(what + " (" + uv_set + ")");
     if (!tan.empty()) ++primitives_with_tangents_;
@@ -651,6 +657,7 @@ class GltfLoader {
   int placements_hidden_ = 0;  // meshes placed by a node whose transform is singular (scaled to zero)
   int primitives_seen_ = 0, primitives_used_ = 0, primitives_with_uvs_ = 0, primitives_with_tangents_ = 0;
   PrimitiveList primitives_without_uvs_;  // "mesh 0 primitive 1 (TEXCOORD_0)"
+  std::set<std::string> uv_sets_;         // the sets the drawn primitives read: Mesh::uv_sets
   PrimitiveList primitives_flat_;         // without normals
   std::size_t normals_repaired_ = 0;      // zero or non-finite in the file
   std::vector<glm::vec4> file_tangents_;

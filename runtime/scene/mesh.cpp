@@ -51,6 +51,7 @@ Mesh transformed(const Mesh& m, const glm::dmat4& transform) {
   out.indices = m.indices;
   out.has_normals = m.has_normals;
   out.has_uvs = m.has_uvs;
+  out.uv_sets = m.uv_sets;
   out.normals_computed = m.normals_computed;
   out.base_color = m.base_color;
   out.tangent_source = m.tangent_source;

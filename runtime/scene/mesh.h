@@ -37,6 +37,9 @@ struct Mesh {
   std::string tangent_source;  // "file" (glTF TANGENT), "analytic", or "" (generated when drawn)
   bool has_normals = false;
   bool has_uvs = false;
+  // The texture coordinate sets a file's primitives read ("TEXCOORD_1": the set their
+  // base-colour texture names), whether the file has them or not; "" for other meshes.
+  std::string uv_sets;
   // Some normals did not come from the file or the shape: a primitive without normals got flat
   // ones; callers tell the user. Zero or non-finite normals a file has are repaired without
   // setting it (the loader's note counts them).

@@ -114,6 +114,33 @@ TEST(GltfTexture, TheBaseColorTexturesTexCoordPicksTheSet) {
   EXPECT_NE(note_with(m, "(mesh 0 primitive 1 (TEXCOORD_1))"), "") << (m.notes.empty() ? "" : m.notes[0]);
 }
 
+// A textured primitive without the set its texture reads shows the texture as one flat colour:
+// the note that says so used to come only when another primitive had texture coordinates.
+TEST(GltfTexture, ATexturedPrimitiveWithoutItsSetIsANoteEvenWhenNoneHasOne) {
+  for (int set : {0, 1}) {
+    Fixture f;
+    textured_material(f, sn::io::Image(2, 2, 3, 0.5f), -1, set);
+    tinygltf::Primitive p = primitive(TINYGLTF_MODE_TRIANGLES, f.vec3s(kTriangle));
+    if (set == 1) p.attributes["TEXCOORD_0"] = f.vec2s({9, 9, 9, 9, 9, 9});  // not the set it reads
+    p.material = 0;
+    tinygltf::Mesh mesh;
+    mesh.primitives = {p};
+    f.model.meshes.push_back(mesh);
+    f.place(0);
+    Mesh m = load_mesh(f.write(temp_dir() / "textured_without_uvs.gltf"));
+    EXPECT_FALSE(m.has_uvs) << set;
+    EXPECT_TRUE(m.base_color) << set;
+    for (const glm::vec2& uv : m.uvs) EXPECT_EQ(uv, glm::vec2(0.0f)) << set;
+    const std::string name = "TEXCOORD_" + std::to_string(set);
+    EXPECT_EQ(m.uv_sets, name);
+    EXPECT_EQ(note_with(m, "texture coordinates"),
+              "has 1 of 1 primitives without texture coordinates (mesh 0 primitive 0 (" + name +
+                  ")): their uvs are (0, 0), where a texture shows one flat colour (the average of its four corner "
+                  "texels under repeat wrapping and linear filtering, else its top-left texel); give them texture "
+                  "coordinates in the file");
+  }
+}
+
 // Numbers glTF does not define fall back to repeat, linear and trilinear with a note naming them;
 // undefined filters (-1) fall back without one.
 TEST(GltfTexture, UndefinedSamplerNumbersFallBackWithANote) {
