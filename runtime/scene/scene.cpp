@@ -59,10 +59,19 @@ std::vector<Camera> framing_orbit(const Bounds& b, int count, double elevation, 
   check_fov(fov_y);  // before the distance that frames the mesh is computed from it
   // Framed meshes must fit the float arithmetic of the shaders: a smaller one was framed as if
   // its radius were 1e-6 (a blank picture), a larger one put the camera beyond float's range.
-  if (!distance && !(b.radius() >= 1e-6))
+  // The advice is a scale baked into the vertices (in double, on the CPU): a distance to match
+  // left the camera's near and far planes to a radius of 1e-6 and failed its depth check, and a
+  // scene transform puts the scale into the GPU's normal matrix, whose tiny entries underflow.
+  if (!distance && !(b.radius() >= 1e-6)) {
+    const std::string scale = io::number_text(1 / b.radius());
     throw std::invalid_argument("the meshes are too small to frame: their bounding sphere's radius is " +
-                                io::number_text(b.radius()) + ", below 1e-6; scale them up, or give the views a distance");
-  double r = std::max(b.radius(), 1e-6);
+                                io::number_text(b.radius()) + ", below 1e-6; scale them up by " + scale +
+                                " to a radius of 1: mesh:transformed{ scale = " + scale + " }");
+  }
+  // A ring given its distance brackets the meshes as they are: their radius clamped to 1e-6 put
+  // the far plane 1e-6 away, too far for a near plane by a mesh of 1e-11 (the camera refused it).
+  const double least = distance ? std::min(1e-6, *distance * 1e-6) : 1e-6;
+  double r = std::max(b.radius(), least);
   double d = distance ? *distance : 1.1 * r / std::sin(0.5 * fov_y * 3.14159265358979323846 / 180.0);
   if (!(glm::length(b.center()) + d + 2 * r <= 1e38))
     throw std::invalid_argument("the meshes are too large to frame: the camera would stand " + io::number_text(d) +
