@@ -58,7 +58,11 @@ glm::dmat4 make_transform(const TransformTerms& t, const glm::dvec3& default_abo
 std::string transform_key(const glm::dmat4& m) {
   std::string k;
   for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 3; ++r) k += (k.empty() ? "" : ",") + io::exact_text(m[c][r]);
+    for (int r = 0; r < 3; ++r) {
+      // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) on "," + std::string.
+      if (!k.empty()) k += ',';
+      k += io::exact_text(m[c][r]);
+    }
   return k;
 }
 
