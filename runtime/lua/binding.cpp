@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <new>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "io/hash.h"
 #include "io/text.h"
@@ -184,6 +186,67 @@ void push_definition_key(lua_State* L, const std::vector<std::string>& parts) {
   }
   const std::string key = io::hex64(f.h);
   lua_pushlstring(L, key.data(), key.size());
+}
+
+namespace {
+
+void fingerprint(lua_State* L, int idx, std::vector<const void*>& seen, std::string& out) {
+  idx = absindex(L, idx);
+  const void* self = lua_topointer(L, idx);
+  if (std::find(seen.begin(), seen.end(), self) != seen.end()) {  // recursion: a local function calling itself
+    out += "(seen " + std::to_string(std::find(seen.begin(), seen.end(), self) - seen.begin()) + ")";
+    return;
+  }
+  seen.push_back(self);
+  // string.dump from the library itself (a script may have replaced the global).
+  lua_getfield(L, LUA_REGISTRYINDEX, "_LOADED");
+  lua_getfield(L, -1, "string");
+  lua_getfield(L, -1, "dump");
+  lua_pushvalue(L, idx);
+  lua_pushboolean(L, 1);
+  if (lua_pcall(L, 2, 1, 0) == 0 && lua_type(L, -1) == LUA_TSTRING) {
+    std::size_t n = 0;
+    const char* bytes = lua_tolstring(L, -1, &n);
+    out += "function " + std::to_string(n) + ":";
+    out.append(bytes, n);
+  } else {
+    out += "function (no bytecode)";
+  }
+  lua_pop(L, 3);
+  for (int i = 1; lua_getupvalue(L, idx, i); ++i) {
+    out += "\nupvalue " + std::to_string(i) + " ";
+    switch (lua_type(L, -1)) {
+      case LUA_TNUMBER: {
+        char buf[40];
+        std::snprintf(buf, sizeof buf, "%.17g", lua_tonumber(L, -1));
+        out += buf;
+        break;
+      }
+      case LUA_TSTRING: {
+        std::size_t n = 0;
+        const char* s = lua_tolstring(L, -1, &n);
+        out += "string " + std::to_string(n) + ":";
+        out.append(s, n);
+        break;
+      }
+      case LUA_TBOOLEAN: out += lua_toboolean(L, -1) ? "true" : "false"; break;
+      case LUA_TFUNCTION:
+        if (lua_iscfunction(L, -1)) out += "C function";
+        else fingerprint(L, -1, seen, out);
+        break;
+      default: out += luaL_typename(L, -1);
+    }
+    lua_pop(L, 1);
+  }
+}
+
+}  // namespace
+
+std::string function_fingerprint(lua_State* L, int idx) {
+  std::vector<const void*> seen;
+  std::string out;
+  fingerprint(L, idx, seen, out);
+  return out;
 }
 
 std::string type_name_at(lua_State* L, int idx) {

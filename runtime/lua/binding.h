@@ -102,7 +102,19 @@ std::string type_name_at(lua_State* L, int idx);
 // Pushes a user definition's key (16 hex digits hashing `parts`, each length-prefixed), or nil
 // for a built-in (`parts` empty): what sn.lighting.key and the like return, so an experiment's
 // run records tell a changed definition from the one they were trained with.
+// The parts the keys hash are what changes what a network sees: the GLSL every gl path runs,
+// and where the cpu backend runs a Lua twin instead (an encoding's), that twin
+// (function_fingerprint). A lighting model's twin and an activation's are oracles only (data is
+// shaded on the GPU; the cpu backend runs an activation's translated GLSL), so their keys leave
+// them out.
 void push_definition_key(lua_State* L, const std::vector<std::string>& parts);
+// What identifies the Lua function at idx in a key, the same in every run and process: its
+// bytecode without debug information (string.dump(f, true): moving it to another line changes
+// nothing) and the values it closes over, which the bytecode leaves out (a twin reading
+// `local scale = 2` had one key for every scale): numbers, strings and booleans by value, Lua
+// functions the same way in turn, tables and C functions by their type only (modules such as
+// math or sn.vec3; a table of constants a twin reads is not looked into).
+std::string function_fingerprint(lua_State* L, int idx);
 
 template <class T>
 std::shared_ptr<T>& check_box(lua_State* L, int idx, const char* type) {

@@ -223,6 +223,7 @@ int w_define(lua_State* L) {
   };
   const int fn = o.push("lua");
   if (!lua_isfunction(L, fn)) throw Error(o.where("lua") + ": function expected, got " + type_name_at(L, fn));
+  d.twin_fingerprint = function_fingerprint(L, fn);
   d.f_row = lua_row_twin(L, luaL_ref(L, LUA_REGISTRYINDEX), d.name);
   d.f = [row = d.f_row](const nn::InputEncoding& e, const double* x, int j) {
     std::vector<double> out(static_cast<std::size_t>(e.out_width()));
@@ -298,15 +299,33 @@ void push_encodings(lua_State* L, const std::vector<nn::InputEncoding>& encoding
   }
 }
 
-// sn.encoding.key(name) -> a user definition's key (its GLSL and count hashed), nil for a built-in
+// sn.encoding.key(name) -> a user definition's key, nil for a built-in: everything that changes
+// what a network sees: the GLSL, the count option, include_input and its default, range, the
+// input width, the output count of every case (outputs' values, not its text) and the twin the
+// cpu backend encodes with. (Its GLSL and count alone reused a sweep's runs after include_input's
+// default, outputs or the twin changed.)
 int w_key(lua_State* L) {
   const nn::Encoding e = nn::parse_encoding(check_string(L, 1, "sn.encoding.key name"));
   const nn::EncodingDef& d = nn::encoding_def(e);
-  push_definition_key(L, nn::is_builtin(e) ? std::vector<std::string>{}
-                                           : std::vector<std::string>{d.glsl, d.count, std::to_string(d.count_min),
-                                                                      std::to_string(d.count_max),
-                                                                      std::to_string(d.count_default),
-                                                                      std::to_string(d.input_width)});
+  if (nn::is_builtin(e)) {
+    push_definition_key(L, {});
+    return 1;
+  }
+  std::string outputs;
+  const bool counted = !d.count.empty();
+  for (int w = 1; w <= 4; ++w) {
+    if (d.input_width && w != d.input_width) continue;
+    for (int n = counted ? d.count_min : 0; n <= (counted ? d.count_max : 0); ++n)
+      for (bool keep : {false, true})
+        if (!keep || d.has_include_input) outputs += " " + std::to_string(d.out_width(w, n, keep));
+  }
+  push_definition_key(L, {d.glsl, "count " + d.count + " " + std::to_string(d.count_min) + " " +
+                                      std::to_string(d.count_max) + " " + std::to_string(d.count_default),
+                          "input_width " + std::to_string(d.input_width),
+                          std::string("include_input ") + (d.has_include_input ? "yes " : "no ") +
+                              (d.include_input_default ? "true" : "false"),
+                          std::string("range ") + (d.has_range ? "yes" : "no"), "outputs" + outputs,
+                          "twin " + d.twin_fingerprint});
   return 1;
 }
 

@@ -74,6 +74,10 @@ struct EncodingDef {
   // backend encodes whole datasets with it: oneblob shares each bin edge's CDF between two bins).
   std::function<void(const InputEncoding& e, const double* x, double* out)> f_row;
   std::string origin;  // where errors in the GLSL point: "built-in encoding frequency"
+  // What identifies a user's twin (its bytecode and the values it closes over, taken at
+  // definition: lua/binding.h function_fingerprint), for its key: the cpu backend trains on the
+  // twin's values, so a twin changed alone is a new definition.
+  std::string twin_fingerprint;
   // The twins may run only on the thread that called into shadenet (a user's Lua function): rows
   // of such an encoding are encoded on that thread alone (single_threaded()).
   bool caller_thread = false;

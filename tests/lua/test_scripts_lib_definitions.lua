@@ -1,6 +1,7 @@
 -- A run's config carries the keys of the user definitions it uses (a lighting model, an
--- activation, an encoding: their GLSL hashed), so a sweep retrains a run whose definition changed
--- under the same name: it reused the old records. Built-ins add nothing (older configs stay).
+-- activation, an encoding: their GLSL hashed; an encoding's options, output counts and twin too),
+-- so a sweep retrains a run whose definition changed under the same name: it reused the old
+-- records. Built-ins add nothing (older configs stay).
 package.path = "scripts/?.lua;" .. package.path
 local sn = require "shadenet"
 local exp = require "lib.experiment"
@@ -54,6 +55,47 @@ local k2 = define_included()
 assert(k2 ~= k1, "an included file changed, a new key")
 assert(define_included { "uv" } ~= k2, "other attributes, a new key")
 assert(define_included() == k2, "the same files and attributes, the same key")
+-- An encoding's key covers all a network sees, not its GLSL and count alone (a sweep reused its
+-- runs after include_input's default changed): include_input and its default, the output counts,
+-- and the twin the cpu backend encodes with, down to a value it closes over. It is the same in
+-- every process (a child script, run twice), and the same for the same definition.
+local C = require "script_check"
+local child = C.child("definitions_encoding", [[
+local sn = require "shadenet"
+local KEEP, SCALE, CLAMP = os.getenv("KEEP") ~= "0", tonumber(os.getenv("SCALE") or "1"), os.getenv("CLAMP") == "1"
+local count = os.getenv("OUTPUTS") == "reordered" and function(w, n, keep) return w * n + (keep and w or 0) end
+                                                     or function(w, n, keep) return (keep and w or 0) + w * n end
+local twin = CLAMP and function(x, n, keep)
+  local out = {}
+  if keep then for c = 1, #x do out[#out + 1] = x[c] end end
+  for c = 1, #x do for k = 1, n do out[#out + 1] = math.min(x[c], 1e4) * k * SCALE end end
+  return out
+end or function(x, n, keep)
+  local out = {}
+  if keep then for c = 1, #x do out[#out + 1] = x[c] end end
+  for c = 1, #x do for k = 1, n do out[#out + 1] = x[c] * k * SCALE end end
+  return out
+end
+sn.encoding.define { name = "ramp_t", count = { "bands", min = 1, max = 3, default = 2 }, include_input = KEEP,
+                     outputs = count, lua = twin,
+                     glsl = "int m = keep ? w : 0; if (j < m) return x[j]; int c = (j - m) / n; return x[c] * float(j - m - c * n + 1);" }
+print("key " .. sn.encoding.key("ramp_t"))
+]])
+local function enc_key(env)
+  local out = C.ok(child, {}, env)
+  return assert(out:match("key (%x+)"), out)
+end
+local k_base = enc_key {}
+assert(enc_key {} == k_base, "the same definition in another process, the same key")
+assert(enc_key { OUTPUTS = "reordered" } == k_base, "outputs written otherwise, the same counts: the same key")
+assert(enc_key { KEEP = "0" } ~= k_base, "include_input's default changed, a new key")
+assert(enc_key { SCALE = "1.0000001" } ~= k_base, "a value the twin closes over changed, a new key")
+assert(enc_key { CLAMP = "1" } ~= k_base, "the twin's code changed (beyond where the GLSL is compared), a new key")
+-- A run's config records it.
+loadfile(child)()
+local enc_run = exp.run { id = "r", hidden = { 4 }, seed = 1, data = E:data_desc { model = "phong" },
+                          encoding = { normal = "ramp_t" } }.config
+assert(enc_run.definitions["encoding ramp_t"] == k_base, json.encode(enc_run.definitions))
 -- A mesh file rewritten under the same path: another mesh_key, so its runs are trained again.
 local mesh_path = dir .. "/mesh.glb"
 sn.mesh.sphere {}:save(mesh_path)
