@@ -8,6 +8,7 @@
 #include <string>
 
 #include "nn/cpu_net.h"
+#include "nn/encoding_define.h"
 #include "io/parallel.h"
 #include "nn/shuffle.h"
 
@@ -52,6 +53,10 @@ std::unique_ptr<EncodedRows> encode_data(const std::vector<InputEncoding>& encs,
     float* out = (train ? r->train_rows.data() : r->val_rows.data()) + first * w;
     encode_rows(encs, d.inputs, x, count, out);
   });
+  // A user's twin against its GLSL on every row this backend trains on (the definition checked
+  // sample inputs only); built-ins are held to theirs by the tests.
+  check_on_rows(encs, d.inputs, d.train_x.data(), r->train_rows.data(), d.train_count(), "training row");
+  check_on_rows(encs, d.inputs, d.val_x.data(), r->val_rows.data(), d.val_count(), "validation row");
   r->train = r->train_rows.data();
   r->val = r->val_rows.data();
   return r;

@@ -156,6 +156,28 @@ local before = sn.mlp { inputs = { "uv" }, hidden = { 4 }, encoding = { uv = "du
 dup(2)
 ok, err = pcall(before.forward, before, { 0.1, 0.2 })
 assert(not ok and err:find("27 parameters, but its spec needs 35 (an encoding redefined with another output count?)", 1, true), err)
+-- Past the definition's sample inputs (+-300), the data decides: the cpu backend, which trains on
+-- the twin's values, holds the twin to the GLSL on every row first. A GLSL that clamps at 1000
+-- and a twin that does not were taken, and a world position of 1040 trained 1.04 on cpu and 1 on
+-- gl; now the error names the defining line, the row's input and both values.
+local far_line = debug.getinfo(1, "l").currentline + 1
+sn.encoding.define { name = "far", outputs = function(w) return w end, glsl = "return clamp(x[j], -1000.0, 1000.0) / 1000.0;",
+                     lua = function(x) local o = {} for i = 1, #x do o[i] = x[i] / 1000 end return o end }
+local function far_data(top)
+  local xs, ys = {}, {}
+  for i = 1, 50 do xs[i], ys[i] = { top * i / 50, 0.5, -3 }, { 0.1, 0.2, 0.3 } end
+  return sn.dataset { x = xs, y = ys, input_names = { "world_position" } }
+end
+local function far_net() return sn.mlp { inputs = { "world_position" }, hidden = { 4 }, encoding = { world_position = "far" } } end
+ok, err = pcall(sn.train, { nets = far_net(), data = far_data(2000), epochs = 1, backend = "cpu" })
+local at, v, twin = tostring(err):match("encoding 'far' %(defined at ([^)]*)%) of input 'world_position': on %a+ row %d+, "
+                                        .. "world_position = {(%d+), 0%.5, %-3}, its GLSL gives 1 as output 1, its Lua twin ([%d.]+); "
+                                        .. "the cpu backend trains on the twin's values, gl on the GLSL's")
+assert(not ok and at == debug.getinfo(1, "S").short_src .. ":" .. far_line and tonumber(v) > 1000 and
+       math.abs(tonumber(twin) - tonumber(v) / 1000) < 1e-6, tostring(err))
+-- Data within the range where both agree trains.
+assert(sn.train { nets = far_net(), data = far_data(900), epochs = 1, backend = "cpu" }[1].val_mse[1] >= 0)
+
 -- A job encodes its rows once per distinct encoding, not once more per network for the
 -- untrained MSE and the diagnostics: four nets cost the Lua twin what one does.
 local calls = 0

@@ -11,6 +11,7 @@
 #include "nn/cpu_net.h"
 #include "nn/cpu_trainer.h"
 #include "nn/encoding.h"
+#include "nn/encoding_define.h"
 #include "nn/gl_forward.h"
 #include "nn/gl_trainer.h"
 #include "nn/init.h"
@@ -135,6 +136,17 @@ TEST(EncodingRegistry, NamesAndErrors) {
   d.out_width = [](int w, int, bool) { return w; };
   d.f = [](const InputEncoding&, const double*, int) { return 0.0; };
   EXPECT_THROW(register_encoding(d), std::invalid_argument);
+}
+
+// The built-ins pass the checks a user's definition must (nn/encoding_define.h): their GLSL
+// agrees with their twins at every width and count, on inputs out to +-300 (frequency's and
+// triangle_wave's high bands reduce exactly in float; sh's cubics keep float's relative accuracy).
+TEST(EncodingRegistry, BuiltinsPassTheDefinitionChecks) {
+  sn::gl::current();
+  for (int id = 0; id < int(BuiltinEncoding::count); ++id) {
+    SCOPED_TRACE(encoding_name(Encoding(id)));
+    EXPECT_NO_THROW(check_definition(Encoding(id)));
+  }
 }
 
 TEST(EncodingTwins, ValuesWorkedOutByHand) {
