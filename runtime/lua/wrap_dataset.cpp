@@ -13,6 +13,7 @@
 #include "data/dataset_file.h"
 #include "data/input_layout.h"
 #include "nn/shuffle.h"
+#include "scene/gbuffer.h"
 
 namespace sn::lua {
 
@@ -316,6 +317,13 @@ int w_load(lua_State* L) {
   return 1;
 }
 
+// sn.dataset.attributes() -> the G-buffer attributes a dataset's inputs may name, in the
+// runtime's one list (scripts check names against it before building anything)
+int w_attributes(lua_State* L) {
+  push_strings(L, scene::gbuffer_attribute_names());
+  return 1;
+}
+
 }  // namespace
 
 void open_dataset(lua_State* L) {
@@ -336,6 +344,8 @@ void open_dataset(lua_State* L) {
   lua_setfield(L, -2, "concat");
   lua_pushcfunction(L, wrap<w_load>);
   lua_setfield(L, -2, "load");
+  lua_pushcfunction(L, wrap<w_attributes>);
+  lua_setfield(L, -2, "attributes");
   lua_setfield(L, -2, "dataset");
 }
 

@@ -241,10 +241,10 @@ exp.model_params = {
 -- E:data_desc{ model = "phong", inputs = {"normal", "view"}, color = "rgb", samples = N, split = 0.8,
 --              seed = 1, data = "poses"|"cloth", mesh, size, views, elevation, light, poses }
 --   -> the dataset's description (what a run's config records); given a description, returns it.
-exp.data_keys = { "model", "inputs", "color", "samples", "split", "seed", "data", "mesh", "size", "views",
+exp.data_keys = { "model", "inputs", "vary", "color", "samples", "split", "seed", "data", "mesh", "size", "views",
                   "elevation", "light", "poses" }
 exp.desc_required = { "model", "truth", "inputs", "color", "samples", "split", "seed", "scene" }
-exp.desc_keys = { "model", "truth", "truth_definition", "inputs", "color", "samples", "split", "seed", "scene",
+exp.desc_keys = { "model", "truth", "truth_definition", "inputs", "vary", "color", "samples", "split", "seed", "scene",
                   "mesh_key" }
 -- The training mesh's content key (mesh:key()), a file read once per process: a mesh rewritten
 -- under the same path is new data, and its runs are trained again.
@@ -254,12 +254,41 @@ local function mesh_key(mesh)
   mesh_keys[mesh] = mesh_keys[mesh] or sn.mesh.load(mesh):key()
   return mesh_keys[mesh]
 end
+-- The inputs a description names: G-buffer attributes (the runtime's list) and the parameters it
+-- varies, each of those among the inputs; checked here, at the script's line, before anything is
+-- rendered (a name the library did not know failed after the dataset was built).
+local function check_inputs(inputs, vary)
+  if type(inputs) ~= "table" or #inputs == 0 then
+    options.error("E:data_desc option 'inputs': a list of input names expected, e.g. { \"normal\", \"view\" }")
+  end
+  if vary ~= nil and type(vary) ~= "table" then
+    options.error("E:data_desc option 'vary': { parameter = {min, max}, ... } expected, got " .. type(vary))
+  end
+  local valid = sn.dataset.attributes()
+  local known = {}
+  for _, a in ipairs(valid) do known[a] = true end
+  for _, a in ipairs(inputs) do
+    if not known[a] and not (vary and vary[a]) then
+      options.error(string.format("E:data_desc option 'inputs': '%s' is not a G-buffer attribute (%s) nor a parameter "
+                                  .. "in vary", tostring(a), table.concat(valid, ", ")))
+    end
+  end
+  for p in pairs(vary or {}) do
+    local listed = false
+    for _, a in ipairs(inputs) do listed = listed or a == p end
+    if not listed then
+      options.error(string.format("E:data_desc option 'vary': the varied parameter '%s' must be in inputs too "
+                                  .. "(where the network reads it)", tostring(p)))
+    end
+  end
+end
 function E:data_desc(o)
   o = o or {}
   if type(o) == "table" and o.scene then  -- already a description
     return options.check(o, "E:data_desc (a description)", exp.desc_keys, exp.desc_required)
   end
   options.check(o, "E:data_desc", exp.data_keys)
+  check_inputs(o.inputs or { "normal", "view" }, o.vary)
   local truth = exp.model(o.model or "phong")
   -- A Lighting value is recorded as its name and parameters (a run's config is JSON).
   local model = type(o.model) == "userdata" and { name = truth:name(), params = truth:params() } or o.model or "phong"
@@ -273,6 +302,7 @@ function E:data_desc(o)
     -- runs' records were reused.
     truth_definition = sn.lighting.key(truth:name()),
     inputs = o.inputs or { "normal", "view" },
+    vary = o.vary,                         -- nil (none) keeps older descriptions' keys
     color = o.color or "rgb",
     samples = o.samples or self:pick(8000, 64149),
     split = o.split or 0.8,
@@ -312,7 +342,7 @@ function E:data(o)
   if cached then return cached.data, cached.desc end
   local scene = self:scene(d.scene)
   local data = self:time("dataset", function()
-    return scene:dataset { inputs = d.inputs, target = exp.model(d.model), color = d.color,
+    return scene:dataset { inputs = d.inputs, vary = d.vary, target = exp.model(d.model), color = d.color,
                            samples = d.samples, split = d.split, seed = d.seed }
   end)
   local train, val = data:counts()
@@ -583,22 +613,13 @@ function exp.run(o)
   }
 end
 
--- The number of inputs of the attributes a dataset reads.
-exp.attribute_width = { normal = 3, view = 3, position = 3, uv = 2, base_color = 3 }
-function exp.input_count(inputs)
-  local n = 0
-  for _, a in ipairs(inputs) do
-    n = n + (exp.attribute_width[a] or error("unknown input attribute '" .. tostring(a) .. "'", 0))
-  end
-  return n
-end
-
--- A fresh network for a run's config (its seed picks the initial weights).
+-- A fresh network for a run's config (its seed picks the initial weights). Its inputs by name:
+-- sn.mlp takes their widths from the runtime's attributes (a varied parameter is one column).
 function exp.make_net(c)
-  return sn.mlp { inputs = exp.input_count(c.data.inputs), hidden = c.hidden, outputs = c.outputs,
+  return sn.mlp { inputs = c.data.inputs, hidden = c.hidden, outputs = c.outputs,
                   activation = c.activation, slope = c.slope, omega = c.omega, alpha = c.alpha,
                   output_activation = c.output_activation, init = c.init, color = c.color, seed = c.seed,
-                  input_names = c.data.inputs, encoding = encoding_from_config(c.encoding) }
+                  encoding = encoding_from_config(c.encoding) }
 end
 
 -- The trained network of a finished record (needs keep_params in its config). `id` names the

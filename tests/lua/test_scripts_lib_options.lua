@@ -41,7 +41,7 @@ fails(function() return sn.trian end, "sn.trian is not part of shadenet (did you
 local E = exp.start("options_check", { "--quick", "--out", tmp .. "/x" })
 fails(function() E:data_desc { model = "phong", sampels = 100 } end,
       "E:data_desc: unknown option 'sampels'", "did you mean samples?",
-      "(valid: model, inputs, color, samples, split, seed, data, mesh")
+      "(valid: model, inputs, vary, color, samples, split, seed, data, mesh")
 fails(function() E:data_desc { modle = "ggx" } end, "unknown option 'modle'", "did you mean model?")
 fails(function() E:data { model = "phong", input = { "normal" } } end, "unknown option 'input'", "did you mean inputs?")
 fails(function() E:baseline { model = "phong", colour = "hsv" } end, "unknown option 'colour'", "did you mean color?")
