@@ -944,9 +944,40 @@ end
 
 function exp.crop(img, box) return sn.image.crop(img, box[1], box[2], box[3], box[4]) end
 
+-- E:compare's nets and meshes: each entry named ({ net = Mlp, label = "8x12" }) or its values in
+-- the order of `keys` ({ Mlp, "8x12" }, as the docs first showed them), as named tables.
+local function entries(list, what, keys, required)
+  if type(list) ~= "table" then options.error(string.format("%s: a list expected, got %s", what, type(list))) end
+  local out = {}
+  for i, e in ipairs(list) do
+    local at = string.format("%s[%d]", what, i)
+    if type(e) ~= "table" then
+      options.error(string.format("%s: { %s } expected, got %s", at, table.concat(keys, ", "), type(e)))
+    end
+    local named = {}
+    for k, v in pairs(e) do
+      if type(k) == "number" then
+        if not keys[k] then
+          options.error(string.format("%s: at most %d values in order (%s), got one at [%s]", at, #keys,
+                                      table.concat(keys, ", "), tostring(k)))
+        end
+        if e[keys[k]] ~= nil then
+          options.error(string.format("%s: '%s' given twice, as [%d] and by name", at, keys[k], k))
+        end
+        named[keys[k]] = v
+      else
+        named[k] = v
+      end
+    end
+    out[i] = options.check(named, at, keys, required)
+  end
+  return out
+end
+
 -- E:compare{ file = "figures/NAME.png", title = "...", model = "ggx" (the ground truth),
---            nets = { {net = Mlp, label = "8x12"}, ... },
---            meshes = { {mesh = path, label = "training mesh", views = {1, 3}}, ... },
+--            nets = { {net = Mlp, label = "8x12"}, ... } (or { {Mlp, "8x12"}, ... }),
+--            meshes = { {mesh = path, label = "training mesh", views = {1, 3}, view_count = 8}, ... }
+--              (or { {path, "training mesh", {1, 3}, 8}, ... }),
 --            size = {w, h}, view_count = 8, max = error at the top of the colour bar (default: the
 --            largest error on that mesh, shared by every heatmap of the mesh so they compare),
 --            colour_shift = true (each row also gets exp.colour_shift(network, truth)) }
@@ -957,7 +988,9 @@ function exp.crop(img, box) return sn.image.crop(img, box[1], box[2], box[3], bo
 exp.compare_keys = { "file", "title", "model", "nets", "meshes", "size", "view_count", "max", "colour_shift" }
 function E:compare(o)
   options.check(o, "E:compare", exp.compare_keys, { "file", "model", "nets", "meshes" })
-  options.check_list(o.meshes, "E:compare meshes", { "mesh", "label", "views", "view_count" }, { "mesh", "label" })
+  o = setmetatable({ nets = entries(o.nets, "E:compare nets", { "net", "label" }, { "net", "label" }),
+                     meshes = entries(o.meshes, "E:compare meshes", { "mesh", "label", "views", "view_count" },
+                                      { "mesh", "label" }) }, { __index = o })
   local truth_model = exp.model(o.model)
   local size = o.size or self:pick({ 200, 150 }, { 480, 360 })
   local renders, rows = {}, {}

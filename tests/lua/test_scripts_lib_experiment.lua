@@ -2,7 +2,8 @@
 -- world_position or a varied parameter train in a sweep (the library kept its own list of five
 -- attributes, and failed "unknown input attribute 'tangent'" after building the dataset); a name
 -- that is neither an attribute nor a varied parameter is an error at the script's line before
--- anything is rendered.
+-- anything is rendered. E:compare takes its nets and meshes named or in order, as the docs show
+-- both (the order alone failed "options must be named").
 package.path = "scripts/?.lua;" .. package.path
 local sn = require "shadenet"
 local exp = require "lib.experiment"
@@ -37,4 +38,21 @@ local data = E:data(desc)
 assert(data:inputs() == 3 * 5 + 2 + 1 and table.concat(data:input_names(), " ") == table.concat(inputs, " "))
 print(("six attributes and a varied parameter: %d inputs, val MSE %.4g"):format(data:inputs(), rec.result.best_val_mse))
 
+-- E:compare: named entries and entries in order give the same rows.
+local phong = sn.mlp { inputs = { "normal", "view" }, hidden = { 4 }, seed = 3 }
+local sphere = sn.mesh.sphere {}
+local function compare(nets, meshes, file)
+  return E:compare { file = file, model = "phong", nets = nets, meshes = meshes, size = { 40, 30 } }
+end
+local named = compare({ { net = phong, label = "net" } }, { { mesh = sphere, label = "sphere", views = { 2 }, view_count = 4 } },
+                      "figures/named.png")
+local ordered = compare({ { phong, "net" } }, { { sphere, "sphere", { 2 }, 4 } }, "figures/ordered.png")
+assert(#named == 1 and #ordered == 1 and named[1].view == 2 and ordered[1].view == 2 and named[1].mse == ordered[1].mse,
+       ("named %s, in order %s"):format(tostring(named[1] and named[1].mse), tostring(ordered[1] and ordered[1].mse)))
+line = debug.getinfo(1, "l").currentline + 1
+ok, err = pcall(function() return compare({ { phong, "net", "extra" } }, { { sphere, "sphere" } }, "figures/x.png") end)
+assert(not ok and err:find(here .. ":" .. line .. ": E:compare nets[1]: at most 2 values in order (net, label), got one at [3]",
+                           1, true), tostring(err))
+ok, err = pcall(function() return compare({ { phong, label = "a", net = phong } }, { { sphere, "sphere" } }, "figures/x.png") end)
+assert(not ok and err:find("E:compare nets[1]: 'net' given twice, as [1] and by name", 1, true), tostring(err))
 print("ok")
