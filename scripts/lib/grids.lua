@@ -33,18 +33,22 @@ function M.run(E, o)
   }
   local rows = {}
   for _, fig in ipairs(o.figures) do
-    local nets = {}
+    local nets, ids = {}, {}  -- E:compare's entries take net and label only
     for _, n in ipairs(fig.nets) do
       local rec = records[n.id]
-      if rec then nets[#nets + 1] = { net = exp.net_from_record(rec), label = n.label, id = n.id } end
+      if rec then
+        nets[#nets + 1] = { net = exp.net_from_record(rec), label = n.label }
+        ids[#nets] = n.id
+      end
     end
     if #nets > 0 then
       -- 640 x 480 in full mode: the cropped panels stay above 256 pixels wide, enough to see the effects.
       local mses = E:compare { file = fig.file, title = fig.title, model = o.model, nets = nets, meshes = meshes,
                                colour_shift = true, size = E:pick({ 200, 150 }, { 640, 480 }) }
-      for _, n in ipairs(nets) do
-        local row = { figure = fig.title:match("Figure ([%d.]+)"), network = n.label, hidden = n.id,
-                      val_mse = records[n.id].result.best_val_mse }
+      for k, n in ipairs(nets) do
+        local id = ids[k]
+        local row = { figure = fig.title:match("Figure ([%d.]+)"), network = n.label, hidden = id,
+                      val_mse = records[id].result.best_val_mse }
         for _, m in ipairs(mses) do
           if m.network == n.label then
             local key = m.mesh == "training mesh" and "train_mesh_mse" or "test_mesh_mse"
@@ -53,7 +57,7 @@ function M.run(E, o)
             if m.mesh == "training mesh" then row.colour_shift = (row.colour_shift or 0) + m.colour_shift / views end
           end
         end
-        rows[#rows + 1] = exp.with_unseen(row, records, { n.id })
+        rows[#rows + 1] = exp.with_unseen(row, records, { id })
       end
     end
   end
