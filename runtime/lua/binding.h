@@ -113,7 +113,7 @@ void push_definition_key(lua_State* L, const std::vector<std::string>& parts);
 // nothing) and the values it closes over, which the bytecode leaves out (a twin reading
 // `local scale = 2` had one key for every scale): numbers, strings and booleans by value, Lua
 // functions the same way in turn, tables and C functions by their type only (modules such as
-// math or sn.vec3; a table of constants a twin reads is not looked into).
+// sn.vec3; a table of constants a twin reads is not looked into, nor are the globals it calls).
 std::string function_fingerprint(lua_State* L, int idx);
 
 template <class T>
