@@ -1,5 +1,8 @@
 #include "data/dataset_file.h"
 
+#include <unistd.h>
+
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <filesystem>
@@ -8,6 +11,7 @@
 
 #include "data/input_layout.h"
 #include "io/atomic_write.h"
+#include "io/file_lock.h"
 #include "io/hash.h"
 #include "io/npy.h"
 #include "io/read_file.h"
@@ -138,6 +142,65 @@ std::string npy_of(const std::vector<float>& train, const std::vector<float>& va
   return out;
 }
 
+// Where an export keeps an old array while it replaces it: ".NAME.previous" beside it.
+std::string kept_name(const std::string& array) {
+  const fs::path a(array);
+  return (a.parent_path() / ("." + a.filename().string() + ".previous")).string();
+}
+
+// Removes the kept arrays once the new sidecar is in place (or a killed export's, once a later
+// one's is).
+void remove_kept(const DatasetPaths& p) {
+  std::error_code ec;
+  fs::remove(kept_name(p.inputs), ec);
+  fs::remove(kept_name(p.targets), ec);
+}
+
+// Before an export renames its arrays over the old ones: the old arrays get a second name
+// (a hard link, ".NAME.previous") and the old sidecar is rewritten to name them there, so until
+// the new sidecar replaces it the old export loads whole, whatever is renamed meanwhile. An old
+// sidecar that cannot be read has nothing to keep; where links cannot be made (a file system
+// without them) the old sidecar stays as it is and a kill between the renames leaves it over
+// new arrays, which loading refuses (content_key).
+void keep_old_export(const DatasetPaths& p, const fs::path& folder) {
+  Json old;
+  try {
+    if (!fs::is_regular_file(fs::symlink_status(p.main))) return;
+    old = Json::parse(io::read_file(p.main, "dataset"));
+  } catch (const std::exception&) {
+    return;
+  }
+  if (!old.is_object()) return;
+  std::vector<std::string> made;
+  bool all = true;
+  for (const char* group : {"inputs", "targets"}) {
+    auto g = old.find(group);
+    if (g == old.end() || !g->is_object() || !g->contains("file") || !(*g)["file"].is_string()) continue;
+    const fs::path at = (folder / (*g)["file"].get<std::string>()).lexically_normal();
+    const bool replaced = at == fs::path(p.inputs).lexically_normal() || at == fs::path(p.targets).lexically_normal();
+    if (!replaced) continue;  // the new export leaves that file alone
+    const std::string kept = kept_name(at.string());
+    std::error_code ec;
+    fs::remove(kept, ec);
+    if (::link(at.c_str(), kept.c_str()) != 0) {
+      all = all && errno == ENOENT;  // an array already missing: that export was broken before
+      continue;
+    }
+    made.push_back(kept);
+    (*g)["file"] = fs::path(kept).filename().string();
+  }
+  if (!all || made.empty()) {
+    for (const auto& k : made) ::unlink(k.c_str());
+    return;
+  }
+  try {
+    io::write_file_atomic(p.main, old.dump(2) + "\n", "dataset");
+  } catch (...) {  // (a full disk): the old sidecar stands as it was, over its arrays
+    for (const auto& k : made) ::unlink(k.c_str());
+    throw;
+  }
+}
+
 // Returns the files written (through a link: where it leads).
 DatasetPaths write_numpy(const Dataset& d, const DatasetPaths& given) {
   // Through a link, where it leads: the sidecar there, the arrays beside it and named after it,
@@ -160,6 +223,9 @@ DatasetPaths write_numpy(const Dataset& d, const DatasetPaths& given) {
     side["inputs"]["conditions"] = c;
   }
   side["source_key"] = d.key;
+  // The rows' own key, checked on loading: arrays from another export (one killed part-way,
+  // files copied together by hand) are refused, never trained on as a mix.
+  side["content_key"] = content_key(d);
   const std::string sidecar = side.dump(2) + "\n";
 
   std::error_code ec;
@@ -168,18 +234,26 @@ DatasetPaths write_numpy(const Dataset& d, const DatasetPaths& given) {
   if (fs::exists(st) && !fs::is_regular_file(st))
     throw std::runtime_error("cannot write dataset '" + p.main + "': " +
                              (fs::is_directory(st) ? "it is a directory" : "not a regular file"));
+  // One export at a time in a folder, and no load meanwhile (each waits for the other): two
+  // exports to one path interleaved their renames, and a reader took one's inputs with the
+  // other's targets.
+  const fs::path folder = fs::path(p.main).has_parent_path() ? fs::path(p.main).parent_path() : fs::path(".");
+  fs::create_directories(folder, ec);  // (a failure is the writing's to report)
+  const io::FileLock lock = io::FileLock::acquire(folder.string(), io::FileLock::Mode::exclusive);
+  // What a killed export of these files left: its temporaries (under the lock nobody writes
+  // them now; without one, only those a minute old) and the old arrays it kept.
+  const std::vector<std::string> names = {fs::path(p.inputs).filename().string(),
+                                          fs::path(p.targets).filename().string(), fs::path(p.main).filename().string()};
+  io::remove_stale_temporaries(folder.string(), lock.held() ? 0 : 60, names);
   // All three are written before any replaces its old file: a failure there (a full disk) leaves
-  // the old export whole. Then the old sidecar goes, the arrays are renamed and the sidecar last,
-  // so a rename that fails (rare: the folder removed meanwhile; a folder in an array's place is
-  // refused before anything is written) leaves no sidecar pointing at a mix of old and new arrays.
+  // the old export whole. Then the old export is kept under other names (keep_old_export) while
+  // the arrays are renamed and the sidecar last, so a kill or a failed rename at any moment
+  // leaves a sidecar whose arrays are its own: the old export, or the new one.
   io::write_files_atomic({{p.inputs, npy_of(d.train_x, d.val_x, rows, d.inputs)},
                           {p.targets, npy_of(d.train_y, d.val_y, rows, d.outputs)},
                           {p.main, sidecar}},
-                         "dataset", [&] {
-                           if (fs::exists(st) && !fs::remove(p.main, ec))
-                             throw std::runtime_error("cannot write dataset '" + p.main +
-                                                      "': cannot remove the old sidecar: " + ec.message());
-                         });
+                         "dataset", [&] { keep_old_export(p, folder); });
+  remove_kept(p);
   return p;
 }
 
@@ -231,6 +305,10 @@ struct Sidecar {
 };
 
 std::shared_ptr<Dataset> load_numpy(const DatasetPaths& p) {
+  // No export replaces the files while they are read (write_numpy).
+  const fs::path real = real_sidecar(p.main);
+  const io::FileLock lock =
+      io::FileLock::acquire(real.has_parent_path() ? real.parent_path().string() : ".", io::FileLock::Mode::shared);
   const std::string text = io::read_file(p.main, "dataset");
   Json root;
   try {
@@ -283,7 +361,7 @@ std::shared_ptr<Dataset> load_numpy(const DatasetPaths& p) {
   if (train > kMaxRows || val > kMaxRows) s.fail("more than 2^31 rows in a set");
   s.text(nullptr, "source_key", "");  // provenance for people; the loaded key is the content's
 
-  const fs::path folder = fs::path(real_sidecar(p.main)).parent_path();
+  const fs::path folder = real.parent_path();
   auto array = [&](const char* group, uint64_t width) {
     const std::string file = s.text(group, "file");
     if (file.empty()) s.fail(std::string("field '") + group + ".file' is empty");
@@ -303,6 +381,13 @@ std::shared_ptr<Dataset> load_numpy(const DatasetPaths& p) {
   d->train_y.assign(y.data.begin(), y.data.begin() + train * out_w);
   d->val_y.assign(y.data.begin() + train * out_w, y.data.end());
   d->key = content_key(*d);
+  const std::string exported = s.text(nullptr, "content_key", "");  // absent: written before it was, or elsewhere
+  if (!exported.empty() && exported != d->key)
+    s.fail("its arrays " + fs::path(s.text("inputs", "file")).filename().string() + " and " +
+           fs::path(s.text("targets", "file")).filename().string() +
+           " do not hold the rows it was exported with (content_key " + exported + "; the arrays give " + d->key +
+           "): they come from another export (one killed part-way, or files copied together); export the dataset "
+           "again (if the arrays were changed on purpose, remove content_key from the sidecar)");
   return d;
 }
 

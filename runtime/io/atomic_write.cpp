@@ -144,14 +144,18 @@ void write_into(const Target& t, const std::string& bytes, const std::string& wh
 
 // ".NAME.tmpDIGITS" beside `target` (rename is atomic only within one file system), NAME cut short
 // (not inside a UTF-8 character) so that the whole fits NAME_MAX as any legal name does.
-std::string temporary_name(const fs::path& target) {
-  std::string name = target.filename().string();
+std::string temporary_stem(std::string name) {
   const std::size_t keep = kNameMax - 1 - 4 - kTempDigits;
   if (name.size() > keep) {
     std::size_t cut = keep;
     while (cut > 0 && (static_cast<unsigned char>(name[cut]) & 0xC0) == 0x80) --cut;
     name.resize(cut);
   }
+  return name;
+}
+
+std::string temporary_name(const fs::path& target) {
+  const std::string name = temporary_stem(target.filename().string());
   static thread_local std::random_device entropy;
   const uint64_t r = (uint64_t(entropy()) << 32) | entropy();
   std::string digits = std::to_string(r % 1000000000000ull);
@@ -275,9 +279,11 @@ void write_files_atomic(const std::vector<std::pair<std::string, std::string>>& 
   }
 }
 
-int remove_stale_temporaries(const std::string& dir, double min_age_seconds) {
+int remove_stale_temporaries(const std::string& dir, double min_age_seconds, const std::vector<std::string>& names) {
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) return 0;
+  std::set<std::string> stems;
+  for (const auto& n : names) stems.insert(temporary_stem(n));
   const auto now = fs::file_time_type::clock::now();
   int removed = 0;
   for (const auto& e : fs::directory_iterator(dir, ec)) {
@@ -286,6 +292,7 @@ int remove_stale_temporaries(const std::string& dir, double min_age_seconds) {
     if (name.size() < 2 || name[0] != '.' || at == std::string::npos || at + 4 == name.size() ||
         name.find_first_not_of("0123456789", at + 4) != std::string::npos || !e.is_regular_file(ec))
       continue;
+    if (!names.empty() && !stems.count(name.substr(1, at - 1))) continue;
     const auto written = fs::last_write_time(e.path(), ec);
     if (ec || std::chrono::duration<double>(now - written).count() < min_age_seconds) continue;
     if (fs::remove(e.path(), ec)) ++removed;

@@ -30,7 +30,7 @@ void write_file_atomic(const std::string& path, const std::string& bytes, const 
 // folder removed meanwhile) leaves the files before it new and the rest old, each whole. Streams
 // and devices are written at their turn among the renames.
 // `before_renames`, when given, runs once every temporary file is written and flushed (a dataset
-// export removes its old sidecar there, so a rename that fails cannot leave it beside new arrays).
+// export keeps its old arrays under other names there, data/dataset_file.cpp).
 void write_files_atomic(const std::vector<std::pair<std::string, std::string>>& files, const std::string& what = "file",
                         const std::function<void()>& before_renames = {});
 
@@ -43,8 +43,10 @@ std::string through_links(const std::string& path);
 // Removes from `dir` the temporary files a killed writer left (".NAME.tmpDIGITS", as the functions
 // above name them: created anew with random digits, NAME cut short where the whole would pass
 // NAME_MAX) that are older than `min_age_seconds`: a live writer's lasts milliseconds, and
-// another process (a shard of the same sweep) may be writing beside us. Returns how many.
-// Nothing happens when `dir` is not a folder.
-int remove_stale_temporaries(const std::string& dir, double min_age_seconds = 60);
+// another process (a shard of the same sweep) may be writing beside us. With `names`, only the
+// temporaries of files so named (a dataset export's three). Returns how many. Nothing happens
+// when `dir` is not a folder.
+int remove_stale_temporaries(const std::string& dir, double min_age_seconds = 60,
+                             const std::vector<std::string>& names = {});
 
 }  // namespace sn::io

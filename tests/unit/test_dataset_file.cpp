@@ -2,10 +2,14 @@
 // writes it, round trips that keep every bit, and a clear error for every damaged file.
 #include <gtest/gtest.h>
 
+#include <signal.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <cfloat>
 #include <cmath>
+#include <chrono>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -372,6 +376,134 @@ TEST(DatasetFile, ExportThroughALinkGoesWhereItPoints) {
     expect_equal(d, *load_dataset(link.string()));
     expect_equal(d, *load_dataset((real / "cloth.json").string()));
   }
+}
+
+// Arrays beside a sidecar that are not the ones exported with it (another export's, copied in by
+// hand or left by a kill) are refused by their content key: they loaded as a mix of two datasets.
+TEST(DatasetFile, ArraysFromAnotherExportAreRefused) {
+  const std::string at = scratch("mixed/m.json");
+  Dataset a = awkward(), b = awkward();
+  b.train_y[0] = 0.75f;
+  const DatasetPaths p = export_dataset(a, at);
+  const std::string a_targets = io::read_file(p.targets);
+  export_dataset(b, at);
+  expect_equal(b, *load_dataset(at));
+  write(p.targets, a_targets);
+  const std::string err = message_of([&] { load_dataset(at); });
+  EXPECT_EQ(err.rfind(at + ": its arrays m.inputs.npy and m.targets.npy do not hold the rows it was exported with "
+                           "(content_key file-", 0), 0u) << err;
+  EXPECT_NE(err.find("export the dataset again (if the arrays were changed on purpose, remove content_key from the "
+                     "sidecar)"), std::string::npos) << err;
+  // A sidecar without the key (written by another tool, or before it was recorded) loads as before.
+  std::string side = io::read_file(at);
+  const auto k = side.find(",\n  \"content_key\"");
+  ASSERT_NE(k, std::string::npos);
+  write(at, side.erase(k, side.find('"', side.find(": \"", k) + 3) + 1 - k));
+  EXPECT_EQ(load_dataset(at)->train_y[0], a.train_y[0]);
+}
+
+// Two datasets of `rows` rows that differ in every row, and tell which one a loaded set is.
+Dataset numbered_rows(std::size_t rows, float tag) {
+  Dataset d;
+  d.inputs = 6;
+  d.outputs = 3;
+  d.key = "dataset-test";
+  for (std::size_t r = 0; r < rows; ++r) {
+    auto& x = r < rows * 4 / 5 ? d.train_x : d.val_x;
+    auto& y = r < rows * 4 / 5 ? d.train_y : d.val_y;
+    for (int k = 0; k < 6; ++k) x.push_back(tag + float(r % 1000) * 1e-3f + float(k));
+    for (int k = 0; k < 3; ++k) y.push_back(tag * 2 + float(r % 977) * 1e-3f);
+  }
+  return d;
+}
+
+// A child process that exports `d` (and `e`, alternately, when given) to `at` until it is killed.
+pid_t exporting(const Dataset& d, const Dataset* e, const std::string& at) {
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    for (long i = 0;; ++i) {
+      try {
+        export_dataset(e && i % 2 ? *e : d, at);
+      } catch (...) {
+        ::_exit(3);
+      }
+    }
+  }
+  return pid;
+}
+
+void stop(pid_t pid) {
+  ::kill(pid, SIGKILL);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  EXPECT_TRUE(WIFSIGNALED(status)) << "the exporter ended by itself (status " << status << "): an export failed";
+}
+
+// Which of a and b the dataset at `at` is: 'a', 'b', or '?' (a mix, or an error: `why`).
+char which(const std::string& at, const Dataset& a, const Dataset& b, std::string* why) {
+  try {
+    auto l = load_dataset(at);
+    const bool is_a = same_bits(l->train_x, a.train_x) && same_bits(l->val_y, a.val_y);
+    const bool is_b = same_bits(l->train_x, b.train_x) && same_bits(l->val_y, b.val_y);
+    if (is_a || is_b) return is_a ? 'a' : 'b';
+    *why = "a mix of both exports";
+  } catch (const std::exception& ex) {
+    *why = ex.what();
+  }
+  return '?';
+}
+
+// SIGKILL at any moment of re-exports leaves a whole export, the old or the new: the old sidecar
+// was removed before the renames, and a third of kills left none. The next export removes what
+// the killed ones left (their temporaries, the old arrays kept aside).
+TEST(DatasetFile, AKillAtAnyMomentLeavesAWholeExport) {
+  const std::string at = scratch("killed/k.json");
+  const Dataset a = numbered_rows(100000, 1), b = numbered_rows(100000, 2);
+  export_dataset(a, at);
+  const auto t0 = std::chrono::steady_clock::now();
+  export_dataset(b, at);
+  const double one = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  int bad = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    const pid_t pid = exporting(a, &b, at);
+    // Kill times spread over about two exports, a different phase each trial.
+    ::usleep(useconds_t(1e6 * one * 2 * ((trial * 37) % 40) / 40.0) + 200);
+    stop(pid);
+    std::string why;
+    if (which(at, a, b, &why) == '?') {
+      ++bad;
+      ADD_FAILURE() << "trial " << trial << ": " << why;
+    }
+    if (bad > 2) break;
+  }
+  export_dataset(a, at);
+  for (const auto& e : fs::directory_iterator(scratch("killed")))
+    EXPECT_NE(e.path().filename().string()[0], '.') << "left behind: " << e.path();
+}
+
+// Two processes exporting to one path and a third loading from it: every load is one export whole
+// (a reader took one's inputs with the other's targets, without an error), and no export fails
+// ("cannot remove the old sidecar: Success", when the other had just removed it).
+TEST(DatasetFile, ConcurrentExportsAndLoadsNeverMix) {
+  const std::string at = scratch("concurrent/c.json");
+  const Dataset a = numbered_rows(20000, 1), b = numbered_rows(20000, 2);
+  export_dataset(a, at);
+  const pid_t pa = exporting(a, nullptr, at), pb = exporting(b, nullptr, at);
+  int seen[2] = {0, 0}, bad = 0;
+  const auto until = std::chrono::steady_clock::now() + std::chrono::milliseconds(1500);
+  while (std::chrono::steady_clock::now() < until && bad < 3) {
+    std::string why;
+    const char w = which(at, a, b, &why);
+    if (w == '?') {
+      ++bad;
+      ADD_FAILURE() << why;
+    } else {
+      ++seen[w - 'a'];
+    }
+  }
+  stop(pa);
+  stop(pb);
+  EXPECT_GT(seen[0] + seen[1], 10);
 }
 
 }  // namespace
