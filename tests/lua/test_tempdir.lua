@@ -35,4 +35,38 @@ code, out = check.run((check.child("tmp", 'local sn = require "shadenet"\nsn.fs.
                       { TMPDIR = root .. "/missing" })
 assert(code == 1 and out:find("child.lua:2: cannot make a scratch folder .*/missing/shadenet%-script%-%w+: No such file"),
        out)
+-- Folders a killed process left (a plot's, after Ctrl-C while gnuplot drew) are removed by the
+-- next folder of their tag once they are a minute old and no process holds them; a younger one,
+-- another tag's, and one a live process holds stay. (They piled up in TMPDIR.)
+local T = sn.fs.tempdir("abandoned")
+local stale, young, other = T .. "/shadenet-plot-abc123", T .. "/shadenet-plot-young1", T .. "/shadenet-probe-abc123"
+local holder = check.child("holder", [[
+local sn = require "shadenet"
+local d = sn.fs.tempdir("plot")
+sn.fs.write(d .. "/plot.png", "x")
+io.stdout:write(d, "\n") io.stdout:flush()
+-- Until the test says go, or its folder is gone (the test failed).
+while not sn.fs.exists(os.getenv("GO")) and sn.fs.exists(os.getenv("GO"):match("^(.*)/")) do os.execute("sleep 0.05") end
+]])
+check.sh(string.format("GO=%s/go TMPDIR=%s %s %s > %s/held.txt 2>&1 &", T, T, check.shadenet, holder, T))
+local held
+for _ = 1, 400 do
+  held = (sn.fs.exists(T .. "/held.txt") and sn.fs.read(T .. "/held.txt") or ""):match("(%S+shadenet%-plot%-%w+)")
+  if held then break end
+  os.execute("sleep 0.05")
+end
+assert(held, "the holder made its folder")
+for _, d in ipairs { stale, young, other } do sn.fs.write(d .. "/plot.png", "left by a killed plot") end
+os.execute(string.format("touch -d '2 minutes ago' '%s' '%s' '%s'", stale, other, held))
+code, out = check.run((check.child("next", 'local sn = require "shadenet"\nprint(sn.fs.tempdir("plot"))\n')), {},
+                      { TMPDIR = T })
+assert(code == 0, out)
+assert(sn.fs.exists(stale) == nil, "the abandoned folder is removed")
+assert(sn.fs.exists(young) and sn.fs.exists(other) and sn.fs.exists(held), "the others stay")
+sn.fs.write(T .. "/go", "")
+for _ = 1, 400 do
+  if not sn.fs.exists(held) then break end
+  os.execute("sleep 0.05")
+end
+assert(sn.fs.exists(held) == nil, "the holder removed its own folder")
 print("tempdir ok")
