@@ -1,10 +1,11 @@
-// sn.gl_info(), sn.finish(), sn.windowed(), sn.present(target), sn.clock().
+// sn.gl_info(), sn.finish(), sn.windowed(), sn.present(target), sn.clock(), sn.hash(text).
 #include <chrono>
 
 #include "gl/buffer.h"
 #include "gl/context.h"
 #include "gl/render_target.h"
 #include "io/build_id.h"
+#include "io/hash.h"
 #include "lua/binding.h"
 #include "lua/module.h"
 
@@ -50,12 +51,22 @@ int w_clock(lua_State* L) {
   return 1;
 }
 
+// sn.hash(text) -> 16 hex digits: io::fnv1a of the bytes (not cryptographic), the project's one
+// content hash, for keys a script compares (lib.claim's sweep keys).
+int w_hash(lua_State* L) {
+  if (lua_type(L, 1) != LUA_TSTRING) throw Error("sn.hash: a string expected, got " + type_name_at(L, 1));
+  std::size_t n = 0;
+  const char* bytes = lua_tolstring(L, 1, &n);
+  lua_pushstring(L, io::hex64(io::fnv1a(std::string(bytes, n))).c_str());
+  return 1;
+}
+
 }  // namespace
 
 void open_context(lua_State* L) {
   static const luaL_Reg fns[] = {
       SN_FN("gl_info", w_gl_info), SN_FN("finish", w_finish), SN_FN("windowed", w_windowed),
-      SN_FN("clock", w_clock), {nullptr, nullptr}};
+      SN_FN("clock", w_clock), SN_FN("hash", w_hash), {nullptr, nullptr}};
   luaL_register(L, nullptr, fns);
   lua_pushstring(L, SHADENET_VERSION);
   lua_setfield(L, -2, "version");

@@ -1,5 +1,6 @@
 // sn.fs.*: the few file-system calls results writers need and plain Lua lacks (creating
-// folders, listing one, checking a path, reading and writing a file whole, a scratch folder), through
+// folders, listing one, checking a path, reading and writing a file whole, a scratch folder, a
+// lock), through
 // std::filesystem and io/atomic_write rather than a shell or io.open; and sn.limits, the
 // loaders' resource limits (io/limits.h).
 #include <algorithm>
@@ -7,6 +8,7 @@
 #include <system_error>
 
 #include "io/atomic_write.h"
+#include "io/file_lock.h"
 #include "io/limits.h"
 #include "io/numbered_path.h"
 #include "io/read_file.h"
@@ -119,6 +121,62 @@ int w_claim(lua_State* L) {
   return 1;
 }
 
+// sn.fs.lock(path [, { shared = false, wait = true }]) -> Lock, or nil, "busy" when `wait` is false
+// and another process holds a conflicting lock: an advisory flock on an existing file or folder,
+// held until lock:release(), the Lock's collection or the process' end (however it ends).
+// lock:held() -> true, or false and why where the file system keeps no locks (callers go on
+// unlocked); lock:share() turns an exclusive lock into a shared one.
+constexpr const char* kLock = "Lock";
+
+struct Lock {
+  io::FileLock lock;
+  std::string path;
+  bool shared = false;
+};
+
+int w_lock(lua_State* L) {
+  const std::string path = check_string(L, 1, "sn.fs.lock path");
+  bool shared = false, wait = true;
+  if (!lua_isnoneornil(L, 2)) {
+    Options o(L, 2, "sn.fs.lock", {"shared", "wait"});
+    shared = o.boolean("shared", false);
+    wait = o.boolean("wait", true);
+  }
+  auto l = std::make_shared<Lock>();
+  l->lock = io::FileLock::acquire(path, shared ? io::FileLock::Mode::shared : io::FileLock::Mode::exclusive, wait);
+  l->path = path;
+  l->shared = shared;
+  if (l->lock.state() == io::FileLock::State::busy) {
+    lua_pushnil(L);
+    lua_pushstring(L, "busy");
+    return 2;
+  }
+  push(L, l, kLock);
+  return 1;
+}
+
+int w_lock_held(lua_State* L) {
+  auto& l = check<Lock>(L, 1, kLock);
+  lua_pushboolean(L, l.lock.held());
+  if (l.lock.held()) return 1;
+  lua_pushstring(L, l.lock.why().empty() ? "released" : l.lock.why().c_str());
+  return 2;
+}
+
+int w_lock_share(lua_State* L) {
+  auto& l = check<Lock>(L, 1, kLock);
+  l.lock.share();
+  l.shared = true;
+  return 0;
+}
+
+int w_lock_tostring(lua_State* L) {
+  auto& l = check<Lock>(L, 1, kLock);
+  const std::string s = "Lock(" + l.path + ", " + (l.lock.held() ? (l.shared ? "shared" : "exclusive") : "not held") + ")";
+  lua_pushstring(L, s.c_str());
+  return 1;
+}
+
 // sn.fs.tempdir([tag]) -> path of a new, empty folder TMPDIR/shadenet-TAG-XXXXXX, removed with
 // its contents when the script's Lua state closes. The registry holds each one until then, so
 // no collection removes a folder a script still writes into.
@@ -205,7 +263,9 @@ void open_files(lua_State* L) {
   static const luaL_Reg fns[] = {SN_FN("mkdir", w_mkdir), SN_FN("list", w_list), SN_FN("exists", w_exists), SN_FN("read", w_read), SN_FN("write", w_write), SN_FN("write_all", w_write_all),
                                  SN_FN("claim", w_claim), SN_FN("tempdir", w_tempdir),
                                  SN_FN("remove_stale_temporaries", w_remove_stale_temporaries),
-                                 {nullptr, nullptr}};
+                                 SN_FN("lock", w_lock), {nullptr, nullptr}};
+  static const luaL_Reg lock_methods[] = {SN_FN("held", w_lock_held), SN_FN("share", w_lock_share), {nullptr, nullptr}};
+  define_box_type<Lock>(L, kLock, lock_methods, wrap<w_lock_tostring>);
   lua_newtable(L);
   luaL_register(L, nullptr, fns);
   lua_setfield(L, -2, "fs");

@@ -7,6 +7,7 @@
 -- dataset); runs sharing the training settings train together in one sn.train job.
 local sn = require "shadenet"
 local cli = require "lib.cli"
+local claim = require "lib.claim"
 local results = require "lib.results"
 local Sweep = require "lib.sweep"
 local stats = require "lib.stats"
@@ -33,40 +34,6 @@ end
 
 -- ---- start ----------------------------------------------------------------------------------
 
--- A results folder holds one experiment, in one mode, on one choice of data: their run ids are
--- the same, so a second one there overwrote the first's records and tables without a word (a
--- smoke run after a full Table 4.1 retrained 72 of its 360 runs; Table 4.1 into Table 4.2's
--- folder replaced all 72). experiment.json says which, from the start (run.json, written at the
--- end, was missing after a kill -9); writing it also finds an unwritable folder before any
--- training. Shards of one sweep may share a folder: they agree on all of it.
-function exp.claim_folder(R, name, opts)
-  local d = cli.defaults
-  local mine = { experiment = name, quick = opts.quick, options = { data = opts.data or d.data, ggx = opts.ggx or d.ggx } }
-  local function describe(e)
-    local o = e.options or {}
-    return string.format("%s%s (--data %s, --ggx %s)", e.experiment, e.quick and " --quick" or "", o.data or d.data,
-                         o.ggx or d.ggx)
-  end
-  for _, file in ipairs { "experiment.json", "run.json" } do  -- run.json: a folder from before experiment.json
-    local text = results.read_file(R:path(file))
-    local ok, there = pcall(json.decode, text or "", R:path(file))
-    if text and ok and type(there) == "table" and there.experiment then
-      there.options = type(there.options) == "table" and there.options or {}
-      if describe(there) ~= describe(mine) then
-        io.stderr:write(string.format("%s holds the results of %s; %s there would overwrite them: give it its own "
-                                      .. "--out DIR\n", R.dir, describe(there), describe(mine)))
-        os.exit(2)
-      end
-      break
-    end
-  end
-  local ok, err = pcall(results.write_json, R:path("experiment.json"), mine)
-  if not ok then
-    io.stderr:write(string.format("%s: cannot write its results folder: %s\n", name, tostring(err)))
-    os.exit(1)
-  end
-end
-
 -- exp.start(name, arg [, { flags = {...extra cli flags}, backend = "auto" }]) -> E
 function exp.start(name, args, o)
   o = options.check(o or {}, "exp.start", { "flags", "backend" })
@@ -75,15 +42,20 @@ function exp.start(name, args, o)
   -- scripts/merge.lua reports on every run: a Slurm array task it runs in picks no shard.
   local opts = cli.parse_or_exit(list, name, o.flags, exp.report_only and function() return nil end or nil)
   local R = results.open(opts, name)
-  exp.claim_folder(R, name, opts)
   -- The script's own flags as given (run.json records them; merge.lua gives them again).
   local own_flags = {}
   for _, f in ipairs(o.flags or {}) do
     local key = f.flag:sub(3):gsub("-", "_")
     if opts.extra[key] ~= nil then own_flags[f.flag] = opts.extra[key] end
   end
+  -- The folder holds this experiment, in this mode, on this data, with these flags (lib.claim).
+  local d = cli.defaults
+  local folder = claim.folder(R.dir, { experiment = name, quick = opts.quick,
+                                       options = { data = opts.data or d.data, ggx = opts.ggx or d.ggx },
+                                       flags = claim.flag_values(own_flags) })
   local self = setmetatable({
     name = name, opts = opts, quick = opts.quick, R = R, dir = R.dir, args = list, own_flags = own_flags,
+    claim = folder,
     -- the script as it was run (a user's own experiment may live anywhere); merge.lua runs it
     script = args and type(args[0]) == "string" and args[0] or "scripts/" .. name .. ".lua",
     backend = opts.backend or o.backend or "auto",
@@ -767,6 +739,9 @@ function E:sweep(runs, o)
                               local want, got = wanted(run), type(rec.result) == "table" and rec.result.backend
                               return want == "auto" or not got or got == want
                             end }
+  -- The folder's claim: these runs are the ones its flags make (lib.claim).
+  local key = claim.runs_key(runs)
+  self.claim:check_sweep(#self.sweeps + 1, key)
   local refused = {}
   for _, r in ipairs(sweep:slice()) do
     local rec = not sweep:record(r) and sweep:record(r, true)
@@ -807,7 +782,7 @@ function E:sweep(runs, o)
     local by_id = {}
     for _, rec in ipairs(sweep:records()) do by_id[rec.id] = rec end
     self:note_used(by_id)
-    self.sweeps[#self.sweeps + 1] = { runs = #runs, finished = #runs - missing, merged = true }
+    self.sweeps[#self.sweeps + 1] = { runs = #runs, finished = #runs - missing, merged = true, key = key }
     return by_id, false
   end
   local finished, interrupted = sweep:run {
@@ -817,7 +792,8 @@ function E:sweep(runs, o)
     score = function(r) return r.best_val_mse end,
     describe = function(run) return exp.arch_name(run.config.hidden) .. " seed " .. run.config.seed end,
   }
-  self.sweeps[#self.sweeps + 1] = { runs = #runs, slice = #sweep:slice(), finished = finished, interrupted = interrupted }
+  self.sweeps[#self.sweeps + 1] = { runs = #runs, slice = #sweep:slice(), finished = finished, interrupted = interrupted,
+                                    key = key }
   self.interrupted = self.interrupted or interrupted
   if interrupted then  -- every table written from here on says so at its top
     self.R.partial = string.format("**Partial results:** the sweep was stopped (Ctrl-C or SIGTERM) with %d of %d "
@@ -1128,6 +1104,7 @@ function E:finish(o)
     -- what chose the data (scripts/merge.lua re-runs the experiment with them)
     options = { data = self.data_choice, ggx = self.ggx_choice },
     flags = next(self.own_flags) and self.own_flags or nil,  -- the script's own (exp.start's flags), as given
+    flag_values = next(self.own_flags) and claim.flag_values(self.own_flags) or nil,  -- as lib.claim compares them
     shard = self.opts.shard,
     backend = { requested = self.backend, used = backend_used, device = device, runs_per_backend = used.backend,
                 runs_per_device = used.device },
