@@ -742,6 +742,20 @@ function E:sweep(runs, o)
   -- The folder's claim: these runs are the ones its flags make (lib.claim).
   local key = claim.runs_key(runs)
   self.claim:check_sweep(#self.sweeps + 1, key)
+  if self.interrupted and not exp.report_only then
+    -- Ctrl-C or SIGTERM stopped an earlier sweep: this one does not start (its runs count as not
+    -- run; the tables' "Partial results" notice says so), and the script ends soon with 130 or 143.
+    local by_id, finished = {}, 0
+    for _, rec in ipairs(sweep:records()) do by_id[rec.id] = rec end
+    for _, r in ipairs(sweep:slice()) do if by_id[r.id] then finished = finished + 1 end end
+    print(string.format("%s: not started (stopped by Ctrl-C or SIGTERM); %d of %d runs already finished in %s/runs",
+                        o.label or self.name, finished, #sweep:slice(), self.dir))
+    self.sweeps[#self.sweeps + 1] = { runs = #runs, slice = #sweep:slice(), finished = finished, interrupted = true,
+                                      not_started = true, key = key }
+    self:note_partial()
+    self:note_used(by_id)
+    return by_id, true
+  end
   local refused = {}
   for _, r in ipairs(sweep:slice()) do
     local rec = not sweep:record(r) and sweep:record(r, true)
@@ -778,6 +792,7 @@ function E:sweep(runs, o)
       self.R.partial = string.format("**Partial results (merged):** %d of %d runs are not among the merged shards' "
                                      .. "run files; a cell is the median of the runs there, – where there are none. "
                                      .. "Merge again with every shard finished.", missing, #runs)
+      self.partial_title = "partial: runs missing from the merge, see table.md"
     end
     local by_id = {}
     for _, rec in ipairs(sweep:records()) do by_id[rec.id] = rec end
@@ -794,16 +809,32 @@ function E:sweep(runs, o)
   }
   self.sweeps[#self.sweeps + 1] = { runs = #runs, slice = #sweep:slice(), finished = finished, interrupted = interrupted,
                                     key = key }
-  self.interrupted = self.interrupted or interrupted
-  if interrupted then  -- every table written from here on says so at its top
-    self.R.partial = string.format("**Partial results:** the sweep was stopped (Ctrl-C or SIGTERM) with %d of %d "
-                                   .. "runs finished; – marks the others. Run the same command to resume.",
-                                   finished, #sweep:slice())
+  if interrupted and not self.interrupted then
+    self.interrupted = true
+    local _, signal = sn.interrupted()
+    self.signal = signal or 2  -- (sn.train's own Ctrl-C catch: SIGINT)
   end
+  if interrupted then self:note_partial() end
   local by_id = {}
   for _, rec in ipairs(sweep:records()) do by_id[rec.id] = rec end
   self:note_used(by_id)
   return by_id, interrupted
+end
+
+-- After Ctrl-C or SIGTERM: every table written from here on says at its top that its results are
+-- partial, counting the runs of every sweep so far (those that did not start among them).
+function E:note_partial()
+  local finished, total, skipped, skipped_runs = 0, 0, 0, 0
+  for _, s in ipairs(self.sweeps) do
+    finished, total = finished + (s.finished or 0), total + (s.slice or s.runs)
+    if s.not_started then skipped, skipped_runs = skipped + 1, skipped_runs + (s.slice or s.runs) end
+  end
+  self.R.partial = string.format("**Partial results:** the sweep was stopped (Ctrl-C or SIGTERM) with %d of %d "
+                                 .. "runs finished%s; – marks the others. Run the same command to resume.", finished,
+                                 total, skipped > 0 and string.format(" (%d later sweep%s of %d runs not started)",
+                                                                      skipped, skipped > 1 and "s" or "", skipped_runs)
+                                                      or "")
+  self.partial_title = "partial: the sweep was stopped, see table.md"
 end
 
 -- Remembers the backends and devices of the records a sweep returned, for run.json.
@@ -866,6 +897,7 @@ end
 function E:plot(rel, p)
   options.check(p, "E:plot", plot.keys)
   p.path = self.R:path(rel)
+  p.title = self:marked_title(p.title)
   local path, dropped = plot.lines(p)
   local w = self.R.written
   w[#w + 1] = path:match("%.gp$") and (rel:gsub("%.png$", ".gp")) or rel  -- SHADENET_PLOTS=later: the script
@@ -874,6 +906,13 @@ function E:plot(rel, p)
     io.stderr:write(string.format("%s: %s: %d non-finite points left out of the plot\n", self.name, rel, dropped))
   end
   return path
+end
+
+-- A figure's or plot's title, marked when the results are partial (a stopped sweep, a merge with
+-- runs missing): a figure with 2 of its 4 networks looked whole beside a table that said otherwise.
+function E:marked_title(title)
+  if not self.partial_title then return title end
+  return (title and title ~= "" and title .. " " or "") .. "(" .. self.partial_title .. ")"
 end
 
 -- E:figure("figures/NAME.png", image) -> path (written atomically).
@@ -1024,11 +1063,15 @@ function E:compare(o)
     end
   end
   local img = sn.image.grid { panels = panels, columns = #o.nets == 1 and 3 or #o.nets + 1, row_labels = row_labels,
-                              title = o.title, caption_size = size[1] >= 300 and 14 or 11 }
+                              title = self:marked_title(o.title), caption_size = size[1] >= 300 and 14 or 11 }
   self:figure(o.file, img)
   local csv = o.file:gsub("%.png$", ".csv")
   local columns = { { key = "mesh" }, { key = "view" }, { key = "network" }, { key = "mse" }, { key = "non_finite_pixels" } }
   if o.colour_shift then columns[#columns + 1] = { key = "colour_shift" } end
+  if self.partial_title then  -- the CSV says so too, on every row
+    columns[#columns + 1] = { key = "partial" }
+    for _, r in ipairs(rows) do r.partial = self.partial_title end
+  end
   self.R:write(csv, results.csv(columns, rows))
   return rows
 end
@@ -1123,8 +1166,7 @@ function E:finish(o)
   print(string.format("%s: done in %.1f s; wrote %s/{%s}", self.name, total, self.dir,
                       table.concat(self.R.written, ",")))
   if self.interrupted then
-    local _, signal = sn.interrupted()
-    os.exit(128 + (signal or 2))  -- 130 after Ctrl-C, 143 after SIGTERM, as the shell reports a killed process
+    os.exit(128 + (self.signal or 2))  -- 130 after Ctrl-C, 143 after SIGTERM, as the shell reports a killed process
   end
   return info
 end
