@@ -839,7 +839,7 @@ end
 
 -- Remembers the backends and devices of the records a sweep returned, for run.json.
 function E:note_used(by_id)
-  self.used = self.used or { backend = {}, device = {}, ids = {} }
+  self.used = self.used or { backend = {}, device = {}, build = {}, ids = {} }
   for id, rec in pairs(by_id) do
     if self.used.ids[id] then goto next end
     self.used.ids[id] = true
@@ -847,6 +847,9 @@ function E:note_used(by_id)
       local v = tostring(rec.result[k] or "unknown")
       self.used[k][v] = (self.used[k][v] or 0) + 1
     end
+    -- The build that trained it (lib.sweep records it; "unknown" for records from before).
+    local b = type(rec.build) == "string" and rec.build or "unknown"
+    self.used.build[b] = (self.used.build[b] or 0) + 1
     ::next::
   end
 end
@@ -1138,6 +1141,18 @@ function E:finish(o)
   if o.records then self:note_used(o.records) end
   local used = self.used or {}
   local backend_used, device = used_text(used.backend, ", "), used_text(used.device, "; ")
+  -- Runs from other builds than this one (a resumed sweep, merged shards): said, and run.json
+  -- lists every build with its runs (environment.build is this binary's).
+  local builds = used_text(used.build, ", ")
+  if builds and builds ~= sn.build then
+    local parts = {}
+    for b, n in pairs(used.build) do parts[#parts + 1] = string.format("%s: %d", b, n) end
+    table.sort(parts)
+    io.stderr:write(string.format("%s: the tables' runs were trained by %s (%s; this binary is %s): numbers of "
+                                  .. "different builds may differ; run.json lists them (runs_per_build)\n", self.name,
+                                  #parts > 1 and #parts .. " builds" or "another build", table.concat(parts, ", "),
+                                  sn.build))
+  end
   local env = results.environment()
   local info = {
     experiment = self.name,
@@ -1151,6 +1166,8 @@ function E:finish(o)
     shard = self.opts.shard,
     backend = { requested = self.backend, used = backend_used, device = device, runs_per_backend = used.backend,
                 runs_per_device = used.device },
+    builds = builds,  -- the builds that trained the tables' runs ("a, b" when several)
+    runs_per_build = used.build,
     environment = env,
     datasets = self.data_log,
     baselines = self.baseline_log,

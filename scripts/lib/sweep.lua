@@ -187,7 +187,8 @@ function Sweep:run(o)
         stopped = stopped + 1
       else
         records[self:file(r)] = { id = r.id, config = r.config, result = out[k], group_size = #group,
-                                  group_seconds = seconds, finished = os.date("!%Y-%m-%dT%H:%M:%SZ") }
+                                  group_seconds = seconds, finished = os.date("!%Y-%m-%dT%H:%M:%SZ"),
+                                  build = sn.build }  -- the binary that trained it (run.json lists them all)
         done = done + 1
         consider(r, out[k])
       end

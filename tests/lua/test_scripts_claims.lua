@@ -63,6 +63,19 @@ assert(code == 2 and out:find("merge.lua: " .. S1 .. " was run with the script's
                               .. "--epochs 2: their runs are different experiments", 1, true), out)
 no_traceback(out)
 
+-- Shards trained by another build: the merged run.json lists both builds, and merge says so.
+local rec_file = S2 .. "/runs/s2.json"
+local rec = C.json(rec_file)
+assert(rec.build == sn.build, "a run record names the build that trained it: " .. tostring(rec.build))
+rec.build = "0123456789ab-other"
+results.write_file(rec_file, json.encode(rec))
+out = C.ok("scripts/merge.lua", { S1, S2, "--out", root .. "/merged_builds" })
+assert(out:find("my_exp: the tables' runs were trained by 2 builds (", 1, true) and
+       out:find("0123456789ab-other: 1", 1, true) and out:find(sn.build .. ": 1", 1, true) and
+       out:find("this binary is " .. sn.build .. "): numbers of different builds may differ", 1, true), out)
+local per = C.json(root .. "/merged_builds/run.json").runs_per_build
+assert(per[sn.build] == 1 and per["0123456789ab-other"] == 1, json.encode(per))
+
 -- merge.lua into a folder of another experiment (or of this one in full mode): refused before a
 -- run file is copied (72 records were replaced, then the experiment refused the folder).
 for _, other in ipairs { { experiment = "table_4_2_ggx", quick = true, described = "table_4_2_ggx --quick" },

@@ -1,9 +1,11 @@
 -- Ctrl-C or SIGTERM in a script of several sweeps: the later sweeps do not start (they trained in
 -- full, then the script exited 130), the tables, plots and figures say their results are partial,
--- and the re-run completes them.
+-- and the re-run completes them; every run record names the build that trained it, and run.json
+-- lists every build its runs came from.
 local sn = require "shadenet"
 local C = require "script_check"
 local json = require "lib.json"
+local results = require "lib.results"
 
 local script, root = C.child("stops", [[
 package.path = "scripts/?.lua;" .. package.path
@@ -63,7 +65,22 @@ assert(code == 143 and out:find("not started (stopped by Ctrl-C or SIGTERM)", 1,
 out = C.ok(script, { "--quick", "--out", D })
 assert(#sn.fs.list(D .. "/runs") == 4 and not C.read(D .. "/table.md"):find("Partial") and
        not C.read(D .. "/plots/val.gp"):find("partial") and not C.read(D .. "/figures/nets.csv"):find("partial"), out)
-assert(not C.json(D .. "/run.json").interrupted, "the re-run is whole")
+info = C.json(D .. "/run.json")
+assert(not info.interrupted and info.builds == sn.build and info.runs_per_build[sn.build] == 4, json.encode(info))
+assert(not out:find("trained by"), "one build: nothing to say\n" .. out)
+
+-- A run trained by another build (a resumed sweep): said, and run.json names both.
+local f = D .. "/runs/b2.json"
+local rec = C.json(f)
+assert(rec.build == sn.build, "a record names its build: " .. tostring(rec.build))
+rec.build = "0123456789ab-other"
+results.write_file(f, json.encode(rec))
+out = C.ok(script, { "--quick", "--out", D })
+assert(out:find("two_sweeps: the tables' runs were trained by 2 builds (", 1, true) and
+       out:find("0123456789ab-other: 1", 1, true) and out:find(sn.build .. ": 3", 1, true), out)
+info = C.json(D .. "/run.json")
+assert(info.runs_per_build[sn.build] == 3 and info.runs_per_build["0123456789ab-other"] == 1 and
+       info.builds:find("0123456789ab-other", 1, true) and info.environment.build == sn.build, json.encode(info))
 
 C.rm(root)
 print("stops: ok")
