@@ -179,7 +179,8 @@ for _, m in ipairs(meshes) do
 end
 E:figure("figures/weight_edits.png", sn.image.grid {
   panels = panels, columns = #edits + 2, row_labels = row_labels,
-  title = "Section 4.4 — a toon-shading network (8 x 12) edited by hand", caption_size = size[1] >= 300 and 14 or 11 })
+  title = E:marked_title("Section 4.4 — a toon-shading network (8 x 12) edited by hand"),
+  caption_size = size[1] >= 300 and 14 or 11 })
 -- Each panel's MSE against the toon truth (an edit's too: how far it moved from the truth), and
 -- an edit's change against the fitted network.
 E.R:write("figures/weight_edits.csv", results.csv({ { key = "mesh" }, { key = "view" }, { key = "panel" }, { key = "mse" },
@@ -246,7 +247,7 @@ do
   end
   E:figure("figures/fig_4_17_styles.png", sn.image.grid {
     panels = p3, columns = #styles + 2, row_labels = labels3, caption_size = size[1] >= 300 and 14 or 11,
-    title = "Figure 4.17 — stylised looks from hand edits of the 8 x 12 toon network" })
+    title = E:marked_title("Figure 4.17 — stylised looks from hand edits of the 8 x 12 toon network") })
   E.R:write("figures/fig_4_17_styles.csv", results.csv({ { key = "mesh" }, { key = "style" }, { key = "description" },
     { key = "colour_change" }, { key = "pattern_change" } }, style_rows))
 end
@@ -279,7 +280,8 @@ if small_rec then
   end
   E:figure("figures/fig_4_18_4_19.png", sn.image.grid {
     panels = p2, columns = 3, row_labels = labels2, caption_size = size[1] >= 300 and 14 or 11,
-    title = "Figures 4.18 and 4.19 — the 6 x 8 toon network, fitted and edited, on the training and a different mesh" })
+    title = E:marked_title("Figures 4.18 and 4.19 — the 6 x 8 toon network, fitted and edited, on the training and a "
+                           .. "different mesh") })
   E.R:write("figures/fig_4_18_4_19.csv", results.csv({ { key = "mesh" }, { key = "view" },
     { key = "fitted_mse" }, { key = "colour_change" }, { key = "pattern_change" } }, small_rows))
 end

@@ -132,7 +132,7 @@ end
 if #panels > 0 then
   E:figure("figures/textures.png", sn.image.grid {
     panels = panels, columns = 3, row_labels = row_labels,
-    title = "Section 4.5 — textures: what a fully connected network loses, and a frequency encoding",
+    title = E:marked_title("Section 4.5 — textures: what a fully connected network loses, and a frequency encoding"),
     caption_size = size[1] >= 300 and 14 or 11 })
   -- The per-panel MSEs, as every figure has beside it (each row's network panel; its error
   -- heatmap shows the same difference, on the colour scale error_scale tops, one for all rows).
