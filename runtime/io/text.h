@@ -34,6 +34,12 @@ inline std::string number_text(double v, double apart) {
   return b;
 }
 
+// "{x, y, z}": a direction or colour in messages, number_text per component (any type with x, y, z).
+template <class V>
+std::string vec3_text(const V& v) {
+  return "{" + number_text(v.x) + ", " + number_text(v.y) + ", " + number_text(v.z) + "}";
+}
+
 // Every bit of the value: two keys are equal only when the doubles are.
 inline std::string exact_text(double v) {
   char b[40];

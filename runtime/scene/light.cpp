@@ -9,21 +9,17 @@ namespace sn::scene {
 
 namespace {
 constexpr double kMaxColor = 1e3;  // finite, so every lighting model's output has a bound
-
-std::string vec3_text(const glm::dvec3& v) {
-  return "{" + io::number_text(v.x) + ", " + io::number_text(v.y) + ", " + io::number_text(v.z) + "}";
-}
 }  // namespace
 
 Light make_light(const glm::dvec3& dir, const glm::dvec3& color) {
   double len = glm::length(dir);
   if (!std::isfinite(len) || len < 1e-12)
     throw std::invalid_argument("light 'dir' must be a non-zero, finite direction towards the light, got " +
-                                vec3_text(dir));
+                                io::vec3_text(dir));
   for (int c = 0; c < 3; ++c)
     if (!std::isfinite(color[c]) || color[c] < 0 || color[c] > kMaxColor)
       throw std::invalid_argument("light 'color' must lie in [0, " + io::number_text(kMaxColor) +
-                                  "] per channel, got " + vec3_text(color));
+                                  "] per channel, got " + io::vec3_text(color));
   return Light{dir / len, color};
 }
 
