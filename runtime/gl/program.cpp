@@ -245,9 +245,17 @@ std::map<std::string, std::shared_ptr<Program>>& last_good() {
   return m;
 }
 
+int& fallback_suspended() {
+  static int n = 0;
+  return n;
+}
+
 }  // namespace
 
 void set_program_fallback(std::function<void(const std::string&)> sink) { fallback_sink() = std::move(sink); }
+
+NoProgramFallback::NoProgramFallback() { ++fallback_suspended(); }
+NoProgramFallback::~NoProgramFallback() { --fallback_suspended(); }
 
 std::shared_ptr<Program> get_program(const ProgramDesc& desc) {
   std::string request = desc.compute + "|" + desc.vertex + "|" + desc.fragment;
@@ -259,7 +267,7 @@ std::shared_ptr<Program> get_program(const ProgramDesc& desc) {
     return p;
   } catch (const std::exception& e) {
     auto it = last_good().find(request);
-    if (!fallback_sink() || it == last_good().end()) throw;
+    if (!fallback_sink() || fallback_suspended() > 0 || it == last_good().end()) throw;
     fallback_sink()(e.what());
     return it->second;
   }

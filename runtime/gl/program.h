@@ -74,6 +74,16 @@ std::size_t program_cache_size();
 // hands back the last good one and reports the error to `sink` instead of throwing, so the
 // window keeps running while the shader is broken. Empty = throw (the default).
 void set_program_fallback(std::function<void(const std::string& error)> sink);
+// While one lives, get_program throws as it does without a fallback: a definition being checked
+// (a lighting model's, an activation's, an encoding's) must compile as given, never have the last
+// good program of the same files stand in for it.
+class NoProgramFallback {
+ public:
+  NoProgramFallback();
+  ~NoProgramFallback();
+  NoProgramFallback(const NoProgramFallback&) = delete;
+  NoProgramFallback& operator=(const NoProgramFallback&) = delete;
+};
 
 // Runs `groups` workgroups of the bound compute program and orders its writes before later reads.
 void dispatch(Program& p, unsigned gx, unsigned gy = 1, unsigned gz = 1);

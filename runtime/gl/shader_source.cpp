@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <regex>
@@ -50,6 +51,27 @@ std::string line_marker(int index, int line) {
   return "#line " + std::to_string(kStride * index + line) + " " + std::to_string(index) + "\n";
 }
 
+const std::regex& include_regex() {
+  static const std::regex re(R"(^\s*#\s*include\s+[\"<]([^\">]+)[\">]\s*(//.*)?$)");
+  return re;
+}
+
+// Where `#include "name"` in a file of folder `dir` finds its file: beside it, then in
+// shaders/include/, then in shaders/. Throws naming `where` (file:line) and the folders.
+fs::path find_include(const fs::path& dir, const std::string& name, const std::string& where) {
+  const fs::path root = shader_root();
+  std::vector<std::string> looked;
+  for (const fs::path& folder : {dir, root / "include", root}) {
+    if (fs::exists(folder / name)) return folder / name;
+    std::string shown = display_path(folder.empty() ? "." : folder.string()) + "/";
+    if (std::find(looked.begin(), looked.end(), shown) == looked.end()) looked.push_back(shown);
+  }
+  std::string places;
+  for (std::size_t i = 0; i < looked.size(); ++i)
+    places += (i == 0 ? "" : i + 1 == looked.size() ? " and " : ", ") + looked[i];
+  throw std::runtime_error(where + ": cannot find #include \"" + name + "\" (looked in " + places + ")");
+}
+
 struct Expander {
   ShaderSource& out;
   const Includes& memory;
@@ -61,13 +83,12 @@ struct Expander {
     out.files.push_back(name);
     out.lines.push_back(split_lines(text));
     stack.push_back(name);
-    static const std::regex include_re(R"(^\s*#\s*include\s+[\"<]([^\">]+)[\">]\s*(//.*)?$)");
     static const std::regex version_re(R"(^\s*#\s*version\b.*)");
     out.text += line_marker(index, 1);
     const std::vector<std::string> lines = out.lines.back();  // a copy: nested includes grow out.lines
     for (size_t i = 0; i < lines.size(); ++i) {
       std::smatch m;
-      if (std::regex_match(lines[i], m, include_re)) {
+      if (std::regex_match(lines[i], m, include_regex())) {
         if (auto it = memory.find(m[1].str()); it != memory.end()) {
           for (const auto& s : stack)
             if (s == it->first)
@@ -76,12 +97,7 @@ struct Expander {
           out.text += line_marker(index, int(i) + 2);
           continue;
         }
-        fs::path target = dir / m[1].str();
-        if (!fs::exists(target)) target = fs::path(shader_root()) / "include" / m[1].str();
-        if (!fs::exists(target)) target = fs::path(shader_root()) / m[1].str();
-        if (!fs::exists(target))
-          throw std::runtime_error(name + ":" + std::to_string(i + 1) + ": cannot find #include \"" + m[1].str() +
-                                   "\" (looked beside the file and in shaders/include/)");
+        fs::path target = find_include(dir, m[1].str(), name + ":" + std::to_string(i + 1));
         std::string canon = fs::weakly_canonical(target).string();
         for (const auto& s : stack)
           if (s == display_path(canon))
@@ -157,6 +173,63 @@ ShaderSource preprocess_text(const std::string& name, const std::string& text, c
   Expander ex{src, includes, {}, {}};
   ex.expand(name, text, fs::path(shader_root()));
   return src;
+}
+
+namespace {
+
+// Captures one text for capture_source: its includes found beside it become in-memory includes
+// named by their file's display path (one line for one line: line numbers stay the file's).
+struct Capturer {
+  CapturedSource& out;
+  std::vector<std::string> stack;
+
+  std::string capture(const std::string& name, const std::string& text, const fs::path& dir) {
+    stack.push_back(name);
+    std::string result;
+    const std::vector<std::string> lines = split_lines(text);
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+      std::smatch m;
+      if (!std::regex_match(lines[i], m, include_regex())) {
+        result += lines[i] + "\n";
+        continue;
+      }
+      const std::string where = name + ":" + std::to_string(i + 1);
+      const fs::path target = find_include(dir, m[1].str(), where);
+      if (!fs::exists(dir / m[1].str())) {  // the runtime's own (shaders/include/, shaders/)
+        result += lines[i] + "\n";
+        continue;
+      }
+      const std::string canon = fs::weakly_canonical(target).string(), key = display_path(canon);
+      if (key.find_first_of("\"<>") != std::string::npos)
+        throw std::runtime_error(where + ": the #included file's path must not hold quotes or angle brackets: " + key);
+      if (std::find(stack.begin(), stack.end(), key) != stack.end())
+        throw std::runtime_error(where + ": #include cycle through '" + key + "'");
+      if (!out.files.count(key)) {
+        std::string body = read_file(canon);
+        out.files[key] = capture(key, body, fs::path(canon).parent_path());
+      }
+      result += "#include \"" + key + "\"\n";
+    }
+    stack.pop_back();
+    return result;
+  }
+};
+
+}  // namespace
+
+CapturedSource capture_source(const std::string& name, const std::string& text, const std::string& dir) {
+  if (name.find_first_of("\"<>") != std::string::npos)
+    throw std::runtime_error("a GLSL source's name must not hold quotes or angle brackets: " + name);
+  CapturedSource src;
+  src.name = name;
+  Capturer c{src, {}};
+  src.text = c.capture(name, text, dir.empty() ? fs::path(".") : fs::path(dir));
+  return src;
+}
+
+CapturedSource capture_file(const std::string& path) {
+  const std::string canon = fs::weakly_canonical(fs::absolute(path)).string();
+  return capture_source(display_path(canon), read_file(canon), fs::path(canon).parent_path().string());
 }
 
 std::string rewrite_log(const std::string& log, const ShaderSource& src) {

@@ -38,6 +38,20 @@ void set_shader_file_observer(std::function<void(const std::string& absolute_pat
 ShaderSource preprocess_text(const std::string& name, const std::string& text, const Defines& defines,
                              const Includes& includes = {});
 
+// A definition's GLSL fixed as it reads now (a lighting model's, shading/lighting_model.h): later
+// edits of its files change nothing already defined. `text` (named `name` in errors) is kept with
+// each #include of a file found beside it (in `dir`; a nested one beside its includer) rewritten to
+// name that file's captured text in `files`, keyed by its display path. An #include found in
+// shaders/include/ or shaders/ is the runtime's own and is read when a program is built, as every
+// shader of shadenet's. Throws naming file:line and the folders looked in for a missing #include.
+struct CapturedSource {
+  std::string name, text;
+  Includes files;  // for ProgramDesc::includes, beside {name, text}
+};
+CapturedSource capture_source(const std::string& name, const std::string& text, const std::string& dir);
+// The same for a file: named by its display path, its #includes looked up beside it.
+CapturedSource capture_file(const std::string& path);
+
 // True for GLSL 4.50's keywords, type names and reserved words (in, vec3, sampler2D, class):
 // a name a script gives to generated GLSL (a struct member) must not be one.
 bool glsl_reserved_word(const std::string& name);

@@ -304,7 +304,7 @@ int w_eq(lua_State* L) {
   // The same name and parameters, and the same definition: a name defined again with other GLSL
   // is another model (both printed alike and compared equal, though they shaded apart).
   const bool same = a && b && a->ptr && b->ptr && a->ptr->key() == b->ptr->key() &&
-                    (a->ptr->model == b->ptr->model || a->ptr->spec().glsl_text() == b->ptr->spec().glsl_text());
+                    (a->ptr->model == b->ptr->model || a->ptr->spec().same_glsl(b->ptr->spec()));
   lua_pushboolean(L, same);
   return 1;
 }
@@ -389,7 +389,7 @@ int w_convert(lua_State* L) {
 }
 
 // sn.lighting.key(name) -> a user definition's key, nil for a built-in: its GLSL as the shaders
-// read it (every #included file's text in place) and the attributes it reads, so a sweep trains
+// read it (every #included file's text in place, as it was defined) and the attributes it reads, so a sweep trains
 // again when an included file or the attributes change (the main file's text alone kept runs
 // of the old model).
 int w_key(lua_State* L) {

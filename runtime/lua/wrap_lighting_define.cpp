@@ -79,8 +79,7 @@ glm::dvec3 call_rgb(lua_State* L, int ref, const std::string& what, bool finite,
   lua_settop(L, top);
   if (!ok) throw Error(what + " must return {r, g, b} (3 numbers), got " + got);
   if (finite && !(std::isfinite(out.x) && std::isfinite(out.y) && std::isfinite(out.z)))
-    throw Error(what + " returned {" + io::number_text(out.x) + ", " + io::number_text(out.y) + ", " +
-                io::number_text(out.z) + "}; it must be finite");
+    throw Error(what + " returned " + io::vec3_text(out) + "; it must be finite");
   return out;
 }
 
@@ -114,13 +113,17 @@ struct LuaBound {
   }
 };
 
-// Where the script calling sn.lighting.define is: "file.lua:LINE" and the file's folder.
+// Where the script calling sn.lighting.define is: "file.lua:LINE" and the file's folder (through
+// pcall too: the nearest Lua function). The console's lines have no file: the working directory.
 void caller(lua_State* L, std::string& where, std::string& dir) {
   lua_Debug ar;
   where = "sn.lighting.define", dir = ".";
-  if (lua_getstack(L, 1, &ar) && lua_getinfo(L, "Sl", &ar) && ar.source[0] == '@') {
+  int level = 1;
+  while (lua_getstack(L, level, &ar) && lua_getinfo(L, "S", &ar) && ar.what[0] == 'C') ++level;
+  if (lua_getstack(L, level, &ar) && lua_getinfo(L, "Sl", &ar) && ar.source[0] == '@') {
     where = std::string(ar.source + 1) + ":" + std::to_string(ar.currentline);
     dir = fs::path(ar.source + 1).parent_path().string();
+    if (dir.empty()) dir = ".";
   }
 }
 
@@ -188,17 +191,28 @@ int w_define(lua_State* L) {
   }
   if (!o.has("glsl"))
     throw Error(who + ": 'glsl' is required: a .glsl file or source text defining vec3 shade(Surface s, Params p)");
+  // The GLSL is fixed now, #included files and all: the model checked below is the one that
+  // renders, however the files change later (defining it again reads them anew).
   std::string glsl = o.string("glsl");
+  gl::CapturedSource src;
   if (glsl.size() > 5 && glsl.compare(glsl.size() - 5, 5, ".glsl") == 0 && glsl.find('\n') == std::string::npos) {
     fs::path beside = fs::path(dir) / glsl;
-    m.glsl_path = fs::exists(beside) ? fs::absolute(beside).string() : gl::resolve_shader_path(glsl);
-    m.glsl_path = fs::weakly_canonical(m.glsl_path).string();
-    if (m.glsl_path.find_first_of("\"<>") != std::string::npos)
-      throw Error(who + ": the glsl file's path must not hold quotes or angle brackets");
+    std::string path = beside.string();
+    if (!fs::exists(beside)) {
+      try {
+        path = gl::resolve_shader_path(glsl);
+      } catch (const std::exception&) {
+        throw Error(who + ": glsl file '" + glsl + "' not found (looked beside the script in " + gl::display_path(dir) +
+                    "/, in the working directory and in shaders/)");
+      }
+    }
+    src = gl::capture_file(path);
   } else {
-    m.glsl_source = glsl;
-    m.glsl_name = where + " (glsl of " + m.name + ")";
+    src = gl::capture_source(where + " (glsl of " + m.name + ")", glsl, dir);  // #includes beside the script
   }
+  m.glsl_source = std::move(src.text);
+  m.glsl_name = std::move(src.name);
+  m.glsl_includes = std::move(src.files);
   int ti = o.push("twin");
   if (!lua_isfunction(L, ti))
     throw Error(who + ": 'twin' is required: function(s, p) returning {r, g, b} in double precision "
@@ -221,8 +235,7 @@ int w_define(lua_State* L) {
   s.tangent = {1, 0, 0}, s.bitangent = {0, 0, -1};
   glm::dvec3 c = m.twin(s, p);
   if (!(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z)))
-    throw Error(who + ": its twin returned {" + io::number_text(c.x) + ", " + io::number_text(c.y) + ", " +
-                io::number_text(c.z) + "} at normal {0, 1, 0}, view {0.6, 0.8, 0}: it must be finite");
+    throw Error(who + ": its twin returned " + io::vec3_text(c) + " at normal {0, 1, 0}, view {0.6, 0.8, 0}: it must be finite");
   shading::compile_lighting(m);
   shading::register_model(m);
   auto model = shading::find_model(m.name);

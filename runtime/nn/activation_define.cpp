@@ -40,6 +40,7 @@ void check_twins(const ActivationDef& d) {
 // `desc` compiled, for part `what` of `d`; a compile error names the defining script line.
 std::shared_ptr<gl::Program> compile(const ActivationDef& d, const char* what, const gl::ProgramDesc& desc) {
   try {
+    gl::NoProgramFallback strict;  // in live mode too: never the last good program of the same name
     return gl::get_program(desc);
   } catch (const std::exception& e) {
     // The log names the include; a person wrote the text at the defining script line.

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "gl/program.h"
 #include "io/text.h"
 #include "nn/gl_forward.h"
 #include "nn/mlp_spec.h"
@@ -120,6 +121,7 @@ void check_glsl(Encoding kind, const EncodingDef& d) {
     const std::vector<float> x(xd.begin(), xd.end());
     std::vector<float> got;
     try {
+      gl::NoProgramFallback strict;  // in live mode too: never the last good program of the same name
       got = gl_encode(spec, x);
     } catch (const std::exception& ex) {
       // The log names the include; a person wrote the text at the defining script line.

@@ -66,7 +66,8 @@ std::string upper(const std::string& s) {
   return u;
 }
 
-// The name the definition's source is #included by: its file, or a label for a string.
+// The name the definition's source is #included by: a built-in's file, or a definition's
+// captured text.
 std::string source_include(const LightingModel& m) { return m.glsl_path.empty() ? m.glsl_name : m.glsl_path; }
 
 // A parameter's uniform: a prefix of its own, so that no parameter name (`view`, `position`,
@@ -109,7 +110,10 @@ gl::Includes lighting_includes(const LightingModel& m, const std::vector<std::st
        "vec3 lighting_raw(Surface s) { return shade(s, lighting_params()); }\n"
        "vec3 lighting(Surface s) { return clamp(lighting_raw(s), 0.0, 1.0); }\n";
   gl::Includes inc{{"lighting/model.glsl", g}};
-  if (m.glsl_path.empty()) inc[m.glsl_name] = m.glsl_source;
+  if (m.glsl_path.empty()) {
+    inc[m.glsl_name] = m.glsl_source;
+    inc.insert(m.glsl_includes.begin(), m.glsl_includes.end());
+  }
   return inc;
 }
 
@@ -163,6 +167,7 @@ void compile_lighting(const LightingModel& m) {
   LightingParams p;
   p.model = std::make_shared<const LightingModel>(m);
   use_lighting(desc, p);
+  gl::NoProgramFallback strict;  // in live mode too: a broken definition is an error, not the last good one
   gl::get_program(desc);
 }
 

@@ -102,6 +102,11 @@ std::string LightingModel::glsl_text() const {
                        "shader_bytes");
 }
 
+bool LightingModel::same_glsl(const LightingModel& o) const {
+  return glsl_path == o.glsl_path && glsl_source == o.glsl_source && glsl_name == o.glsl_name &&
+         glsl_includes == o.glsl_includes;
+}
+
 void validate_model(const LightingModel& m) {
   ensure_builtins();
   check_definition(m);

@@ -18,6 +18,7 @@
 
 #include <glm/glm.hpp>
 
+#include "gl/shader_source.h"
 #include "scene/light.h"
 
 namespace sn::shading {
@@ -49,9 +50,13 @@ struct LightingModel {
   // G-buffer attributes read beyond "normal" and "view" (the only ones every model gets):
   // "base_color", "uv", "position", "world_position", "tangent", "bitangent".
   std::vector<std::string> attributes;
-  // The GLSL: a file (absolute path; its #includes resolve beside it, then in shaders/include/)
-  // or, when glsl_path is empty, source text shown in errors as glsl_name.
+  // The GLSL. A built-in's is a file of the runtime (glsl_path, absolute), read when a program is
+  // built like every shader of shadenet's. A user's definition is fixed when it is defined
+  // (gl::capture_source): the text glsl_source, shown in errors as glsl_name (its file's path, or
+  // "script.lua:LINE (glsl of NAME)"), and the files it #includes in glsl_includes; editing those
+  // files afterwards changes no model already defined (defining it again reads them anew).
   std::string glsl_path, glsl_source, glsl_name;
+  gl::Includes glsl_includes;
   // shade() in double precision; n, v, tangent and bitangent arrive normalised (or zero).
   std::function<glm::dvec3(const Surface&, const LightingParams&)> twin;
   // Optional: a per-channel bound on the raw radiance (the stress test counts values above it).
@@ -64,7 +69,8 @@ struct LightingModel {
   bool builtin = false;
 
   bool reads(const std::string& attribute) const;
-  std::string glsl_text() const;  // the file's text (read now) or the source string
+  std::string glsl_text() const;  // a built-in's file (read now) or the captured source
+  bool same_glsl(const LightingModel& o) const;  // the same GLSL, #included files and all
 };
 
 using ModelPtr = std::shared_ptr<const LightingModel>;

@@ -80,3 +80,23 @@ TEST(LiveHooks, FallbackKeepsTheLastGoodProgramAndReports) {
   std::string never = t.write("never.comp", "void main() { oops }\n");
   EXPECT_THROW(get_program({.compute = never}), std::runtime_error);
 }
+
+// A definition being checked builds under NoProgramFallback: broken, it throws even in live mode
+// (the last good program of the same files stood in for it, and the broken definition was taken).
+TEST(LiveHooks, NoFallbackWhileADefinitionIsChecked) {
+  current();
+  TempShaders t;
+  t.write("twice.glsl", kInclude);
+  std::string path = t.write("k.comp", kernel("v[0] = twice(v[0]);"));
+  auto good = get_program({.compute = path});
+  std::vector<std::string> errors;
+  set_program_fallback([&](const std::string& e) { errors.push_back(e); });
+  t.write("twice.glsl", "float twice(float x) { return 2.0 * ; }\n");
+  {
+    NoProgramFallback strict;
+    EXPECT_THROW(get_program({.compute = path}), std::runtime_error);
+  }
+  EXPECT_TRUE(errors.empty());
+  EXPECT_EQ(get_program({.compute = path}).get(), good.get()) << "outside it, the fallback is back";
+  EXPECT_EQ(errors.size(), 1u);
+}
