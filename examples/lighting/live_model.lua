@@ -1,8 +1,8 @@
 -- A lighting model of your own, live: Minnaert's model in minnaert.glsl (beside this file) and
 -- its Lua twin, a network trained on it once, both shown side by side.
 --   build/shadenet --window --watch examples/lighting/live_model.lua
--- Edit minnaert.glsl (say, multiply by vec3(1.0, 0.6, 0.3)) and save: the truth re-renders with
--- the new shader while the trained network stays. Keys 1-4: network, truth, |error|, side by side.
+-- Edit minnaert.glsl (say, multiply by vec3(1.0, 0.6, 0.3)) and the twin below alike, and save: the
+-- truth re-renders while the trained network stays. Keys 1-4: network, truth, |error|, side by side.
 local sn = require "shadenet"
 
 local minnaert = sn.lighting.define {

@@ -162,6 +162,34 @@ std::vector<shading::ParamSpec> read_param_schema(lua_State* L, int idx, const s
   return out;
 }
 
+// The GLSL against the twin (shading::hold_twin) where define holds it; throws naming the worst
+// point, the parameters and both values.
+void hold_to_twin(const shading::ModelPtr& m, const std::string& who) {
+  const scene::Light light = shading::hold_light();
+  shading::TwinMismatch miss;
+  shading::LightingParams p;
+  for (const auto& params : shading::hold_params(m))
+    if ((miss = shading::hold_twin(params, light)).failed) {
+      p = params;
+      break;
+    }
+  if (!miss.failed) return;
+  const shading::Surface& s = miss.at;
+  std::string at = "normal " + io::vec3_text(s.n) + ", view " + io::vec3_text(s.v);
+  for (const auto& a : p.spec().attributes) {
+    if (a == "base_color") at += ", base " + io::vec3_text(s.base_color);
+    else if (a == "uv") at += ", uv {" + io::number_text(s.uv.x) + ", " + io::number_text(s.uv.y) + "}";
+    else if (a == "position") at += ", position " + io::vec3_text(s.position);
+    else if (a == "world_position") at += ", world_position " + io::vec3_text(s.world_position);
+    else if (a == "tangent") at += ", tangent " + io::vec3_text(s.tangent);
+    else if (a == "bitangent") at += ", bitangent " + io::vec3_text(s.bitangent);
+  }
+  throw Error(who + ": its GLSL gives " + io::vec3_text(miss.gpu) + " and its twin " + io::vec3_text(miss.twin) + " for " +
+              p.describe() + " at " + at + ", light {dir = " + io::vec3_text(light.dir) + ", color = " + io::vec3_text(light.color) +
+              "}: the twin must compute what the GLSL does (within " + io::number_text(shading::kHoldTolerance) +
+              " relative, as sn.lighting.check measures), since model:shade and the checks take it for the GLSL");
+}
+
 }  // namespace
 
 // sn.lighting.define{ name, params, glsl, attributes, twin, bound } -> Lighting at the defaults
@@ -226,7 +254,8 @@ int w_define(lua_State* L) {
   }
 
   // Everything is checked before the model is registered: the schema and attributes, the twin
-  // at one point, then the GLSL compiled once (its errors at its own file:line).
+  // at one point, the GLSL compiled once (its errors at its own file:line), then the GLSL held to
+  // the twin over the domain.
   shading::validate_model(m);
   shading::LightingParams p;
   p.model = std::make_shared<const shading::LightingModel>(m);
@@ -237,6 +266,7 @@ int w_define(lua_State* L) {
   if (!(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z)))
     throw Error(who + ": its twin returned " + io::vec3_text(c) + " at normal {0, 1, 0}, view {0.6, 0.8, 0}: it must be finite");
   shading::compile_lighting(m);
+  hold_to_twin(p.model, who);
   shading::register_model(m);
   auto model = shading::find_model(m.name);
   lua_pushnil(L);  // no parameters: the defaults

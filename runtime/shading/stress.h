@@ -63,7 +63,36 @@ struct TwinCheck {
   Surface worst;  // where the largest difference is
   glm::dvec3 worst_gpu{0.0}, worst_twin{0.0};
 };
-TwinCheck check_twin(const LightingParams& p, const std::vector<scene::Light>& lights);
+// Which points: every `grid_stride`-th point of the grid and `random` random pairs, per light.
+struct TwinPoints {
+  std::size_t grid_stride = 1, random = 20000;
+};
+TwinCheck check_twin(const LightingParams& p, const std::vector<scene::Light>& lights, const TwinPoints& points = {});
+
+// What sn.lighting.define holds a definition to before it registers it (a twin wrong by a factor,
+// or NaN where the GLSL is not, was taken at one probe point, and model:shade then gave it):
+// check_twin's points, thinned to kHoldPoints (about 2,000: a few ms of twin calls), under
+// `light`. A point fails where the GPU and the twin differ by more than kHoldTolerance (relative,
+// as check_twin measures; NaN or Inf on one side only fails, on both sides is the stress test's
+// to report), unless the twin with n, v or l tilted by kHoldTilt or stretched by kHoldStretch
+// reaches the GPU's value: a branch or a lobe so steep that float rounding of the inputs crosses
+// it, where the twin is right. The shipped models differ by 6e-6 at most at their defaults
+// (check_twin; docs/lua-api/ground-truth.md).
+constexpr double kHoldTolerance = 1e-3, kHoldTilt = 1e-3, kHoldStretch = 1e-6;
+constexpr TwinPoints kHoldPoints{19, 1000};  // 19 is prime to the grid's 25 lengths per direction
+struct TwinMismatch {
+  bool failed = false;
+  Surface at;  // the worst point the rounding does not explain
+  glm::dvec3 gpu{0.0}, twin{0.0};
+  double difference = 0;
+};
+TwinMismatch hold_twin(const LightingParams& p, const scene::Light& light);
+// Where sn.lighting.define holds a model: its defaults, and every parameter halfway from its
+// default to the nearer end of its range (a twin that drops a parameter, or squares it, agrees
+// with the GLSL wherever the defaults hide that), under the oblique stress light tinted, so that
+// a twin that drops the light's colour shows.
+std::vector<LightingParams> hold_params(const ModelPtr& m);
+scene::Light hold_light();
 
 // The models the stress table covers: each model at its defaults and at the edges of its
 // domain (roughness 0, 1e-4, 1; exponents 0 and 1e6; weights at their maxima; equal thresholds).

@@ -3,6 +3,6 @@
 local sn = require "shadenet"
 sn.lighting.define { name = "badsqrt", params = { a = { default = 1, range = { 0, 2 } } },
   glsl = "vec3 shade(Surface s, Params p) { return vec3(p.a * sqrt(dot(s.n, s.l))); }",
-  twin = function(s, p) return { p.a * math.sqrt(math.max(sn.vec3.dot(s.n, s.l), 0)), 0, 0 } end }
+  twin = function(s, p) local d = p.a * math.sqrt(sn.vec3.dot(s.n, s.l)); return { d, d, d } end }
 local scene = sn.scene { mesh = sn.mesh.sphere {}, size = { 32, 32 }, views = { count = 1 } }
 local img = scene:render(sn.lighting.badsqrt {})

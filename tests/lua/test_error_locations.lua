@@ -50,7 +50,10 @@ local phong = sn.lighting.phong {}
 local outer = sn.lighting.define {
   name = "locations_outer", params = {},
   glsl = "vec3 shade(Surface s, Params p) { return vec3(0.5); }",
-  twin = function(s) return phong:shade { normal = s.n, view = s.v } end,
+  twin = function(s)
+    phong:shade { normal = s.n, view = s.v }  -- another model's twin, nested once
+    return { 0.5, 0.5, 0.5 }
+  end,
 }
 assert(outer:shade { normal = { 0, 1, 0 }, view = { 0, 1, 0 } }[1] > 0, "one level of nesting works")
 

@@ -13,12 +13,15 @@ end
 local function twin_of(k) return function() return { k, k, k } end end
 
 -- 1. A wrong twin is found with the default lights; a lights argument that lists no light (a
---    single light's table, an empty list) is an error, since it would compare nothing.
+--    single light's table, an empty list) is an error, since it would compare nothing. (define
+--    holds the twin at the defaults, k = 1, where k and k^3 agree; check finds it at k = 2.)
 local wrong = sn.lighting.define {
-  name = "edges_wrong_twin", params = {},
-  glsl = "vec3 shade(Surface s, Params p) { return vec3(max(dot(s.n, s.l), 0.0)); }",
-  twin = twin_of(0.3),
+  name = "edges_wrong_twin", params = { k = { default = 1, range = { 1, 2 } } },
+  glsl = "vec3 shade(Surface s, Params p) { return vec3(p.k * max(dot(s.n, s.l), 0.0)); }",
+  twin = function(s, p) local d = p.k ^ 3 * math.max(sn.vec3.dot(s.n, s.l), 0); return { d, d, d } end,
 }
+assert(sn.lighting.check(wrong).max_difference < 1e-5, "right at the defaults")
+wrong = wrong:with { k = 2 }
 local c = sn.lighting.check(wrong)
 assert(c.compared > 0 and c.max_difference > 0.5, "the wrong twin is found: " .. c.max_difference)
 fails("got a table with the key 'light'", sn.lighting.check, wrong, { light = { dir = { 1, 0, 0 } } })
@@ -89,13 +92,13 @@ fails("must define vec3 shade(Surface s, Params p)", define, "edges_commented", 
 -- A name that only contains a keyword is fine.
 assert(define("edges_fine", { input_gain = { default = 1, range = { 0, 2 } }, vec3ish = { default = 1, range = { 0, 2 } } }))
 
--- 5. A model whose GLSL gives NaN or Inf somewhere (its twin clamps it away): a dataset of it is an
---    error naming the first such sample, not a dataset of clamped made-up targets (sqrt of a
---    negative cosine stored as 0, 1/0 as 1).
+-- 5. A model whose GLSL gives NaN or Inf somewhere (its twin too: define holds the two to each
+--    other, the stress test to finite values): a dataset of it is an error naming the first such
+--    sample, not a dataset of clamped made-up targets (sqrt of a negative cosine stored as 0, 1/0 as 1).
 local nanny = sn.lighting.define {
   name = "edges_nanny", params = {},
   glsl = "vec3 shade(Surface s, Params p) { float d = dot(s.n, s.l); return vec3(sqrt(d), 0.5, d < 0.0 ? 1.0 / 0.0 : 0.0); }",
-  twin = function(s) return { math.sqrt(math.max(sn.vec3.dot(s.n, s.l), 0)), 0.5, 0 } end,
+  twin = function(s) local d = sn.vec3.dot(s.n, s.l); return { math.sqrt(d), 0.5, d < 0 and math.huge or 0 } end,
 }
 fails("lighting model 'edges_nanny' gave NaN or infinite radiance for ", function()
   return scene:dataset { target = nanny, samples = 300 }

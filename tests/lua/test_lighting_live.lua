@@ -1,6 +1,8 @@
 -- A lighting model defined in a 29-line script (examples/lighting/live_model.lua) runs live:
 -- `shadenet --watch` draws its truth; saving its GLSL file re-runs the script, which redefines the
--- model and redraws with the new shader, while the network trained under sn.keep is kept.
+-- model and redraws with the new shader, while the network trained under sn.keep is kept. A GLSL
+-- its twin no longer matches, or one that does not compile, is an error shown once, and the last
+-- good model keeps drawing (it holds the GLSL it was defined with).
 local sn = require "shadenet"
 package.path = "tests/live/?.lua;" .. package.path
 local H = require "harness"
@@ -20,9 +22,19 @@ local function centre(img) return img:get(math.floor(w / 2) + 1, math.floor(h / 
 local c1 = centre(first)
 assert(c1[4] == 1 and c1[1] > 0.05 and math.abs(c1[1] - c1[3]) < 1e-6, "a grey Minnaert truth at the centre")
 
--- Tint the shader and save it the way editors do.
+-- Tint the shader and save it the way editors do: its twin no longer matches, which the re-run
+-- says, and the untinted model stays.
 local glsl = H.read(dir .. "/minnaert.glsl"):gsub("return s%.light_color %* p%.albedo", "return vec3(1.0, 0.6, 0.3) * s.light_color * p.albedo")
 H.write(dir .. "/minnaert.glsl", glsl)
+s:wait_log("sn%.lighting%.define 'minnaert': its GLSL gives")
+local c = centre(s:image(s:settle()))
+assert(c[1] == c1[1] and c[3] == c1[3], "the last good model is drawn")
+-- Tint the twin too: the new model is drawn.
+local tinted, a, b
+tinted, a = script:gsub("local k = nl %^ p%.k %* nv %^ %(p%.k %- 1%)", "local k = nl ^ p.k * nv ^ (p.k - 1)\n    k = { k, 0.6 * k, 0.3 * k }")
+tinted, b = tinted:gsub("s%.light_color%[(%d)%] %* p%.albedo%[%d%] %* k", "s.light_color[%1] * p.albedo[%1] * k[%1]")
+assert(a == 1 and b == 3, "the twin is tinted as the GLSL is")
+H.write(dir .. "/live_model.lua", tinted)
 s:wait_log("RUN\n.*RUN")
 local n = s:settle()
 local c2 = centre(s:image(n))
@@ -30,7 +42,7 @@ assert(math.abs(c2[1] - c1[1]) < 1e-5 and math.abs(c2[3] - 0.3 * c1[3]) < 1e-5,
        ("the edited shader is drawn: red %.4f -> %.4f, blue %.4f -> %.4f"):format(c1[1], c2[1], c1[3], c2[3]))
 local log = s:log()
 local _, trained = log:gsub("trained mlp", "")
-assert(trained == 1, "the network was trained once and kept across the re-run:\n" .. log)
+assert(trained == 1, "the network was trained once and kept across the re-runs:\n" .. log)
 
 -- A GLSL error on save keeps the last good model on screen and names the file and line, once:
 -- the model on screen holds its own GLSL, so its frames do not compile the broken file again.

@@ -44,13 +44,15 @@ assert(config().data.truth_definition ~= a.data.truth_definition, "a redefined m
 local dir = sn.fs.tempdir("definitions_include")
 sn.fs.write(dir .. "/gain.glsl", "float gain() { return 0.5; }\n")
 sn.fs.write(dir .. "/model.glsl", '#include "gain.glsl"\nvec3 shade(Surface s, Params p) { return vec3(gain()); }\n')
+local gain = 0.5
 local function define_included(attributes)
   sn.lighting.define { name = "included_t", glsl = dir .. "/model.glsl", attributes = attributes,
-                       twin = function() return { 0.5, 0.5, 0.5 } end }
+                       twin = function() return { gain, gain, gain } end }
   return sn.lighting.key("included_t")
 end
 local k1 = define_included()
 sn.fs.write(dir .. "/gain.glsl", "float gain() { return 0.9; }\n")
+gain = 0.9
 local k2 = define_included()
 assert(k2 ~= k1, "an included file changed, a new key")
 assert(define_included { "uv" } ~= k2, "other attributes, a new key")

@@ -3,6 +3,9 @@
 // over-bound outputs, and what datasets record stays inside each colour space's range.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <functional>
+
 #include "gl/context.h"
 #include "shading/lighting.h"
 #include "shading/stress.h"
@@ -55,6 +58,60 @@ TEST(LightingStress, EveryModelAtItsExtremesHasZeroNanInfOrOutOfRange) {
     EXPECT_EQ(r.encoded_out_of_range, 0u);
     EXPECT_GT(r.max_raw, 0.0);  // the models really produced light on this grid
   }
+}
+
+// sn.lighting.define holds a definition's GLSL to its twin (hold_twin); the built-ins, which
+// register without it, pass it too where define would hold them, and at every edge of their
+// domain the stress table covers (exponents 1e6, roughness 0, equal toon thresholds), so the
+// tolerance and the rounding it forgives are what a correct float shader needs.
+TEST(LightingStress, BuiltinsHoldToTheirTwinsAsDefineHoldsADefinition) {
+  sn::gl::current();
+  for (const auto& m : models()) {
+    if (!m->builtin) continue;
+    for (const auto& p : hold_params(m)) {
+      SCOPED_TRACE(p.describe());
+      TwinMismatch miss = hold_twin(p, hold_light());
+      EXPECT_FALSE(miss.failed) << "gpu " << miss.gpu.x << " twin " << miss.twin.x << " difference " << miss.difference;
+    }
+  }
+  for (const auto& c : stress_cases()) {
+    SCOPED_TRACE(c.label);
+    for (const Light& light : stress_lights()) {
+      TwinMismatch miss = hold_twin(c.params, light);
+      EXPECT_FALSE(miss.failed) << "gpu " << miss.gpu.x << " twin " << miss.twin.x << " difference " << miss.difference;
+    }
+  }
+}
+
+// The hold finds a twin that is wrong where the GLSL is not: off by a factor, or NaN where n.l < 0,
+// and names the point; a twin that agrees but for a toon step float and double take apart passes.
+TEST(LightingStress, HoldFindsAWrongTwinAndForgivesRounding) {
+  sn::gl::current();
+  auto define = [](const std::string& name, std::string glsl, std::function<glm::dvec3(double nl)> twin) {
+    LightingModel m;
+    m.name = name;
+    m.glsl_source = std::move(glsl);
+    m.glsl_name = name + ".glsl";
+    m.twin = [twin](const Surface& s, const LightingParams&) { return twin(glm::dot(s.n, s.l)); };
+    LightingParams p;
+    p.model = std::make_shared<const LightingModel>(m);
+    return p;
+  };
+  const std::string lambert = "vec3 shade(Surface s, Params p) { return vec3(max(dot(s.n, s.l), 0.0)); }";
+  auto half = define("hold_half", lambert, [](double nl) { return glm::dvec3(0.5 * std::max(nl, 0.0)); });
+  TwinMismatch miss = hold_twin(half, hold_light());
+  ASSERT_TRUE(miss.failed);
+  EXPECT_NEAR(miss.twin.x, 0.5 * miss.gpu.x, 1e-6);
+  auto nan = define("hold_nan", lambert, [](double nl) { return glm::dvec3(std::sqrt(nl)) * double(nl >= 0); });
+  miss = hold_twin(nan, hold_light());
+  ASSERT_TRUE(miss.failed);
+  EXPECT_LT(glm::dot(miss.at.n, miss.at.l), 0.0);
+  EXPECT_TRUE(std::isnan(miss.twin.x));
+  auto right = define("hold_right", lambert, [](double nl) { return glm::dvec3(std::max(nl, 0.0)); });
+  EXPECT_FALSE(hold_twin(right, hold_light()).failed);
+  auto toon = define("hold_toon", "vec3 shade(Surface s, Params p) { return vec3(dot(s.n, s.l) > 0.5 ? 1.0 : 0.2); }",
+                     [](double nl) { return glm::dvec3(nl > 0.5 ? 1.0 : 0.2); });
+  EXPECT_FALSE(hold_twin(toon, hold_light()).failed);
 }
 
 // Without the guards the same grid does produce NaN: normalising a zero vector and a GGX lobe at
