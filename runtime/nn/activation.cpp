@@ -17,11 +17,19 @@ using Defs = std::deque<ActivationDef>;
 
 int lookup(const Defs& defs, const std::string& name) {
   for (std::size_t i = 0; i < defs.size(); ++i) {
+    if (defs[i].replaced) continue;
     if (defs[i].name == name) return int(i);
     for (const auto& a : defs[i].aliases)
       if (a == name) return int(i);
   }
   return -1;
+}
+
+// Whether two definitions compute the same network function (their twins may differ: they are
+// the oracle's, never run by a network).
+bool same_function(const ActivationDef& a, const ActivationDef& b) {
+  return a.glsl == b.glsl && a.grad == b.grad && a.grad_from_output == b.grad_from_output && a.param == b.param &&
+         a.hidden == b.hidden && a.output == b.output;
 }
 
 // The one way into the registry, for built-ins and user definitions alike.
@@ -33,8 +41,11 @@ int add(Defs& defs, ActivationDef def, bool builtin) {
       throw std::invalid_argument("activation '" + def.name + "' is built in; choose another name");
     if (!builtin) {  // a script run again (live mode) defines it anew
       def.aliases.clear();
-      defs[std::size_t(at)] = std::move(def);
-      return at;
+      if (same_function(defs[std::size_t(at)], def)) {
+        defs[std::size_t(at)] = std::move(def);
+        return at;
+      }
+      defs[std::size_t(at)].replaced = true;  // kept for the networks built with it
     }
   }
   for (const auto& a : def.aliases)
@@ -110,7 +121,7 @@ bool find_activation(const std::string& name, Activation* out) {
 std::vector<std::string> activation_names(Position position) {
   std::vector<std::string> names;
   for (const auto& d : registry()) {
-    if (!(position == Position::hidden ? d.hidden : d.output)) continue;
+    if (d.replaced || !(position == Position::hidden ? d.hidden : d.output)) continue;
     names.push_back(d.name);
     for (const auto& a : d.aliases) names.push_back(a);
   }

@@ -66,6 +66,9 @@ struct ActivationDef {
   // cpu_missing says why.
   std::shared_ptr<const ActivationExpr> cpu_f, cpu_both;
   std::string cpu_missing;
+  // A later definition of the name replaced this one: the name finds that one now, and networks
+  // built before keep this one (they hold the handle).
+  bool replaced = false;
 };
 
 // Throws for a name or alias outside the registry's rules, or a definition missing a part
@@ -74,6 +77,9 @@ void check_activation_def(const ActivationDef& def);
 
 // Registers a definition (its name and aliases must be new, or name an earlier user definition,
 // which it replaces); returns its handle. Throws for a bad name or a clash with a built-in.
+// A network holds its activation by handle: one that replaces an earlier definition with other
+// GLSL gets a handle of its own, so networks built before keep computing what they were built
+// (and trained) with; the same GLSL again (a script run again) keeps the earlier handle.
 Activation register_activation(ActivationDef def);
 const ActivationDef& activation_def(Activation a);
 const char* activation_name(Activation a);

@@ -21,8 +21,23 @@ using Defs = std::deque<EncodingDef>;
 
 int lookup(const Defs& defs, const std::string& name) {
   for (std::size_t i = 0; i < defs.size(); ++i)
-    if (defs[i].name == name) return int(i);
+    if (!defs[i].replaced && defs[i].name == name) return int(i);
   return -1;
+}
+
+// Whether two definitions encode every input they accept alike (their twins may differ: they are
+// the oracle's and the cpu backend's, held to the GLSL at definition).
+bool same_function(const EncodingDef& a, const EncodingDef& b) {
+  if (a.glsl != b.glsl || a.count != b.count || a.count_min != b.count_min || a.count_max != b.count_max ||
+      a.count_default != b.count_default || a.input_width != b.input_width ||
+      a.has_include_input != b.has_include_input || a.include_input_default != b.include_input_default ||
+      a.has_range != b.has_range)
+    return false;
+  for (int w = 1; w <= 4; ++w)
+    for (int n = a.count.empty() ? 0 : a.count_min; n <= (a.count.empty() ? 0 : a.count_max); ++n)
+      for (bool keep : {false, true})
+        if (a.out_width(w, n, keep) != b.out_width(w, n, keep)) return false;
+  return true;
 }
 
 // The one way into the registry, for built-ins and user definitions alike.
@@ -38,8 +53,11 @@ int add(Defs& defs, EncodingDef def, bool builtin) {
     if (at < int(BuiltinEncoding::count))
       throw std::invalid_argument("encoding '" + def.name + "' is built in; choose another name");
     if (!builtin) {  // a script run again (live mode) defines it anew
-      defs[std::size_t(at)] = std::move(def);
-      return at;
+      if (same_function(defs[std::size_t(at)], def)) {
+        defs[std::size_t(at)] = std::move(def);
+        return at;
+      }
+      defs[std::size_t(at)].replaced = true;  // kept for the networks built with it
     }
   }
   defs.push_back(std::move(def));
@@ -92,13 +110,17 @@ std::string InputEncoding::describe() const {
 
 Encoding register_encoding(EncodingDef def) { return Encoding(add(registry(), std::move(def), false)); }
 
-void unregister_encoding(Encoding e, const EncodingDef* previous) {
+void unregister_encoding(Encoding e, const EncodingDef* previous, Encoding before) {
   Defs& defs = registry();
   if (is_builtin(e) || e.id < 0 || std::size_t(e.id) >= defs.size())
     throw std::logic_error("unregister_encoding: not a user definition");
-  if (previous) defs[std::size_t(e.id)] = *previous;
-  else if (std::size_t(e.id) + 1 == defs.size()) defs.pop_back();
-  else throw std::logic_error("unregister_encoding: only the last definition can be removed");
+  if (previous && e == before) {  // it had taken the earlier definition's place
+    defs[std::size_t(e.id)] = *previous;
+    return;
+  }
+  if (std::size_t(e.id) + 1 != defs.size()) throw std::logic_error("unregister_encoding: only the last definition can be removed");
+  defs.pop_back();
+  if (previous) defs[std::size_t(before.id)].replaced = false;  // the name finds it again
 }
 
 bool is_builtin(Encoding e) { return e.id >= 0 && e.id < int(BuiltinEncoding::count); }
@@ -119,7 +141,8 @@ const char* encoding_name(Encoding e) { return encoding_def(e).name.c_str(); }
 
 std::vector<std::string> encoding_names() {
   std::vector<std::string> names;
-  for (const auto& d : registry()) names.push_back(d.name);
+  for (const auto& d : registry())
+    if (!d.replaced) names.push_back(d.name);
   return names;
 }
 

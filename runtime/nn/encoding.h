@@ -81,14 +81,23 @@ struct EncodingDef {
   // The twins may run only on the thread that called into shadenet (a user's Lua function): rows
   // of such an encoding are encoded on that thread alone (single_threaded()).
   bool caller_thread = false;
+  // A later definition of the name replaced this one: the name finds that one now, and networks
+  // built before keep this one (they hold the handle).
+  bool replaced = false;
 };
 
 // Registers a definition (its name must be new, or name an earlier user definition, which it
 // replaces); returns its handle. Throws for a bad name or a clash with a built-in.
+// A network holds its encodings by handle: one that replaces an earlier definition with another
+// function (GLSL, count, widths) gets a handle of its own, so networks built before keep encoding
+// their inputs as they were built (and trained) to; the same again (a script run again) keeps the
+// earlier handle.
 Encoding register_encoding(EncodingDef def);
 // Undoes the last register_encoding of a user definition that failed its checks
-// (nn/encoding_define.h): puts `previous` back, or removes the entry when there was none.
-void unregister_encoding(Encoding e, const EncodingDef* previous);
+// (nn/encoding_define.h). `previous` is the definition the name found before (null: none) and
+// `before` its handle: put back in its place, or found by the name again once the entry the
+// failed definition added is removed.
+void unregister_encoding(Encoding e, const EncodingDef* previous, Encoding before);
 const EncodingDef& encoding_def(Encoding e);
 const char* encoding_name(Encoding e);
 bool is_builtin(Encoding e);  // shipped with shadenet (not a user's definition)

@@ -178,7 +178,7 @@ Encoding define_encoding(EncodingDef def) {
   try {
     check_definition(kind);
   } catch (...) {
-    unregister_encoding(kind, previous ? &*previous : nullptr);
+    unregister_encoding(kind, previous ? &*previous : nullptr, old);
     throw;
   }
   return kind;

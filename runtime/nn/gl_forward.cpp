@@ -106,8 +106,7 @@ std::vector<double> gl_squared_errors(const MlpSpec& spec, const GlParams& p, co
 std::shared_ptr<gl::Buffer> gl_forward(const Mlp& net, const gl::Buffer& x, std::size_t rows) {
   if (net.params.size() != net.spec.param_count())
     throw std::invalid_argument(net.spec.describe() + ": " + std::to_string(net.params.size()) +
-                                " parameters, but its spec needs " + std::to_string(net.spec.param_count()) +
-                                " (an encoding redefined with another output count?)");
+                                " parameters, but its spec needs " + std::to_string(net.spec.param_count()));
   std::vector<float> padded = pack_padded(net.spec, net.params.data());
   gl::Buffer params(gl::ElemType::vec4, padded.size() / 4);
   params.upload(padded.data(), 0, padded.size());
