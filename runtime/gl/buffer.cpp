@@ -89,6 +89,13 @@ void Buffer::download(void* data, std::size_t first, std::size_t n) const {
   glGetNamedBufferSubData(id_, GLintptr(first * 4), GLsizeiptr(n * 4), data);
 }
 
+void Buffer::copy_from(const Buffer& src, std::size_t src_first, std::size_t first, std::size_t n) {
+  check_range(src, src_first, n);
+  check_range(*this, first, n);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);  // shader writes to `src` land before the copy reads them
+  glCopyNamedBufferSubData(src.id_, id_, GLintptr(src_first * 4), GLintptr(first * 4), GLsizeiptr(n * 4));
+}
+
 void Buffer::fill_float(float v) { glClearNamedBufferData(id_, GL_R32F, GL_RED, GL_FLOAT, &v); }
 void Buffer::fill_uint(uint32_t v) { glClearNamedBufferData(id_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &v); }
 

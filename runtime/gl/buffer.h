@@ -38,6 +38,8 @@ class Buffer {
   // Raw 32-bit component access; `first` and `n` count components, not elements.
   void upload(const void* data, std::size_t first, std::size_t n);
   void download(void* data, std::size_t first, std::size_t n) const;
+  // n components of `src` from src_first to here from `first`, on the device (no host round trip).
+  void copy_from(const Buffer& src, std::size_t src_first, std::size_t first, std::size_t n);
   void fill_float(float v);
   void fill_uint(uint32_t v);
   std::vector<float> download_floats() const;

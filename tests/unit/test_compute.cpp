@@ -122,6 +122,30 @@ TEST(Buffer, UploadDownloadFillAndRange) {
   EXPECT_THROW(parse_elem_type("half"), std::invalid_argument);
 }
 
+// A range of one buffer into another, on the device, what a shader wrote before it included
+// (the gl trainer commits a dispatch's staged parameters so); ranges outside either are refused.
+TEST(Buffer, CopyFromTakesARangeAfterShaderWrites) {
+  current();
+  auto p = get_program({.compute = "tests/data/shaders/poly.comp", .defines = {{"LOCAL_SIZE", "32"}}});
+  Buffer x(ElemType::float32, 64), y(ElemType::float32, 64), z(ElemType::float32, 16);
+  std::vector<float> xs(64);
+  for (int i = 0; i < 64; ++i) xs[std::size_t(i)] = 0.01f * float(i);
+  x.upload(xs.data(), 0, xs.size());
+  z.fill_float(-1.f);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, x.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, y.id());
+  p->set_uniform("u_count", {64.0});
+  p->set_uniform("u_scale", {0.5});
+  dispatch_without_barrier(*p, 2);  // no barrier: copy_from must order the copy after the writes
+  z.copy_from(y, 40, 4, 8);
+  const std::vector<float> ys = y.download_floats(), zs = z.download_floats();
+  for (int i = 0; i < 16; ++i)
+    EXPECT_EQ(zs[std::size_t(i)], i >= 4 && i < 12 ? ys[std::size_t(36 + i)] : -1.f) << i;
+  EXPECT_NE(zs[4], 0.f);
+  EXPECT_THROW(z.copy_from(y, 60, 0, 8), std::out_of_range);
+  EXPECT_THROW(z.copy_from(y, 0, 12, 8), std::out_of_range);
+}
+
 // The pool hands out only buffers nobody holds, the smallest idle one that is large enough and
 // of the type asked for, and keeps what was written to it.
 TEST(Buffer, PooledBuffersAreReusedOnlyWhenIdle) {
