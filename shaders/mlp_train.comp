@@ -3,9 +3,10 @@
 // `lane` carries sample `lane` of each minibatch through forward and backward; then lane j
 // updates the weight rows j, j + MLP_BATCH, ... with the minibatch gradient summed over the
 // samples in a fixed order (deterministic) and Adam. Parameters are in the padded vec4 layout
-// of runtime/nn/mlp_shader.h. Results reach the state buffer only when the dispatch is sound:
-//  - llvmpipe ends every loop of an invocation after 65,535 iterations in total; the sentinel
-//    loop at the end notices, and the dispatch commits nothing (status 3);
+// of runtime/nn/mlp_shader.h. Results reach the state buffer only when the dispatch is sound (the
+// kernel writes them to `staged`, the host copies them: mlp/train_io.glsl):
+//  - llvmpipe ends every loop of an invocation after 65,535 iterations in total; a check after
+//    the last loop notices (mlp/loop_limit.glsl), and the dispatch commits nothing (status 3);
 //  - a step whose loss or deltas are not finite stops the net before its update (status 1,
 //    the parameters committed are the last finite ones); so does one in which a sample's squared
 //    error is above the net's sample_limit (status 4; a non-finite loss goes first, then this,
@@ -20,8 +21,8 @@
 layout(local_size_x = MLP_BATCH) in;
 
 #include "mlp/train_io.glsl"
+#include "mlp/loop_limit.glsl"
 layout(std430, binding = 4) buffer Scratch { vec4 scratch[]; };  // per net: arrays not in shared memory
-uniform int u_zero;      // never set: 0, a loop bound the compiler cannot see through
 
 #define B MLP_BATCH
 #define MLP_ROLLED(n) ((n) + u_zero)
@@ -227,32 +228,33 @@ void main() {
     }
   }
 
-  // Once llvmpipe's loop limiter is spent every loop stops after one pass, so this one falls
-  // short; when it counts to the end, the loops below have the budget they need.
+  // A probe run counts the loop budget its steps left (runtime/nn/gl_trainer.cpp, plan_chunks).
   int count = 0;
-  for (int k = 0; k < u_sentinel; ++k) ++count;
-  if (count < u_sentinel) sh_cut = 1u;
+  if (u_probe != 0)
+    for (int k = 0; k < u_probe_count; ++k) ++count;
   sh_loss[lane] = loss_sum;
   SYNC();
-  const bool commit = sh_cut == 0u && status != 2 && u_probe == 0;
+  if (lane == 0) {
+    double total = 0.0lf;
+    for (int s = 0; s < B; ++s) total += sh_loss[s];
+    ctl[net].loss_sum += total;
+  }
+  if (status != 2 && u_probe == 0) {
+    for (int k = 0; k < MLP_ROLLED((MLP_PQ + B - 1) / B); ++k) {
+      int p = k * B + lane;
+      if (p < MLP_PQ) {
+        staged[base + uint(p)] = P4(p);
+        staged[base + uint(MLP_PQ + p)] = M4(p);
+        staged[base + uint(2 * MLP_PQ + p)] = V4(p);
+      }
+    }
+  }
+  // After every other loop: was any cut short? Then the host keeps nothing of this dispatch.
+  if (mlp_loops_were_cut()) sh_cut = 1u;
+  SYNC();
   if (lane == 0) {
     ctl[net].done = done;
     ctl[net].status = sh_cut != 0u ? 3 : status;
     ctl[net].remaining = count;
-    if (commit) {
-      double total = 0.0lf;
-      for (int s = 0; s < B; ++s) total += sh_loss[s];
-      ctl[net].loss_sum += total;
-    }
-  }
-  if (commit) {
-    for (int k = 0; k < MLP_ROLLED((MLP_PQ + B - 1) / B); ++k) {
-      int p = k * B + lane;
-      if (p < MLP_PQ) {
-        state[base + uint(p)] = P4(p);
-        state[base + uint(MLP_PQ + p)] = M4(p);
-        state[base + uint(2 * MLP_PQ + p)] = V4(p);
-      }
-    }
   }
 }

@@ -9,9 +9,10 @@
 //
 // The arrays stay in registers only while every index is a literal: the step is straight-line
 // code written per architecture by runtime/nn/mlp_per_net.cpp (the MLP_R_* defines). Results
-// reach the state buffer only when the dispatch is sound, as in mlp_train.comp:
-//  - llvmpipe ends every loop of an invocation after 65,535 iterations in total; the sentinel
-//    loop at the end notices, and the dispatch commits nothing (status 3);
+// reach the state buffer only when the dispatch is sound, as in mlp_train.comp (written to
+// `staged`, copied by the host: mlp/train_io.glsl):
+//  - llvmpipe ends every loop of an invocation after 65,535 iterations in total; a check after
+//    the last loop notices (mlp/loop_limit.glsl), and the dispatch commits nothing (status 3);
 //  - a step whose loss or deltas are not finite stops the net before its update (status 1); so
 //    does one in which a sample's squared error is above the net's sample_limit (status 4; a
 //    non-finite loss goes first, then this, then non-finite deltas, as the cpu backend checks);
@@ -24,6 +25,7 @@
 layout(local_size_x = MLP_NETS_PER_GROUP) in;
 
 #include "mlp/train_io.glsl"
+#include "mlp/loop_limit.glsl"
 // The same buffers as textures, for reading.
 layout(binding = 0) uniform samplerBuffer u_state;
 layout(binding = 1) uniform samplerBuffer u_train_x;
@@ -97,24 +99,25 @@ void main() {
     }
   }
 
-  // Once llvmpipe's loop limiter is spent every loop stops after one pass, so this one falls
-  // short; when it counts to the end, the loop below has the budget it needs.
+  // A probe run counts the loop budget its steps left (runtime/nn/gl_trainer.cpp, plan_chunks).
   int count = 0;
-  for (int k = 0; k < u_sentinel; ++k) ++count;
-  const bool cut = count < u_sentinel;
-  ctl[net].done = done;
-  ctl[net].status = cut ? 3 : status;
-  ctl[net].remaining = count;
-  if (!cut && status != 2 && u_probe == 0) {
-    ctl[net].loss_sum += loss_sum;
+  if (u_probe != 0)
+    for (int k = 0; k < u_probe_count; ++k) ++count;
+  ctl[net].loss_sum += loss_sum;
+  if (status != 2 && u_probe == 0) {
     // One store of each kind per pass, the value picked by selects: written out straight, the
     // stores (each a loop over the lanes) took LLVM most of the compile time.
     for (int k = 0; k < MLP_PQ; ++k) {
       vec4 p = vec4(0.0), m = vec4(0.0), v = vec4(0.0);
       MLP_R_PICK(k)
-      state[base + k] = p;
-      state[base + MLP_PQ + k] = m;
-      state[base + 2 * MLP_PQ + k] = v;
+      staged[base + k] = p;
+      staged[base + MLP_PQ + k] = m;
+      staged[base + 2 * MLP_PQ + k] = v;
     }
   }
+  // After every other loop: was any cut short? Then the host keeps nothing of this dispatch.
+  const bool cut = mlp_loops_were_cut();
+  ctl[net].done = done;
+  ctl[net].status = cut ? 3 : status;
+  ctl[net].remaining = count;
 }

@@ -56,8 +56,8 @@ constexpr std::size_t kControlWords = sizeof(GlControl) / 4;
 
 enum Status { kOk = 0, kStopped = 1, kLate = 2, kCut = 3, kExploded = 4 };
 
-// A probe run's sentinel bound: far above any loop budget, so it counts what is left.
-constexpr int kProbeSentinel = 1 << 22;
+// A probe run's counting loop bound: far above any loop budget, so it counts what is left.
+constexpr int kProbeCount = 1 << 22;
 
 // A round of dispatches (one per architecture, run_epoch) aims at this long, so that a stop
 // (Ctrl-C, a progress function's "stop") is seen within about this time even in a long epoch;
@@ -90,8 +90,9 @@ struct Group {
   std::shared_ptr<gl::Program> program;
   TrainLayout layout;
   std::unique_ptr<gl::Buffer> state, scratch, control;
+  std::unique_ptr<gl::Buffer> staged;  // what the last dispatch made, state's layout (mlp/train_io.glsl)
   std::unique_ptr<gl::BufferTexture> state_texture;  // the per-network kernel reads state through it
-  int sentinel = 0;  // loop iterations the kernel needs after its sentinel loop
+  int after_steps = 0;  // loop iterations a dispatch runs after its steps (staging, the loss sum, the check)
   long long chunk = 0;      // steps per dispatch now (timed, at most max_chunk)
   long long max_chunk = 0;  // the loop budget's bound (or steps_per_dispatch when forced)
   GlGroupReport report;
@@ -259,6 +260,7 @@ class Job {
         auto padded = pack_padded(g.spec, net.params.data());
         g.state->upload(padded.data(), 4 * 3 * PQ * k, padded.size());
       }
+      g.staged = std::make_unique<gl::Buffer>(gl::ElemType::vec4, g.state->count());
       g.scratch = std::make_unique<gl::Buffer>(gl::ElemType::vec4, std::max<std::size_t>(1, g.layout.scratch_vec4s * n));
       g.control = std::make_unique<gl::Buffer>(gl::ElemType::uint32, kControlWords * n);
       if (g.layout.per_net) {
@@ -269,9 +271,10 @@ class Job {
           buf_.order_texture = std::make_unique<gl::BufferTexture>(*buf_.order);
         }
       }
-      // After the sentinel: the commit loop over the parameters, the loss sum, a margin.
-      g.sentinel = g.layout.per_net ? int(3 * PQ) + 8
-                                    : int((PQ + std::size_t(cfg_.batch) - 1) / std::size_t(cfg_.batch)) + cfg_.batch + 8;
+      // After the steps: the loop staging the parameters, the loss sum's, the check's two passes
+      // (a loop of n passes spends n + 1), a margin.
+      g.after_steps = g.layout.per_net ? int(PQ) + 8
+                                       : int((PQ + std::size_t(cfg_.batch) - 1) / std::size_t(cfg_.batch)) + cfg_.batch + 8;
       g.report.arch = g.spec.describe();
       g.report.nets = int(n);
       g.report.layout = g.layout.describe();
@@ -297,9 +300,9 @@ class Job {
   // caller's barrier does, one for every dispatch issued before it).
   void issue(Group& g, const std::vector<GlControl>& ctl, bool probe) {
     g.control->upload(ctl.data(), 0, ctl.size() * kControlWords);
-    const gl::Buffer* bind[7] = {buf_.train_x.get(), buf_.train_y.get(), buf_.order.get(), g.state.get(),
-                                 g.scratch.get(),    g.control.get(),    buf_.bias.get()};
-    for (unsigned i = 0; i < 7; ++i) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, i, bind[i]->id());
+    const gl::Buffer* bind[8] = {buf_.train_x.get(), buf_.train_y.get(), buf_.order.get(), g.state.get(),
+                                 g.scratch.get(),    g.control.get(),    buf_.bias.get(),  g.staged.get()};
+    for (unsigned i = 0; i < 8; ++i) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, i, bind[i]->id());
     if (g.layout.per_net) {
       g.state_texture->bind(0);
       buf_.train_x_texture->bind(1);
@@ -315,7 +318,7 @@ class Job {
     p.set_uniform("u_bias_len", {double(buf_.bias_len)});
     p.set_uniform("u_lr", {probe ? 0.0 : cfg_.lr});
     p.set_uniform("u_probe", {probe ? 1.0 : 0.0});
-    p.set_uniform("u_sentinel", {double(probe ? kProbeSentinel : g.sentinel)});
+    p.set_uniform("u_probe_count", {double(kProbeCount)});
     std::size_t groups = ctl.size();
     if (g.layout.per_net) {
       // Up to kNetsPerGroup networks a workgroup, but at least one workgroup per renderer thread
@@ -345,8 +348,8 @@ class Job {
       read_back(g, ctl.size(), out);
       return (long long)out[0].remaining;
     };
-    const long long r1 = gl::current().info().software ? remaining_after(1) : kProbeSentinel;
-    if (r1 >= kProbeSentinel) {
+    const long long r1 = gl::current().info().software ? remaining_after(1) : kProbeCount;
+    if (r1 >= kProbeCount) {
       g.max_chunk = steps_;  // no limiter: up to one dispatch per epoch, as time allows
       g.chunk = std::min(steps_, kFirstChunk);
     } else {
@@ -354,11 +357,11 @@ class Job {
       g.report.loop_budget = r1;
       g.report.loop_cost_per_step = cost;
       const long long margin = 16 + r1 / 50;
-      if (r1 < g.sentinel + margin || cost <= 0)
+      if (r1 < g.after_steps + margin || cost <= 0)
         throw std::runtime_error(g.spec.describe() + ": one training step needs more loop iterations than this GL " +
                                  "driver runs per shader invocation (" + gl::current().info().renderer +
                                  " stops at 65,535); train it with backend = \"cpu\"");
-      g.chunk = g.max_chunk = std::min(steps_, 1 + (r1 - g.sentinel - margin) / cost);
+      g.chunk = g.max_chunk = std::min(steps_, 1 + (r1 - g.after_steps - margin) / cost);
     }
     if (opt_.steps_per_dispatch > 0) g.chunk = g.max_chunk = std::min(steps_, opt_.steps_per_dispatch);
   }
@@ -401,6 +404,7 @@ class Job {
   void settle(Group& g, int e, const std::vector<GlControl>& ctl, const std::vector<GlControl>& out, double seconds) {
     ++g.report.dispatches;
     bool cut = false, cut_at_one = false;
+    std::vector<char> sound(g.runs.size(), 0);  // its staged state is committed
     for (std::size_t k = 0; k < g.runs.size(); ++k) {
       if (ctl[k].limit <= 0) continue;
       NetRun& r = g.runs[k];
@@ -413,6 +417,7 @@ class Job {
           [[fallthrough]];
         case kStopped:
         case kExploded:
+          sound[k] = 1;
           r.step += c.done;
           r.t += c.done;
           r.loss_sum = c.loss_sum;
@@ -434,6 +439,7 @@ class Job {
           throw std::logic_error("gl trainer: unknown kernel status " + std::to_string(c.status));
       }
     }
+    commit(g, sound);
     if (!cut) {
       long long longest = 0;
       for (const GlControl& c : ctl) longest = std::max<long long>(longest, c.limit);
@@ -446,6 +452,18 @@ class Job {
                                "driver runs per shader invocation; train it with backend = \"cpu\"");
     g.chunk = std::max(1LL, g.chunk / 2);
     g.max_chunk = g.chunk;
+  }
+
+  // The staged state of each net whose dispatch was sound becomes its state (runs of neighbours in
+  // one copy); the others' stays as it was before the dispatch.
+  void commit(Group& g, const std::vector<char>& sound) {
+    const std::size_t per_net = 4 * 3 * padded_chunks(g.spec);  // floats
+    for (std::size_t k = 0; k < sound.size();) {
+      std::size_t end = k;
+      while (end < sound.size() && sound[end]) ++end;
+      if (end > k) g.state->copy_from(*g.staged, k * per_net, k * per_net, (end - k) * per_net);
+      k = end + (end == k);
+    }
   }
 
   // Epoch e of every group, in rounds: each group with steps left gets one dispatch, and all of a

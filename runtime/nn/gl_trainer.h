@@ -7,7 +7,9 @@
 // Before training an architecture the backend measures, with two probe dispatches, how many
 // loop iterations a step costs in its compiled kernel, and splits each epoch into dispatches
 // that stay within the budget; every dispatch reports the steps it finished and whether the
-// limiter cut it short (then nothing is committed and the chunk is re-run at half the size).
+// limiter cut any of its loops short, checked after the last one (then nothing is committed and
+// the chunk is re-run at half the size): a dispatch writes its parameters and moments to a
+// staging buffer, copied over the state only when it reports sound.
 #pragma once
 #include <cstddef>
 #include <string>

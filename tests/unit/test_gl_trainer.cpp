@@ -555,6 +555,39 @@ TEST(GlTrainer, LargestArchitectureTrainsLikeOracle) {
   EXPECT_GT(max_abs_diff(r.final_params, net.params), 1e-3);
 }
 
+// A deep, wide network (64x24) fills llvmpipe's loop budget in a few steps. However an epoch is
+// split into dispatches (one step each; as many as the budget allows, what the backend picks first;
+// far too many, cut short and re-run at half the size) the result is the same to the bit and the
+// oracle's. The kernel used to prove the budget with a counting loop and then write its results
+// back in another loop, which the limiter cut in the fullest dispatches: the last layers kept
+// their parameters from before the dispatch, reported as sound.
+TEST(GlTrainer, DispatchSizesNeverChangeADeepWideNetsTraining) {
+  sn::gl::current();
+  MlpSpec spec = spec_of(std::vector<int>(24, 64));
+  Mlp net(spec, Init::xavier, 1);
+  Dataset data = phong_like(160, 16, 11);  // 20 steps
+  TrainConfig cfg;
+  cfg.epochs = 1;
+  cfg.lr = 1e-3;
+  GlTrainer single(GlTrainOptions{1, 0, Kernel::per_sample}), fitted, greedy(GlTrainOptions{1 << 20, 0, Kernel::per_sample});
+  auto s = single.train({&net}, data, cfg, nullptr)[0];
+  auto f = fitted.train({&net}, data, cfg, nullptr)[0];
+  auto g = greedy.train({&net}, data, cfg, nullptr)[0];
+  EXPECT_EQ(s.steps, 20);
+  EXPECT_EQ(f.final_params, s.final_params);
+  EXPECT_EQ(g.final_params, s.final_params);
+  EXPECT_EQ(f.val_mse, s.val_mse);
+  EXPECT_EQ(f.train_mse, s.train_mse);
+  EXPECT_EQ(fitted.report()[0].cut_dispatches, 0);
+  if (sn::gl::current().info().software) {
+    EXPECT_GT(fitted.report()[0].loop_cost_per_step, 0);
+    EXPECT_GT(greedy.report()[0].cut_dispatches, 0);
+  }
+  auto o = oracle::train(spec, net.params, data, cfg);
+  EXPECT_LE(max_abs_diff(s.final_params, o.final_params), 1e-4);
+  EXPECT_NEAR(s.val_mse[0], o.val_mse[0], 1e-4 * o.val_mse[0]);
+}
+
 // A training step that needs more loop iterations than llvmpipe runs per shader invocation (the
 // largest network with batch 256) is refused before any training, saying so.
 TEST(GlTrainer, StepBeyondTheLoopLimitIsAClearError) {
