@@ -17,8 +17,8 @@ uniform uint u_first_group;   // workgroup offset of this dispatch (large inputs
 uniform uint u_param_offset;  // first parameter vec4 of network 0
 uniform uint u_param_stride;  // vec4s from one network's parameters to the next
 uniform uint u_partials;      // partial sums per network
-uniform int u_sentinel;
 uniform int u_zero;  // never set: 0, a loop bound the compiler cannot see through
+#include "mlp/loop_limit.glsl"
 
 shared vec4 sh_u[MLP_EVAL_LOCAL_SIZE * MLP_UQ];  // each row's units
 
@@ -58,11 +58,6 @@ void main() {
 #endif
   MLP_FORWARD()
 
-  // Once llvmpipe's loop limiter is spent every loop stops after one pass: flag the result.
-  int count = 0;
-  for (int k = 0; k < u_sentinel; ++k) ++count;
-  if (count < u_sentinel) cut[net] = 1u;
-
 #if MLP_EVAL_LOSS
   double se = 0.0lf;
   for (int o = 0; o < MLP_OUT; ++o) {
@@ -81,4 +76,6 @@ void main() {
     for (int o = 0; o < MLP_OUT; ++o)
       outs[(net * u_rows + row) * uint(MLP_OUT) + uint(o)] = MLP_UNIT(MLP_LAYERS, MLP_OUT_UQ, o / 4)[o % 4];
 #endif
+  // After every other loop: llvmpipe's loop limiter cut one short, the results are not to be used.
+  if (mlp_loops_were_cut()) cut[net] = 1u;
 }

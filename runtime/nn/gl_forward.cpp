@@ -15,8 +15,6 @@ namespace sn::nn {
 
 namespace {
 
-// What the shader needs after its sentinel loop: the workgroup's sum (at most 8 rows) and a margin.
-constexpr int kEvalSentinel = 16;
 // GL guarantees at least 65,535 workgroups along x.
 constexpr std::size_t kMaxGroupsPerDispatch = 65535;
 
@@ -60,7 +58,6 @@ void run_eval(const MlpSpec& spec, bool loss, const GlParams& p, const gl::Buffe
   program->set_uniform("u_rows", {double(rows)});
   program->set_uniform("u_param_offset", {double(p.offset)});
   program->set_uniform("u_param_stride", {double(p.stride)});
-  program->set_uniform("u_sentinel", {double(kEvalSentinel)});
   if (loss) program->set_uniform("u_partials", {double(groups)});
   for (std::size_t g0 = 0; g0 < groups; g0 += kMaxGroupsPerDispatch) {
     program->set_uniform("u_first_group", {double(g0)});

@@ -88,4 +88,26 @@ fails("not whole rows of 5 inputs", function() net:forward(sn.buffer { type = "f
 fails("dataset has 6 inputs", function() net:forward(data) end)
 fails("unknown dataset set 'test'", function() a:forward(data, "test") end)
 fails("a Buffer, a Dataset or a table of samples expected", function() net:forward(3) end)
+
+-- llvmpipe's loop budget (65,535 iterations per invocation): mlp_eval.comp checks after its last
+-- loop whether any was cut. An activation that loops 10,000 times per call (the identity, slowly):
+-- one layer of 4 units calls it once and is right; eight layers of 8 call it 16 times, and
+-- net:forward is an error naming the network instead of numbers from loops stopped after a pass.
+local reference = require "reference_forward"
+sn.activation.define {
+  name = "slow_identity",
+  glsl = "vec4 y = vec4(0.0); for (int i = 0; i < 10000; ++i) y = 0.5 * (y + x); return y;",
+  grad = "vec4(1.0)",
+  lua = function(x) return x end,
+  lua_grad = function() return 1 end,
+}
+reference.custom.slow_identity = function(z) return z end
+local slow = sn.mlp { inputs = 6, hidden = { 4 }, activation = "slow_identity", seed = 1 }
+local x = { 0.1, 0.2, 0.3, 0.4, 0.5, 0.6 }
+near(slow:forward(x), forward(slow, x), 1e-5, "slow_identity 6 -> 4 -> 3")
+if sn.gl_info().software then
+  slow = sn.mlp { inputs = 6, hidden = { 8, 8, 8, 8, 8, 8, 8, 8 }, activation = "slow_identity", seed = 1 }
+  fails("mlp%(6 %-> 8x8 %-> 3, slow_identity%): one forward pass needs more loop iterations than this GL driver",
+        function() slow:forward(x) end)
+end
 print("ok")
