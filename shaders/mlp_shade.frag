@@ -7,7 +7,8 @@
 // Host-made #defines besides the architecture's: MLP_ATTRS (attachments read), MLP_GATHER_INPUTS
 // (code filling the array u0[] of input vec4s from them, through mlp_encode when the network
 // encodes its inputs: mlp/encoding.glsl), MLP_MAX_WIDTH4, MLP_CONDITIONS (uniform
-// inputs of a conditioned network, when it has any).
+// inputs of a conditioned network, when it has any), MLP_LOOP_CHECK (1 on a software renderer:
+// report a loop llvmpipe's limiter cut, mlp/loop_limit.glsl).
 #define COLOR_SPACE MLP_COLOR
 #include "color.glsl"
 #include "mlp/activation.glsl"
@@ -27,6 +28,10 @@ uniform sampler2D u_attr[MLP_ATTRS];  // the G-buffer attachments, in the networ
 uniform float u_condition[MLP_CONDITIONS];  // a conditioned network's parameter inputs
 #endif
 uniform int u_zero;  // never set: 0; the run table keeps a wide layer's input loop rolled with it
+#if MLP_LOOP_CHECK
+#include "mlp/loop_limit.glsl"
+layout(std430, binding = 1) writeonly buffer LoopCut { uint loops_cut; };  // 1: some pixel's loops were cut
+#endif
 
 layout(location = 0) out vec4 o_color;
 
@@ -55,4 +60,7 @@ void main() {
   MLP_FORWARD()
   vec3 y = h[MLP_LAYERS & 1][0].xyz;
   o_color = vec4(color_to_rgb(y), coverage);
+#if MLP_LOOP_CHECK
+  if (mlp_loops_were_cut()) loops_cut = 1u;
+#endif
 }

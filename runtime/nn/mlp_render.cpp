@@ -9,6 +9,7 @@
 #include <string>
 
 #include "gl/buffer.h"
+#include "gl/context.h"
 #include "gl/program.h"
 #include "nn/mlp_shader.h"
 #include "nn/render_inputs.h"
@@ -107,6 +108,11 @@ void draw_mlp(const std::shared_ptr<const Mlp>& net, const scene::GBuffer& g, gl
   if (!net->conditions.empty()) desc.defines["MLP_CONDITIONS"] = std::to_string(net->conditions.size());
   desc.defines["MLP_WEIGHTS_UBO"] = ubo ? "1" : "0";
   desc.defines["MLP_MAX_WIDTH4"] = std::to_string(chunks4(net->spec.max_width()));
+  // llvmpipe ends every loop of an invocation after 65,535 iterations, silently: there the shader
+  // reports a loop it cut. Built-in activations stay far below (64x32: about 5,600, as
+  // mlp_eval.comp counts them); an activation defined with a loop of its own may not.
+  const bool check_loops = gl::current().info().software;
+  desc.defines["MLP_LOOP_CHECK"] = check_loops ? "1" : "0";
   auto prog = gl::get_program(desc);
   std::vector<double> units;
   for (std::size_t a = 0; a < attributes.size(); ++a) {
@@ -123,6 +129,12 @@ void draw_mlp(const std::shared_ptr<const Mlp>& net, const scene::GBuffer& g, gl
     prog->set_uniform("u_condition", std::vector<double>(inputs.conditions.begin(), inputs.conditions.end()));
   gl::Buffer& params = params_of(net);
   glBindBufferBase(ubo ? GL_UNIFORM_BUFFER : GL_SHADER_STORAGE_BUFFER, 0, params.id());
+  std::shared_ptr<gl::Buffer> cut;
+  if (check_loops) {
+    cut = gl::pooled_buffer(gl::ElemType::uint32, 1);
+    cut->fill_uint(0);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, cut->id());
+  }
   out.bind();
   glDisable(GL_DEPTH_TEST);
   static GLuint vao = 0;  // core profile draws need a VAO, even one without buffers
@@ -136,6 +148,12 @@ void draw_mlp(const std::shared_ptr<const Mlp>& net, const scene::GBuffer& g, gl
   glBindVertexArray(0);
   glEnable(GL_DEPTH_TEST);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  uint32_t loops_cut = 0;
+  if (cut) cut->download(&loops_cut, 0, 1);
+  if (loops_cut)
+    throw std::runtime_error(net->spec.describe() + ": one forward pass needs more loop iterations than this GL driver " +
+                             "runs per shader invocation (" + gl::current().info().renderer +
+                             " stops at 65,535); use a smaller network or an activation without a long loop");
 }
 
 std::size_t mlp_weight_uploads() { return g_uploads; }
