@@ -9,6 +9,7 @@
 
 #include "gl/context.h"
 #include "gl/program.h"
+#include "nn/cpu_net.h"
 #include "nn/mlp_shader.h"
 
 namespace sn::nn {
@@ -67,12 +68,21 @@ void run_eval(const MlpSpec& spec, bool loss, const GlParams& p, const gl::Buffe
   cut.download(flags.data(), 0, flags.size());
   for (uint32_t f : flags)
     if (f)
-      throw std::runtime_error(spec.describe() + ": one forward pass needs more loop iterations than this GL driver " +
-                               "runs per shader invocation (llvmpipe stops at 65,535); use a smaller network or the " +
-                               "cpu backend");
+      throw loop_budget_error(spec, "forward pass");
 }
 
 }  // namespace
+
+std::runtime_error loop_budget_error(const MlpSpec& spec, const std::string& pass) {
+  Activation without{};
+  const std::string advice =
+      has_cpu_code(spec, &without)
+          ? "use the cpu backend (backend = \"cpu\") or a smaller network"
+          : "use a smaller network or an activation without a long loop (" + activation_without_cpu_code(without) +
+                ", so the cpu backend cannot run it either)";
+  return std::runtime_error(spec.describe() + ": one " + pass + " needs more loop iterations than this GL driver runs " +
+                            "per shader invocation (" + gl::current().info().renderer + " stops at 65,535); " + advice);
+}
 
 void gl_forward(const MlpSpec& spec, const GlParams& p, const gl::Buffer& x, std::size_t rows, gl::Buffer& out) {
   check_params(spec, p);

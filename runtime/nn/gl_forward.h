@@ -35,6 +35,11 @@ std::vector<double> gl_squared_errors(const MlpSpec& spec, const GlParams& param
 // (shaders/encoding_check.comp), rows x spec.width(0) floats. The spec must encode something.
 std::vector<float> gl_encode(const MlpSpec& spec, const std::vector<float>& x);
 
+// The error for a network whose `pass` ("forward pass", "training step") needs more loop
+// iterations than the driver runs per shader invocation (llvmpipe stops at 65,535), with what to
+// do: the cpu backend where it has code for the activations, else a smaller network.
+std::runtime_error loop_budget_error(const MlpSpec& spec, const std::string& pass);
+
 // One network over host rows (rows x net.spec.inputs floats): its outputs, rows x outputs.
 std::vector<float> gl_forward(const Mlp& net, const std::vector<float>& x);
 // One network over a buffer of rows: a new float32 buffer of rows x outputs.

@@ -358,9 +358,7 @@ class Job {
       g.report.loop_cost_per_step = cost;
       const long long margin = 16 + r1 / 50;
       if (r1 < g.after_steps + margin || cost <= 0)
-        throw std::runtime_error(g.spec.describe() + ": one training step needs more loop iterations than this GL " +
-                                 "driver runs per shader invocation (" + gl::current().info().renderer +
-                                 " stops at 65,535); train it with backend = \"cpu\"");
+        throw loop_budget_error(g.spec, "training step");
       g.chunk = g.max_chunk = std::min(steps_, 1 + (r1 - g.after_steps - margin) / cost);
     }
     if (opt_.steps_per_dispatch > 0) g.chunk = g.max_chunk = std::min(steps_, opt_.steps_per_dispatch);
@@ -448,8 +446,7 @@ class Job {
     }
     ++g.report.cut_dispatches;
     if (cut_at_one)
-      throw std::runtime_error(g.spec.describe() + ": one training step needs more loop iterations than this GL " +
-                               "driver runs per shader invocation; train it with backend = \"cpu\"");
+      throw loop_budget_error(g.spec, "training step");
     g.chunk = std::max(1LL, g.chunk / 2);
     g.max_chunk = g.chunk;
   }

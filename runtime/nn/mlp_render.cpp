@@ -11,6 +11,7 @@
 #include "gl/buffer.h"
 #include "gl/context.h"
 #include "gl/program.h"
+#include "nn/gl_forward.h"
 #include "nn/mlp_shader.h"
 #include "nn/render_inputs.h"
 
@@ -151,9 +152,7 @@ void draw_mlp(const std::shared_ptr<const Mlp>& net, const scene::GBuffer& g, gl
   uint32_t loops_cut = 0;
   if (cut) cut->download(&loops_cut, 0, 1);
   if (loops_cut)
-    throw std::runtime_error(net->spec.describe() + ": one forward pass needs more loop iterations than this GL driver " +
-                             "runs per shader invocation (" + gl::current().info().renderer +
-                             " stops at 65,535); use a smaller network or an activation without a long loop");
+    throw loop_budget_error(net->spec, "forward pass");
 }
 
 std::size_t mlp_weight_uploads() { return g_uploads; }

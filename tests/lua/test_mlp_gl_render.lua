@@ -108,14 +108,7 @@ fails("'uniform' %(valid: auto, storage%)", function() net:render(g, { weights =
 -- slowly; no cpu code, so the fragment shader draws it): one layer of 4 calls it once and draws
 -- right; eight layers of 8 call it 16 times, and the render is an error, not a wrong picture
 -- (before, 0.37 MSE from the same network with a loop-free identity).
-sn.activation.define {
-  name = "slow_identity",
-  glsl = "vec4 y = vec4(0.0); for (int i = 0; i < 10000; ++i) y = 0.5 * (y + x); return y;",
-  grad = "vec4(1.0)",
-  lua = function(x) return x end,
-  lua_grad = function() return 1 end,
-}
-require("reference_forward").custom.slow_identity = function(z) return z end
+require "slow_identity"
 check(sn.mlp { inputs = 6, hidden = { 4 }, activation = "slow_identity", seed = 7, input_names = { "normal", "view" } },
       "slow_identity 4")
 if sn.gl_info().software then
