@@ -32,9 +32,28 @@ local function number_param(model, name, level)
   end
 end
 
+-- The locals and upvalues the function `level` levels above the caller sees now (sn.live.bind's
+-- caller: the script), so that an expression naming the script's locals reads in a plain run too,
+-- where no console collects them.
+local function scope_of(level)
+  local scope = {}
+  local info = debug.getinfo(level + 1, "f")
+  for i = 1, info and info.func and math.huge or 0 do
+    local name, v = debug.getupvalue(info.func, i)
+    if not name then break end
+    scope[name] = v
+  end
+  for i = 1, math.huge do
+    local name, v = debug.getlocal(level + 1, i)
+    if not name then break end
+    if name:sub(1, 1) ~= "(" then scope[name] = v end  -- later locals shadow earlier ones
+  end
+  return scope
+end
+
 -- The binding's get, set and name, from its `param` (or its own get/set); then the range the
--- value must stay in when the param has one.
-local function accessors(o, level)
+-- value must stay in when the param has one. `scope`: the caller's locals (scope_of).
+local function accessors(o, level, scope)
   if o.get or o.set then
     if type(o.get) ~= "function" or type(o.set) ~= "function" then
       error("sn.live.bind: 'get' and 'set' must both be functions (get() -> number, set(number))", level + 1)
@@ -80,13 +99,23 @@ local function accessors(o, level)
            end,
            function(v) net:set_input(input, v) end, p, cond.min, cond.max  -- the trained range
   end
-  -- A Lua expression, evaluated where console lines run (globals and the script's locals).
+  -- A Lua expression, evaluated where console lines run (the script's top-level locals as its last
+  -- good run left them, the globals), and before the first run ends or in a plain run, with the
+  -- locals the sn.live.bind call saw.
   local get_chunk, err = loadstring("return " .. p, "=" .. p)
   local set_chunk = loadstring(p .. " = ...", "=" .. p)
   if not get_chunk or not set_chunk then
     error(("sn.live.bind: param '%s' is not an assignable Lua expression (%s)"):format(p, tostring(err)), level + 1)
   end
-  local env = live._console_env()
+  local env = setmetatable({}, {
+    __index = function(_, k)
+      local l = S.locals
+      if l and l[k] ~= nil then return l[k] end
+      if scope[k] ~= nil then return scope[k] end
+      return _G[k]
+    end,
+    __newindex = live._console_env(),
+  })
   setfenv(get_chunk, env)
   setfenv(set_chunk, env)
   return function()
@@ -112,7 +141,7 @@ function live.bind(o)
     end
   end
   local b, min, max = { key = key }, nil, nil
-  b.get, b.set, b.name, min, max = accessors(o, 2)
+  b.get, b.set, b.name, min, max = accessors(o, 2, scope_of(2))
   b.min, b.max = o.min or min, o.max or max
   b.name = o.name or b.name
   if b.min and b.max and b.min >= b.max then error("sn.live.bind: 'min' must be below 'max'", 2) end

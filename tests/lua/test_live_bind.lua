@@ -77,4 +77,19 @@ fails(function() live.bind { key = "k", param = "x", min = 2, max = 1 } end, "'m
 live.bind { key = "b", param = "nothing_here" }
 local none, err = live._key("b", false)
 assert(none == nil and err:find("nothing_here is nil, not a number", 1, true), "a bad expression at the key: " .. tostring(err))
-print("bind: a weight, truth.roughness, input.roughness and get/set step up and down within their ranges; errors name the choices")
+
+-- 6. In a plain run (no console collects the script's locals) an expression may name the
+-- script's locals, as under --watch: binds() shows their values and the key steps them.
+local local_net = sn.mlp { inputs = 6, hidden = { 3 }, outputs = 3, seed = 4 }
+local lw = local_net.layers[2].weight
+live.bind { key = "l", param = "local_net.layers[2].weight[1][2]", step = 0.5 }
+live.bind { key = "m", param = "lw[3][1]" }
+local seen = {}
+for _, b in ipairs(live.binds()) do seen[b.key] = b.value end
+assert(seen.l and math.abs(seen.l - local_net.layers[2].weight[1][2]) < 1e-7,
+       "binds() reads an expression over a local network: " .. tostring(seen.l))
+assert(seen.m and math.abs(seen.m - lw[3][1]) < 1e-7, "and over a local table: " .. tostring(seen.m))
+local l0 = local_net.layers[2].weight[1][2]
+live._key("l", false)
+near(local_net.layers[2].weight[1][2], l0 + 0.5, "the key steps the local network's weight")
+print("bind: a weight, truth.roughness, input.roughness and get/set step up and down within their ranges; errors name the choices; locals are seen in a plain run")
