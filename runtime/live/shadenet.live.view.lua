@@ -93,6 +93,16 @@ function live.show(spec)
   local copy = { draw = {} }
   for k, v in pairs(spec) do copy[k] = v end
   copy.draw.network, copy.draw.truth = M.drawer(spec, "network"), M.drawer(spec, "truth")
+  -- Where an error about a part's picture points: the user's function where it was defined, or
+  -- for a network or a model this sn.live.show call (what the user can change).
+  local call = debug.getinfo(2, "Sl")
+  local at_call = call and call.currentline > 0 and ("%s:%d"):format(call.short_src, call.currentline) or "sn.live.show"
+  copy.where = {}
+  for _, key in ipairs { "network", "truth" } do
+    local f = spec[key]
+    local info = type(f) == "function" and debug.getinfo(f, "S")
+    copy.where[key] = info and info.linedefined > 0 and ("%s:%d"):format(info.short_src, info.linedefined) or at_call
+  end
   copy.mode = copy.mode or (copy.network and "network" or "truth")
   local scene = spec.scene
   if scene then  -- the scene's first view, light and size unless the show says otherwise
@@ -124,16 +134,25 @@ function M.current_spec(what)
   return spec
 end
 
--- A drawer's result as a Target: Images (scene:render) are uploaded, into `cache` when given.
-local function as_target(t, what, cache, key)
-  if type_is(t, "Target") then return t end
-  if type_is(t, "Image") then
-    local into = cache and cache[key]
-    local out = sn.live_upload(t, into)
-    if cache then cache[key] = out end
-    return out
+-- A drawer's result as a Target of the view's size: Images (scene:render) are uploaded, into
+-- `cache` when given. Anything else is an error at `where` (the user's function).
+local function as_target(t, which, where, view, cache, key)
+  local what = ("%s: sn.live.show's '%s'"):format(where, which)
+  local image, target = type_is(t, "Image"), type_is(t, "Target")
+  if not (image or target) then
+    error(("%s returned %s; it must return a Target or an Image of the view's size (%dx%d)"):format(what,
+      type(t) == "userdata" and tostring(t) or type(t), view.width, view.height), 0)
   end
-  error(("%s must return a Target or an Image, got %s"):format(what, type(t) == "userdata" and tostring(t) or type(t)), 0)
+  local w, h = t:size()
+  if w ~= view.width or h ~= view.height then
+    -- The window, the probe, the heatmap and the side view all take a part at the view's size.
+    error(("%s returned a %dx%d picture for a %dx%d view: draw at view.width x view.height, or give the show a "
+           .. "fixed size (sn.live.show{ size = { %d, %d } })"):format(what, w, h, view.width, view.height, w, h), 0)
+  end
+  if target then return t end
+  local out = sn.live_upload(t, cache and cache[key])
+  if cache then cache[key] = out end
+  return out
 end
 
 function M.draw(spec, which, view, cache)
@@ -149,7 +168,7 @@ function M.draw(spec, which, view, cache)
   if not ok then
     error(message_of(drawn), 0)
   end
-  local out = as_target(drawn, "sn.live.show's '" .. which .. "'", cache, key)
+  local out = as_target(drawn, which, (spec.where or {})[which] or "sn.live.show", view, cache, key)
   if cache then cache[key] = out end
   return out
 end

@@ -84,7 +84,7 @@ fails(function() local img = released:render(phong); return img end, "scene:rend
 assert(scene:render(phong), "a live scene renders")
 
 -- ---- the live API ----
-sn.live.show { truth = function() local tt = sn.target { width = 8, height = 8 } tt:clear { 1, 1, 1, 1 } return tt end }
+sn.live.show { truth = function() local tt = sn.target { width = 8, height = 8 } tt:clear { 1, 1, 1, 1 } return tt end, size = { 8, 8 } }
 fails(function() local p = sn.live.screenshot("shot.xyz"); return p end,
       "sn.live.screenshot: cannot save 'shot.xyz': unknown image extension '.xyz'")
 fails(function() local p = sn.live.screenshot(5); return p end, "sn.live.screenshot: path must be a string, got number")
