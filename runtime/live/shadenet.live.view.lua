@@ -216,11 +216,14 @@ function M.render(spec, view, cache)
 end
 
 -- sn.live.render{ mode = "network" | "truth" | "error" | "side", camera = Camera,
---                 light = {dir = {x,y,z}}, width = 640, height = 480 } -> Target
+--                 light = {dir = {x,y,z}}, width = 640, height = 480, error_scale = 0.25 } -> Target
 -- The image the window shows for that view (side: 2 x 2 panels of width/2 x height/2).
 function live.render(o)
   o = o or {}
-  strict(o, { "mode", "camera", "light", "width", "height" }, "sn.live.render", 2)
+  strict(o, { "mode", "camera", "light", "width", "height", "error_scale" }, "sn.live.render", 2)
+  if o.error_scale ~= nil and not (type(o.error_scale) == "number" and o.error_scale > 0 and o.error_scale < math.huge) then
+    error("sn.live.render: 'error_scale' must be a number > 0 (the error shown as the heatmap's top colour)", 2)
+  end
   if o.mode ~= nil and not is_mode(o.mode) then
     error(("sn.live.render: unknown mode '%s' (valid: %s)"):format(tostring(o.mode), table.concat(MODES, ", ")), 2)
   end
@@ -232,7 +235,9 @@ function live.render(o)
     end
   end
   local spec = M.current_spec("sn.live.render")
-  local ok, r = pcall(M.render, spec, M.resolve_view(spec, o))
+  local view = M.resolve_view(spec, o)
+  view.error_scale = o.error_scale
+  local ok, r = pcall(M.render, spec, view)
   if not ok then error("sn.live.render: " .. tostring(r), 2) end
   return r  -- the picture only
 end
@@ -296,15 +301,17 @@ function live.set_view(o)
 end
 
 -- sn.live.view_code([path]) -> a line of Lua that renders the current view headless and saves
--- it to `path` (default "view.png"); the P key prints it. Numbers are exact (%.17g).
+-- it to `path` (default "view.png"); the P key prints it. It names every setting of the view
+-- that changes its picture (the heatmap's scale too: [ and ] change it). Numbers are exact (%.17g).
 function live.view_code(path)
   local v = S.view
   if not v then return "-- nothing rendered yet" end
   local c = v.camera
   local cam = ("sn.camera { eye = %s, target = %s, fov = %.17g%s }"):format(vec_code(c:eye()), vec_code(c:target()),
     c:fov(), c:aspect() and (", aspect = %.17g"):format(c:aspect()) or "")
-  return ("sn.live.render { mode = %q, camera = %s, light = { dir = %s }, width = %d, height = %d }"
-          .. ":read():save(%q)"):format(v.mode, cam, vec_code(v.light.dir), v.width, v.height, path or "view.png")
+  return ("sn.live.render { mode = %q, camera = %s, light = { dir = %s }, width = %d, height = %d, error_scale = %.17g }"
+          .. ":read():save(%q)"):format(v.mode, cam, vec_code(v.light.dir), v.width, v.height,
+                                        v.error_scale or S.spec and S.spec.error_scale or 0.25, path or "view.png")
 end
 
 
