@@ -9,9 +9,19 @@ local keep = {}
 -- Networks (and tables holding them) are snapshotted when made; every re-run starts from the
 -- snapshot, so the script's edits apply to the trained weights and deleting an edit undoes it.
 live.restorers = {
-  Mlp = {  -- the weights and biases in the shared flat layout; counters stay as they are
-    snapshot = function(net) return net:params() end,
-    restore = function(net, params) net:set_params(params) end,
+  -- The weights and biases in the shared flat layout, and the values its condition inputs render
+  -- with (net:set_input); counters stay as they are.
+  Mlp = {
+    snapshot = function(net)
+      local inputs = {}
+      for _, c in ipairs(net:conditions()) do inputs[c.name] = c.value end
+      return { params = net:params(), inputs = inputs }
+    end,
+    restore = function(net, state)
+      net:set_params(state.params)
+      -- A value outside a range a later training moved the input to stays as that training left it.
+      for name, v in pairs(state.inputs) do pcall(net.set_input, net, name, v) end
+    end,
   },
 }
 
