@@ -433,18 +433,22 @@ void Loop::console() {
   std::string line;
   while (stdin_->take(line)) {
     bool ok = false;
+    call("_line_begin", 0, 0);  // what a line that fails puts back
     if (!console_->execute(line, &ok)) {
       prompt();
       continue;
     }
     lua_settop(L_, 0);
+    lua_pushboolean(L_, ok);
+    call("_line_end", 1, 0);  // a line that failed changed no network (nor the view)
     end_busy();
     update_binds();
-    if (ok) dirty_ = true;  // a line that ran may have changed anything the view depends on
+    // A line that ran may have changed anything the view depends on; one that failed may have
+    // changed what is not a network before its error.
+    dirty_ = true;
     if (ok && !console_->printed_values()) unsaved_ = true;  // lost at the next reload or quit
     take_requests();
-    if (!dirty_) prompt();  // after a redraw otherwise, so the prompt follows its messages
-    else prompt_after_frame_ = true;
+    prompt_after_frame_ = true;  // after the redraw, so the prompt follows its messages
   }
   if (stdin_->at_end()) {
     stdin_.reset();

@@ -34,6 +34,9 @@ local function type_of(v)
   return nil
 end
 
+-- Whether v is a value the restorers know (a network).
+function keep.restorable(v) return (type_of(v)) ~= nil end
+
 function keep.snapshot(v, seen)
   seen = seen or {}
   local _, r = type_of(v)

@@ -37,6 +37,27 @@ function live._end_run(ok)
   S.pending, S.files_before = nil, nil
 end
 
+-- Around each console line: one that fails puts back the networks it may have changed (the kept
+-- ones, the show's, the script's top-level locals that are networks) as they were before it, and
+-- drops the view it asked for, so that a failed line changes nothing the window shows.
+function live._line_begin()
+  local values = {}
+  for _, k in pairs(S.kept) do values[#values + 1] = k.value end
+  if S.spec and keep.restorable(S.spec.network) then values[#values + 1] = S.spec.network end
+  for _, v in pairs(S.locals or {}) do
+    if keep.restorable(v) then values[#values + 1] = v end
+  end
+  S.line_snapshot = snapshot(values)
+end
+
+function live._line_end(ok)
+  if not ok then
+    restore(S.line_snapshot)
+    S.requests.view, S.requests.quit = nil, nil
+  end
+  S.line_snapshot = nil
+end
+
 -- The files to watch besides the script (modules and dofile'd scripts).
 function live._watched()
   local list = {}

@@ -16,4 +16,5 @@ return {
   requests = {},    -- actions asked of the loop from Lua (quit)
   out = {},         -- the loop's targets, reused between frames (by "what WxH")
   backend_said = nil,  -- the console's last line on which backend draws the network view
+  line_snapshot = nil,  -- the networks as they were before the console line in progress
 }
