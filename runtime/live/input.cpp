@@ -107,7 +107,7 @@ const char* Input::help() {
          "      left drag: orbit   wheel: zoom   right drag or arrows: move the light   Home: reset view\n"
          "      [ ] heatmap scale   I: probe the pixel under the cursor (truth, network, error)\n"
          "      S or F12: screenshot   R: record an orbit   P: print the view as Lua\n"
-         "      H: this help   Esc or Q: quit (while training or recording: cancel it; C too)\n";
+         "      H: this help   Esc or Q: quit (while training, recording or running Lua: stop it; C too)\n";
 }
 
 void Input::drag(double dx, double dy, bool light) {

@@ -62,8 +62,8 @@ class Input {
   // True once since the last call when the view changed (a redraw is due).
   bool take_dirty();
   Actions take_actions();
-  // True once when Esc, Q or C was pressed since the last call: long work (training, recording)
-  // stops. The other actions wait for the loop.
+  // True once when Esc, Q or C was pressed since the last call: long work (training, recording,
+  // Lua that runs long) stops. The other actions wait for the loop.
   bool take_cancel();
   static const char* help();  // the key bindings, for the terminal
 

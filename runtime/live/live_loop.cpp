@@ -24,6 +24,7 @@
 #include "live/hud.h"
 #include "live/input.h"
 #include "live/repl.h"
+#include "live/run_guard.h"
 #include "gl/buffer.h"  // gl::finish
 #include "gl/context.h"
 #include "gl/program.h"
@@ -31,6 +32,7 @@
 #include "gl/shader_source.h"
 #include "io/image.h"
 #include "lua/binding.h"
+#include "lua/interrupt.h"
 
 namespace sn::live {
 
@@ -58,24 +60,46 @@ std::string read_all(const std::string& path) {
   return in ? ss.str() : std::string("\x01missing");
 }
 
-// The script's top-level locals (`local net = ...`), taken as its main chunk returns, so that
-// console lines can name them as the script does.
-int g_chunk_ref = LUA_NOREF, g_locals_ref = LUA_NOREF;
-void capture_locals(lua_State* L, lua_Debug* ar) {
-  if (ar->event != LUA_HOOKRET || !lua_getinfo(L, "f", ar)) return;
-  lua_rawgeti(L, LUA_REGISTRYINDEX, g_chunk_ref);
-  bool main_chunk = lua_rawequal(L, -1, -2);
-  lua_pop(L, 2);
-  if (!main_chunk) return;
+// The script's top-level locals (`local net = ...`), so that console lines can name them as the
+// script does. The script runs with a call to this function appended (kLocalsCall): at its end
+// every top-level local is in scope. (A return hook saw them too, but LuaJIT delivers return
+// hooks only without the count hook that lets Esc stop a loop: run_guard.h.)
+constexpr const char* kLocalsCall = "__shadenet_live_locals";
+int g_locals_ref = LUA_NOREF;
+int capture_locals(lua_State* L) {
+  lua_Debug ar;
+  if (!lua_getstack(L, 1, &ar)) return 0;  // level 1: the main chunk that called it
   lua_newtable(L);
   for (int i = 1;; ++i) {
-    const char* name = lua_getlocal(L, ar, i);
+    const char* name = lua_getlocal(L, &ar, i);
     if (!name) break;
     if (name[0] == '(') lua_pop(L, 1);  // temporaries such as "(for index)"
     else lua_setfield(L, -2, name);
   }
   if (g_locals_ref != LUA_NOREF) luaL_unref(L, LUA_REGISTRYINDEX, g_locals_ref);
   g_locals_ref = luaL_ref(L, LUA_REGISTRYINDEX);
+  return 0;
+}
+
+// Loads the script with the call to capture_locals at its end, on its last line's own line (the
+// lines keep their numbers). A script that ends in a top-level `return` gets the call before it;
+// one that returns from inside a block, or that cannot take the call, runs as it is and the
+// console keeps the locals of the last run that could.
+bool load_with_locals(lua_State* L, std::string source, const std::string& chunkname) {
+  if (!source.empty() && source[0] == '#') source.insert(0, "--");  // a #! line, as luaL_loadfile skips it
+  std::string call = std::string(kLocalsCall) + "()";
+  std::string with = source + "\n" + call + "\n";
+  if (luaL_loadbuffer(L, with.data(), with.size(), chunkname.c_str()) == 0) return true;
+  lua_pop(L, 1);
+  static const std::regex last_return(R"((^|\n)return\b[^\n]*\s*$)");
+  std::smatch m;
+  if (std::regex_search(source, m, last_return)) {
+    with = source;
+    with.insert(size_t(m.position(0)) + m[1].length(), call + " ");
+    if (luaL_loadbuffer(L, with.data(), with.size(), chunkname.c_str()) == 0) return true;
+    lua_pop(L, 1);
+  }
+  return false;
 }
 
 int traceback(lua_State* L) {
@@ -113,6 +137,14 @@ class Waker {
   bool woken_ = false;
 };
 
+// While one lives, Esc in the window and Ctrl-C at the terminal stop the Lua it runs with the
+// error "FILE:LINE: interrupted by the user (...)" (run_guard.h, lua/interrupt.h).
+struct Watch {
+  Watch(lua_State* L, RunGuard::Check check) : guard(L, std::move(check)) {}
+  lua::LiveInterrupt ctrl_c;  // made first, gone last: the handler outlives the hook
+  RunGuard guard;
+};
+
 class Loop {
  public:
   Loop(lua_State* L, const LiveOptions& o) : L_(L), o_(o), ctx_(gl::current()), waker_(ctx_.windowed()) {}
@@ -142,6 +174,10 @@ class Loop {
   void redraw();
   void present();
   const char* tick(const std::string& text, double fraction);
+  // Lua runs from here on until the result is gone: Esc and Ctrl-C stop it; `what` is shown in
+  // the window's bar when it runs for long.
+  std::unique_ptr<Watch> watch(const std::string& what);
+  const char* check_run();
   // What the view is drawn at: the window's framebuffer, or headless the --size given (0 x 0:
   // the script's size, sn.live.show{ size = ... }, else 640 x 480).
   std::pair<int, int> view_size() const {
@@ -180,7 +216,10 @@ class Loop {
   std::string snapshot_, shown_path_;
   long shown_count_ = 0;
   bool present_due_ = false;
-  Clock::time_point last_tick_{};
+  Clock::time_point last_tick_{}, ticked_at_{};
+  std::string running_;  // what the outermost watch runs ("examples/x.lua", "the console line")
+  Clock::time_point running_since_{}, running_shown_{};
+  Clock::time_point started_{};  // of the session (SHADENET_LIVE_EXIT_AFTER)
   double exit_after_ = 0, frame_ms_ = 0, view_error_scale_ = 0.25;
   bool dirty_ = true, quit_ = false, prompt_after_frame_ = false;
   std::string shown_title_;
@@ -318,6 +357,8 @@ void Loop::run_script() {
     set_status();
     return;
   }
+  // The same script with the call that takes its locals, where it can have one.
+  if (load_with_locals(L_, source, "@" + o_.script)) lua_remove(L_, -2);
   // Kept networks go back to their snapshot (console edits are gone); the view's size goes to Lua
   // for what the run shows before the first frame (a screenshot taken by the script itself).
   auto [vw, vh] = view_size();
@@ -325,16 +366,19 @@ void Loop::run_script() {
   call("_begin_run", 2, 0);
   unsaved_ = false;
   fallback_errors_.clear();
-  lua_pushvalue(L_, -1);
-  g_chunk_ref = luaL_ref(L_, LUA_REGISTRYINDEX);
   lua_pushcfunction(L_, traceback);
   lua_insert(L_, -2);
   for (const auto& a : o_.args) lua_pushstring(L_, a.c_str());
-  lua_sethook(L_, capture_locals, LUA_MASKRET, 0);
-  bool ok = lua_pcall(L_, int(o_.args.size()), 0, 1) == 0;
-  lua_sethook(L_, nullptr, 0, 0);
-  luaL_unref(L_, LUA_REGISTRYINDEX, g_chunk_ref);
-  g_chunk_ref = LUA_NOREF;
+  if (g_locals_ref != LUA_NOREF) luaL_unref(L_, LUA_REGISTRYINDEX, g_locals_ref), g_locals_ref = LUA_NOREF;
+  lua_pushcfunction(L_, capture_locals);
+  lua_setglobal(L_, kLocalsCall);
+  bool ok = false;
+  {
+    auto watching = watch(o_.script);
+    ok = lua_pcall(L_, int(o_.args.size()), 0, 1) == 0;
+  }
+  lua_pushnil(L_);
+  lua_setglobal(L_, kLocalsCall);
   if (ok && g_locals_ref != LUA_NOREF) {  // the console sees this run's locals from now on
     lua_rawgeti(L_, LUA_REGISTRYINDEX, g_locals_ref);
     luaL_unref(L_, LUA_REGISTRYINDEX, g_locals_ref);
@@ -432,9 +476,13 @@ void Loop::console() {
   if (!stdin_) return;
   std::string line;
   while (stdin_->take(line)) {
-    bool ok = false;
+    bool ok = false, ran = false;
     call("_line_begin", 0, 0);  // what a line that fails puts back
-    if (!console_->execute(line, &ok)) {
+    {
+      auto watching = watch("the console line");
+      ran = console_->execute(line, &ok);
+    }
+    if (!ran) {
       prompt();
       continue;
     }
@@ -488,7 +536,13 @@ void Loop::redraw() {
   fallback_errors_.clear();
   auto t0 = Clock::now();
   std::string err;
-  if (!call("_frame", 1, 3, &err)) {
+  bool drawn = false;
+  {
+    auto watching = watch("the view's functions");
+    drawn = call("_frame", 1, 3, &err);
+  }
+  end_busy();  // a bar shown while a slow view function ran
+  if (!drawn) {
     frame_error_ = err;
     update_watch_set();  // a module the frame required (and that broke) must stay watched
     return set_status();
@@ -538,16 +592,20 @@ int Loop::tick_thunk(lua_State* L) {
 const char* Loop::tick(const std::string& text, double fraction) {
   hud_.set_progress(text, fraction);
   auto now = Clock::now();
+  ticked_at_ = now;
   double since = std::chrono::duration<double>(now - last_tick_).count();
+  const char* why = lua::LiveInterrupt::take() ? "interrupted by the user (Ctrl-C)" : nullptr;
+  if (exit_after_ > 0 && seconds_since(started_) >= exit_after_) why = "stopped: SHADENET_LIVE_EXIT_AFTER ran out", quit_ = true;
   if (!ctx_.windowed()) {
     if (since >= 1) fprintf(stderr, "[live] %s\n", text.c_str()), last_tick_ = now;  // headless: a line a second
     if (!shown_path_.empty() && since >= 1) present();
-    return nullptr;
+    if (why) fprintf(stderr, "[live] cancelled: %s\n", text.c_str());
+    return why;
   }
-  if (since < 0.04) return nullptr;  // work that ticks every 50 ms is shown at each tick
+  if (since < 0.04 && !why) return nullptr;  // work that ticks every 50 ms is shown at each tick
   last_tick_ = now;
   ctx_.poll(0);  // input callbacks run; the view they change is drawn after the work
-  const char* why = input_.take_cancel() ? "cancelled by the user (Esc)" : nullptr;
+  if (input_.take_cancel()) why = "cancelled by the user (Esc)";
   if (ctx_.should_close()) why = "stopped: the window was closed", quit_ = true;
   try {
     if (!quit_) present();
@@ -556,6 +614,46 @@ const char* Loop::tick(const std::string& text, double fraction) {
   }
   if (why) fprintf(stderr, "[live] %s: %s\n", quit_ ? "window closed" : "cancelled", text.c_str());
   return why;
+}
+
+std::unique_ptr<Watch> Loop::watch(const std::string& what) {
+  if (!RunGuard::active()) running_ = what, running_since_ = Clock::now();
+  return std::make_unique<Watch>(L_, [this] { return check_run(); });
+}
+
+// Asked by the hook about every 40 ms while plain Lua runs: why it must stop, or null. Shows the
+// last picture with a bar naming what runs once it has run for half a second.
+const char* Loop::check_run() {
+  // Work that ticks (training, recording) reads the keys and Ctrl-C itself and says why it stopped
+  // (sn.train: cancelled by the user (Esc) in epoch 1 of 3): it is left to do so while it ticks,
+  // also through gaps of a loaded machine.
+  if (seconds_since(ticked_at_) < 2) return nullptr;
+  if (lua::LiveInterrupt::take()) return "interrupted by the user (Ctrl-C)";
+  if (exit_after_ > 0 && seconds_since(started_) >= exit_after_) {  // the tests' time limit holds in a loop too
+    quit_ = true;
+    return "stopped: SHADENET_LIVE_EXIT_AFTER ran out";
+  }
+  if (!ctx_.windowed()) return nullptr;
+  try {
+    ctx_.poll(0);
+    if (input_.take_cancel()) return "interrupted by the user (Esc)";
+    if (ctx_.should_close()) {
+      quit_ = true;
+      fprintf(stderr, "[live] window closed: running %s\n", running_.c_str());
+      return "stopped: the window was closed";
+    }
+    double running = seconds_since(running_since_);
+    if (running >= 0.5 && seconds_since(running_shown_) >= 0.1) {
+      running_shown_ = Clock::now();
+      char text[512];
+      snprintf(text, sizeof text, "running %s: %.1f s  (Esc or Ctrl-C stops it)", running_.c_str(), running);
+      hud_.set_progress(text, 0);
+      present();
+    }
+  } catch (const std::exception& e) {
+    fprintf(stderr, "[live] cannot show the progress: %s\n", e.what());
+  }
+  return nullptr;
 }
 
 // The probe box follows the cursor (key I): the values of the last frame under it, read back
@@ -574,6 +672,7 @@ void Loop::update_probe() {
       lua_pushinteger(L_, x + 1);
       lua_pushinteger(L_, y + 1);
       std::vector<std::string> lines;
+      auto watching = watch("the probe");
       if (call("_probe_lines", 2, 1) && lua_istable(L_, -1))
         for (int i = 1; i <= int(lua_objlen(L_, -1)); ++i) {
           lua_rawgeti(L_, -1, i);
@@ -646,6 +745,7 @@ void Loop::ask_quit() {
 // have changed them.
 void Loop::update_binds() {
   std::vector<std::string> lines;
+  auto watching = watch("the bound keys' values");
   if (call("_bind_lines", 0, 1) && lua_istable(L_, -1))
     for (int i = 1; i <= int(lua_objlen(L_, -1)); ++i) {
       lua_rawgeti(L_, -1, i);
@@ -661,7 +761,12 @@ void Loop::actions() {
   for (auto [key, down] : a.keys) {  // sn.live.bind's keys: a bound value steps
     lua_pushlstring(L_, &key, 1);
     lua_pushboolean(L_, down);
-    if (!call("_key", 2, 2)) continue;
+    bool stepped = false;
+    {
+      auto watching = watch("a bound key");
+      stepped = call("_key", 2, 2);
+    }
+    if (!stepped) continue;
     if (const char* line = lua_tostring(L_, 1)) {
       printf("[live] %s\n", line);
       dirty_ = unsaved_ = true;  // like a console edit: gone at the next reload
@@ -674,18 +779,19 @@ void Loop::actions() {
   if (a.quit) ask_quit();
   if (hud_.has_notice() && Clock::now() >= confirm_until_) hud_.set_notice({}), present_due_ = true;
   if (a.help) printf("%s", Input::help());
-  auto run_lua = [&](const char* code) {
+  auto run_lua = [&](const char* what, const char* code) {
     if (luaL_loadstring(L_, code) != 0) return lua_settop(L_, 0);
     lua_pushcfunction(L_, traceback);
     lua_insert(L_, -2);
+    auto watching = watch(what);
     if (lua_pcall(L_, 0, 0, 1) != 0) fprintf(stderr, "[live] %s\n", lua_tostring(L_, -1));
     lua_settop(L_, 0);
   };
-  if (a.screenshot) run_lua("local sn = require 'shadenet'; print('[live] screenshot: ' .. sn.live.screenshot())");
+  if (a.screenshot) run_lua("the screenshot", "local sn = require 'shadenet'; print('[live] screenshot: ' .. sn.live.screenshot())");
   if (a.record)
-    run_lua("local sn = require 'shadenet'; local dir, frames = sn.record { orbit = { count = 36 } }; "
+    run_lua("the recording", "local sn = require 'shadenet'; local dir, frames = sn.record { orbit = { count = 36 } }; "
             "print(('[live] recorded %d frames of an orbit in %s'):format(#frames, dir))");
-  if (a.print_view) run_lua("local sn = require 'shadenet'; print(sn.live.view_code())");
+  if (a.print_view) run_lua("the view's code", "local sn = require 'shadenet'; print(sn.live.view_code())");
   end_busy();
   if (a.present && !dirty_) present_due_ = true;
   fflush(stdout);
@@ -695,7 +801,7 @@ int Loop::run() {
   if (const char* s = getenv("SHADENET_LIVE_SNAPSHOT"); s && *s) snapshot_ = s;
   if (const char* s = getenv("SHADENET_LIVE_EXIT_AFTER"); s && *s) exit_after_ = atof(s);
   if (const char* s = getenv("SHADENET_LIVE_SHOWN"); s && *s) shown_path_ = s;
-  auto start = Clock::now();
+  started_ = Clock::now();
 
   // The module table: `require "shadenet"` before the script, so its sn.live functions exist.
   lua_settop(L_, 0);
@@ -785,7 +891,7 @@ int Loop::run() {
     if (quit_) break;
     double timeout = 3600;
     if (exit_after_ > 0) {
-      timeout = exit_after_ - seconds_since(start);
+      timeout = exit_after_ - seconds_since(started_);
       if (timeout <= 0) break;
     }
     if (reload_pending_)

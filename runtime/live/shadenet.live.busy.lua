@@ -46,6 +46,10 @@ function sn.train(o)
     if user_tick then return user_tick(t) end
   end
   copy.tick_seconds = math.min(0.05, type(o.tick_seconds) == "number" and o.tick_seconds or 0.05)
+  -- A tick before the training sets up (seconds, for millions of rows): the bar shows at once,
+  -- and the keys pressed meanwhile are the training's (the loop leaves ticking work to its ticks).
+  local why = live._tick(("training%s: setting up  (Esc cancels)"):format(nets > 1 and (" %d nets"):format(nets) or ""), 0)
+  if why then error(("sn.train: %s before its first step; the last good state stays"):format(why), 2) end
   -- Errors name the script's line (level 2), not this wrapper's.
   local ok, results = pcall(plain_train, copy)
   if not ok then error(results, 2) end

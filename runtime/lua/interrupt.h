@@ -1,7 +1,7 @@
-// Ctrl-C for the whole process, one SIGINT handler (wrap_terminal.cpp) for both of its users:
-// sn.catch_interrupt() (a sweep's flag, sn.interrupted()) and sn.train, which stops at the next
-// step boundary. Whichever of them caught it, the first Ctrl-C gives SIGINT its default action
-// back: the second ends the process (exit status 130 in a shell).
+// Ctrl-C for the whole process, one SIGINT handler (wrap_terminal.cpp) for its three users:
+// sn.catch_interrupt() (a sweep's flag, sn.interrupted()), sn.train, which stops at the next
+// step boundary, and live mode's runs (LiveInterrupt). For the first two the first Ctrl-C gives
+// SIGINT its default action back: the second ends the process (exit status 130 in a shell).
 #pragma once
 #include <atomic>
 
@@ -20,6 +20,23 @@ class TrainInterrupt {
 
  private:
   std::atomic<bool>* previous_;
+  bool installed_ = false;
+};
+
+// While one lives (a live session runs its script, a console line or a frame), each Ctrl-C only
+// sets a flag that take() reads and clears: the live loop turns it into a Lua error and the
+// session goes on. A second Ctrl-C before the first was taken (the work is stuck in a long C
+// call) ends the process, as does a Ctrl-C while none lives. A TrainInterrupt inside it leaves
+// the handler alone: live mode stops its training through the training's tick.
+class LiveInterrupt {
+ public:
+  LiveInterrupt();  // clears a flag left from before
+  ~LiveInterrupt();
+  LiveInterrupt(const LiveInterrupt&) = delete;
+  LiveInterrupt& operator=(const LiveInterrupt&) = delete;
+  static bool take();  // true once per Ctrl-C caught
+
+ private:
   bool installed_ = false;
 };
 

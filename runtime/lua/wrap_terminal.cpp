@@ -24,6 +24,8 @@ bool g_catching = false;  // between sn.catch_interrupt() and sn.catch_interrupt
 // The running sn.train's stop flag, or nullptr. A pointer atomic is lock-free on every platform
 // we build on, so the handler may read it.
 std::atomic<std::atomic<bool>*> g_train_stop{nullptr};
+// Live mode (LiveInterrupt): a run is in progress, and a Ctrl-C it has not taken yet.
+volatile std::sig_atomic_t g_live = 0, g_live_pending = 0;
 static_assert(std::atomic<std::atomic<bool>*>::is_always_lock_free && std::atomic<bool>::is_always_lock_free,
               "the SIGINT handler needs lock-free atomics");
 
@@ -33,6 +35,17 @@ void say(const char* msg, std::size_t n) {
 }
 
 extern "C" void on_sigint(int signo) {
+  if (g_live && signo == SIGINT) {
+    if (g_live_pending) {  // the first has not stopped the work: this one ends the process now
+      std::signal(SIGINT, SIG_DFL);
+      std::raise(SIGINT);
+      return;
+    }
+    g_live_pending = 1;
+    static const char msg[] = "\n[live] interrupt: stopping the script (Ctrl-C again to end shadenet at once)\n";
+    say(msg, sizeof msg - 1);
+    return;
+  }
   if (g_interrupts == 0) g_first_signal = signo;
   g_interrupts = g_interrupts + 1;
   // The second signal gets the default action back: the process ends now.
@@ -91,6 +104,30 @@ TrainInterrupt::~TrainInterrupt() {
   g_train_stop.store(previous_);
   // Still ours and not fired: the default action back, as before sn.train.
   if (installed_ && current_handler() == on_sigint) set_handler(SIG_DFL, false);
+}
+
+LiveInterrupt::LiveInterrupt() {
+  // Nested (a frame drawn inside a run) or under sn.catch_interrupt(): the handler is in place.
+  if (g_live || current_handler() == on_sigint) return;
+  g_live_pending = 0;
+  // An ignored SIGINT (a background job) stays ignored.
+  if (current_handler() != SIG_DFL) return;
+  set_handler(on_sigint, false);
+  installed_ = true;
+  g_live = 1;
+}
+
+LiveInterrupt::~LiveInterrupt() {
+  if (!installed_) return;
+  g_live = 0;
+  g_live_pending = 0;
+  if (current_handler() == on_sigint) set_handler(SIG_DFL, false);
+}
+
+bool LiveInterrupt::take() {
+  if (!g_live_pending) return false;
+  g_live_pending = 0;
+  return true;
 }
 
 namespace {

@@ -47,14 +47,17 @@ Session.__index = Session
 
 -- H.start{ dir = "out/live_tests/x", script = path, window = true, size = "160x120",
 --          limit = 30 (seconds: the child's SHADENET_LIVE_EXIT_AFTER), args = {...},
---          shown = true (also save what is shown, overlays included: SHADENET_LIVE_SHOWN) } -> session
+--          shown = true (also save what is shown, overlays included: SHADENET_LIVE_SHOWN),
+--          sigint = true (Ctrl-C as a terminal's: SIGINT not ignored, though a shell that
+--          started this test in the background ignores it for its children) } -> session
 function H.start(o)
   os.execute(("rm -rf %q %q %q %q && mkdir -p %q %q"):format(o.dir .. "/frames", o.dir .. "/shown", o.dir .. "/pid",
                                                              o.dir .. "/log.txt", o.dir .. "/frames", o.dir .. "/shown"))
   local s = setmetatable({ dir = o.dir, log_path = o.dir .. "/log.txt", started = sn.clock() }, Session)
-  local cmd = ("echo $$ > %q; exec env SHADENET_LIVE_SNAPSHOT=%q SHADENET_LIVE_SHOWN=%q SHADENET_LIVE_EXIT_AFTER=%d "
+  local cmd = ("echo $$ > %q; exec env %sSHADENET_LIVE_SNAPSHOT=%q SHADENET_LIVE_SHOWN=%q SHADENET_LIVE_EXIT_AFTER=%d "
                .. "%q %s --size %s --watch %q %s > %q 2>&1")
-    :format(o.dir .. "/pid", o.dir .. "/frames/frame-%d.exr", o.shown and o.dir .. "/shown/shown-%d.exr" or "",
+    :format(o.dir .. "/pid", o.sigint and "--default-signal=INT " or "", o.dir .. "/frames/frame-%d.exr",
+            o.shown and o.dir .. "/shown/shown-%d.exr" or "",
             o.limit or 30, H.shadenet,
             o.window == false and "" or "--window", o.size or "160x120", o.script,
             table.concat(o.args or {}, " "), s.log_path)

@@ -1,7 +1,8 @@
 -- The console at a terminal (a pseudo-terminal here): lines are edited (the up arrow recalls the
 -- last line, backspace deletes, the edited line runs), the history is saved to its file and the
--- next session recalls the last session's lines; Ctrl-D on an empty line ends the session; lines
--- of thousands of characters are typed and recalled like short ones.
+-- next session recalls the last session's lines; Ctrl-D on an empty line ends the session; Ctrl-C
+-- stops a line that never ends; lines of thousands of characters are typed and recalled like
+-- short ones.
 -- (Piped stdin, no terminal: tests/window/test_live_repl.lua and the other live tests.)
 local sn = require "shadenet"
 package.path = "tests/live/?.lua;" .. package.path
@@ -15,6 +16,19 @@ local function session()
   return H.tty { "env", "SHADENET_HISTORY=" .. history, "SHADENET_LIVE_EXIT_AFTER=60", H.shadenet, "--watch", script }
 end
 local UP, BACKSPACE, CTRL_D = "\27[A", "\127", "\4"
+
+-- Ctrl-C at the terminal stops a line that never ends; the console goes on (it ended the process).
+local tc = session()
+tc:wait("READY")
+tc:wait("> ")
+tc:type("while true do end\r")
+H.sleep(0.5)
+tc:type("\3")
+tc:wait("stdin:1: interrupted by the user (Ctrl-C)")
+tc:type('print("AFTER=" .. 6 * 7)\r')
+tc:wait("AFTER=42")
+tc:type(CTRL_D)
+tc:close()
 
 local t = session()
 t:wait("READY")
