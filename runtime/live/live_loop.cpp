@@ -145,6 +145,9 @@ struct Watch {
   RunGuard guard;
 };
 
+// How the user asked to quit: each asks first when console edits would be lost.
+enum class QuitBy { key, close, ctrl_d };
+
 class Loop {
  public:
   Loop(lua_State* L, const LiveOptions& o) : L_(L), o_(o), ctx_(gl::current()), waker_(ctx_.windowed()) {}
@@ -190,7 +193,7 @@ class Loop {
     if (stdin_ && console_) stdin_->prompt(console_->prompt());
   }
   void actions();
-  void ask_quit();
+  void ask_quit(QuitBy by);
   void update_binds();
   void set_status();
   void report(const std::string& message);
@@ -498,9 +501,14 @@ void Loop::console() {
     take_requests();
     prompt_after_frame_ = true;  // after the redraw, so the prompt follows its messages
   }
+  // Ctrl-D at a terminal ends the session, as in lua, asking first when console edits would be
+  // lost; a pipe that ran dry just ends the console.
+  if (stdin_->take_ctrl_d()) {
+    ask_quit(QuitBy::ctrl_d);
+    if (!quit_) prompt();
+  }
   if (stdin_->at_end()) {
     stdin_.reset();
-    // Ctrl-D at a terminal ends the session, as in lua; a pipe that ran dry just ends the console.
     if (StdinReader::interactive()) quit_ = true;
   }
 }
@@ -606,7 +614,9 @@ const char* Loop::tick(const std::string& text, double fraction) {
   last_tick_ = now;
   ctx_.poll(0);  // input callbacks run; the view they change is drawn after the work
   if (input_.take_cancel()) why = "cancelled by the user (Esc)";
-  if (ctx_.should_close()) why = "stopped: the window was closed", quit_ = true;
+  // Closing the window stops the work; the session ends with it unless console edits would be
+  // lost (then the loop asks first, as for Q).
+  if (ctx_.should_close()) why = "stopped: the window was closed", quit_ = !unsaved_;
   try {
     if (!quit_) present();
   } catch (const std::exception& e) {
@@ -638,8 +648,8 @@ const char* Loop::check_run() {
     ctx_.poll(0);
     if (input_.take_cancel()) return "interrupted by the user (Esc)";
     if (ctx_.should_close()) {
-      quit_ = true;
-      fprintf(stderr, "[live] window closed: running %s\n", running_.c_str());
+      quit_ = !unsaved_;
+      fprintf(stderr, "[live] %s: running %s\n", quit_ ? "window closed" : "stopped", running_.c_str());
       return "stopped: the window was closed";
     }
     double running = seconds_since(running_since_);
@@ -725,18 +735,25 @@ void Loop::present() {
   }
 }
 
-// Q or Esc: quits at once, unless console edits (or bound keys' changes) that are not in the
-// script would be lost; then it asks, in the window and on the terminal, for a second press
-// within kConfirm.
-void Loop::ask_quit() {
+// Q or Esc, the window's close button, Ctrl-D at the console: quits at once, unless console edits
+// (or bound keys' changes) that are not in the script would be lost; then it asks, in the window
+// and on the terminal, for a second request (any of them) within kConfirm.
+void Loop::ask_quit(QuitBy by) {
   auto now = Clock::now();
+  if (by == QuitBy::close) glfwSetWindowShouldClose(static_cast<GLFWwindow*>(ctx_.native_window()), GLFW_FALSE);
   if (!unsaved_ || now < confirm_until_) {
     quit_ = true;
     return;
   }
-  fprintf(stderr, "[live] Console edits are not in the script and will be lost: press Q (or Esc) again to quit\n");
+  const char* again = by == QuitBy::close    ? "close the window again (or press Q)"
+                      : by == QuitBy::ctrl_d ? "press Ctrl-D again (or Q)"
+                                             : "press Q (or Esc) again";
+  fprintf(stderr, "[live] Console edits are not in the script and will be lost: %s to quit\n", again);
   fflush(stderr);
-  hud_.set_notice({"Console edits will be lost", "(they are not in the script)", "Q or Esc again: quit"});
+  std::string last = by == QuitBy::close    ? "Close again (or Q): quit"
+                     : by == QuitBy::ctrl_d ? "Ctrl-D again (or Q): quit"
+                                            : "Q or Esc again: quit";
+  hud_.set_notice({"Console edits will be lost", "(they are not in the script)", last});
   confirm_until_ = now + kConfirm;
   present_due_ = true;
 }
@@ -776,7 +793,7 @@ void Loop::actions() {
     lua_settop(L_, 0);
   }
   if (!a.keys.empty()) update_binds();
-  if (a.quit) ask_quit();
+  if (a.quit) ask_quit(QuitBy::key);
   if (hud_.has_notice() && Clock::now() >= confirm_until_) hud_.set_notice({}), present_due_ = true;
   if (a.help) printf("%s", Input::help());
   auto run_lua = [&](const char* what, const char* code) {
@@ -860,7 +877,7 @@ int Loop::run() {
     actions();
     if (input_.take_dirty()) dirty_ = true;
     if (ctx_.windowed()) {
-      if (ctx_.should_close()) break;
+      if (ctx_.should_close() && !quit_) ask_quit(QuitBy::close);
       if (ctx_.framebuffer_size() != drawn_size_) drawn_size_ = ctx_.framebuffer_size(), dirty_ = true;
     }
     // Headless there is nothing to show unless a snapshot file is asked for.

@@ -10,6 +10,7 @@
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
+#include <utility>
 
 #include <editline/readline.h>
 
@@ -103,8 +104,8 @@ void StdinReader::prompt(const char* text) {
     if (!self) return free(line);
     self->line_open_ = false;  // libedit left its reading mode: no character is fed until the next prompt
     std::lock_guard<std::mutex> lock(self->mutex_);
-    if (!line) {  // Ctrl-D on an empty line
-      self->eof_ = true;
+    if (!line) {  // Ctrl-D on an empty line: the loop asks before it ends the session
+      self->ctrl_d_ = true;
       return;
     }
     std::string s = line;
@@ -166,6 +167,12 @@ bool StdinReader::take(std::string& line) {
   return true;
 }
 
+bool StdinReader::take_ctrl_d() {
+  if (editing_) edit();
+  std::lock_guard<std::mutex> lock(mutex_);
+  return std::exchange(ctrl_d_, false);
+}
+
 bool StdinReader::at_end() {
   std::lock_guard<std::mutex> lock(mutex_);
   return eof_ && lines_.empty();
@@ -200,6 +207,20 @@ void StdinReader::run() {
     }
     ssize_t n = read(0, buf, sizeof buf);
     if (n < 0 && (errno == EINTR || errno == EAGAIN)) continue;
+    // At a terminal a read of nothing is Ctrl-D (a hang-up reads as an error, or ends the process);
+    // elsewhere it is the end of the input.
+    if (n == 0 && interactive() && !(fds[0].revents & POLLHUP)) {
+      if (!partial.empty()) {  // Ctrl-D after text ends that line, as a terminal does
+        std::lock_guard<std::mutex> lock(mutex_);
+        lines_.push_back(std::move(partial));
+        partial.clear();
+      } else {
+        std::lock_guard<std::mutex> lock(mutex_);
+        ctrl_d_ = true;
+      }
+      wake_();
+      continue;
+    }
     if (n <= 0) return finish(), wake_();
     partial.append(buf, size_t(n));
     bool any = false;

@@ -29,6 +29,9 @@ class StdinReader {
 
   bool take(std::string& line);  // the next complete line, without its newline
   bool at_end();  // stdin was closed and every line was taken
+  // True once per Ctrl-D on an empty line at a terminal: the console goes on reading (the loop
+  // decides whether the session ends).
+  bool take_ctrl_d();
   static bool interactive();  // stdin is a terminal (prompts are printed only then)
   // At a terminal: shows `text` and lets the user edit the next line (nothing otherwise).
   void prompt(const char* text);
@@ -53,6 +56,7 @@ class StdinReader {
   std::mutex mutex_;
   std::deque<std::string> lines_;
   bool eof_ = false;
+  bool ctrl_d_ = false;
   std::thread thread_;
 };
 

@@ -172,7 +172,8 @@ end
 
 -- A process on a pseudo-terminal, as a user at a terminal runs it (the console's line editing
 -- works only there): H.tty{ "cmd", "arg", ... } -> t with t:type(bytes), t:wait(plain text,
--- timeout) -> output so far, t:output(), t:close() (waits for the process to exit).
+-- timeout) -> output so far, t:output(), t:exited(timeout) -> whether it ended, t:close()
+-- (waits for the process to exit).
 function H.tty(argv)
   pcall(ffi.cdef, [[
     int forkpty(int* amaster, char* name, void* termp, void* winp);
@@ -224,12 +225,22 @@ function H.tty(argv)
     end
     return self.out
   end
-  function t:close()
+  -- True when the process has ended within `timeout` seconds (it is then reaped).
+  function t:exited(timeout)
+    if self.reaped then return true end
     local status = ffi.new("int[1]")
-    for _ = 1, 400 do  -- reading keeps the child from blocking on a full terminal
+    local t0 = sn.clock()
+    repeat  -- reading keeps the child from blocking on a full terminal
       self:pump(25)
-      if ffi.C.waitpid(self.pid, status, 1) == self.pid then break end  -- WNOHANG
-    end
+      if ffi.C.waitpid(self.pid, status, 1) == self.pid then  -- WNOHANG
+        self.reaped = true
+        return true
+      end
+    until sn.clock() - t0 > (timeout or 10)
+    return false
+  end
+  function t:close()
+    self:exited(10)
     ffi.C.close(self.fd)
   end
   return t

@@ -1,7 +1,8 @@
 -- Q asks before console edits are lost: with none it quits at once; after a console edit (a
 -- line that changed something, not a query) it asks in the window and on the terminal, and a
 -- second Q within 3 s quits; the question goes after 3 s; a reload drops the edits (the script
--- is the truth again), so Q quits at once.
+-- is the truth again), so Q quits at once. The window's close button does as Q (it quit at once,
+-- edits or not). (Ctrl-D at the console: tests/lua/test_live_console_tty.lua.)
 local sn = require "shadenet"
 package.path = "tests/live/?.lua;" .. package.path
 local H = require "harness"
@@ -95,5 +96,26 @@ x11:key("q")
 wait_exit(s, "Q after a reload quits at once")
 assert(asks(s) == 0, "nothing was asked after the reload")
 s.pipe:close()
+
+-- 4. The close button: at once without edits; after an edit it asks, and a second close quits.
+s = H.start { dir = dir .. "/s4", script = script, size = "240x180" }
+s:wait_frame(1)
+x11:close_window()
+wait_exit(s, "closing the window with no console edit quits at once")
+assert(asks(s) == 0, "nothing was asked")
+s.pipe:close()
+s = H.start { dir = dir .. "/s5", script = script, size = "240x180" }
+s:wait_frame(1)
+s:send("net.layers[1].weight[1][2] = -0.4")
+s:wait_frame(2)
+x11:close_window()
+s:wait_log("close the window again %(or press Q%) to quit")
+H.sleep(0.3)
+assert(alive(s), "the first close after an edit does not quit")
+x11:close_window()
+wait_exit(s, "a second close within 3 s quits")
+s.pipe:close()
+
 x11:close()
-print("quit: at once without edits, asked (window + terminal) after a console edit, asked again after 3 s, at once after a reload")
+print("quit: at once without edits, asked (window + terminal) after a console edit, asked again after 3 s, at once after a reload; "
+      .. "the close button alike")
