@@ -155,7 +155,7 @@ void Input::key(int k, int mods) {
     case GLFW_KEY_I: probe_on_ = !probe_on_, probe_dirty_ = true; break;
     case GLFW_KEY_H:
     case GLFW_KEY_F1: actions_.help = true; break;
-    case GLFW_KEY_ESCAPE:
+    case GLFW_KEY_ESCAPE: actions_.quit = actions_.escape = true; break;
     case GLFW_KEY_Q: actions_.quit = true; break;
     case GLFW_KEY_C: actions_.cancel = true; break;
     default: {  // for sn.live.bind

@@ -36,6 +36,7 @@ struct ViewState {
 
 struct Actions {
   bool screenshot = false, record = false, print_view = false, quit = false, help = false, cancel = false;
+  bool escape = false;  // the quit came from Esc (which also stops work), not Q
   bool present = false;  // the window was uncovered: show the last frame again (no new render)
   // Letters and digits no control uses, in order, for sn.live.bind: the key ('a'..'z', '0'..'9')
   // and whether Shift was held (steps down).

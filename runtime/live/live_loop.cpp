@@ -146,7 +146,7 @@ struct Watch {
 };
 
 // How the user asked to quit: each asks first when console edits would be lost.
-enum class QuitBy { key, close, ctrl_d };
+enum class QuitBy { key, esc, close, ctrl_d };
 
 class Loop {
  public:
@@ -181,6 +181,7 @@ class Loop {
   // the window's bar when it runs for long.
   std::unique_ptr<Watch> watch(const std::string& what);
   const char* check_run();
+  const char* check_stop();
   // What the view is drawn at: the window's framebuffer, or headless the --size given (0 x 0:
   // the script's size, sn.live.show{ size = ... }, else 640 x 480).
   std::pair<int, int> view_size() const {
@@ -222,7 +223,10 @@ class Loop {
   Clock::time_point last_tick_{}, ticked_at_{};
   std::string running_;  // what the outermost watch runs ("examples/x.lua", "the console line")
   Clock::time_point running_since_{}, running_shown_{};
-  Clock::time_point started_{};  // of the session (SHADENET_LIVE_EXIT_AFTER)
+  Clock::time_point busy_since_{}, busy_ended_{};  // when the last progress bar came and went
+  bool stopped_ = false;            // the user stopped that work (Esc, Ctrl-C, closing the window)
+  Clock::time_point started_{};     // of the session (SHADENET_LIVE_EXIT_AFTER)
+  static constexpr std::chrono::milliseconds kLateEsc{2000};
   double exit_after_ = 0, frame_ms_ = 0, view_error_scale_ = 0.25;
   bool dirty_ = true, quit_ = false, prompt_after_frame_ = false;
   std::string shown_title_;
@@ -598,6 +602,7 @@ int Loop::tick_thunk(lua_State* L) {
 // 10 pictures a second while the work ticks at least that often), show the last picture with the progress bar and read
 // the window's events; why the work must stop when the user cancelled or closed the window, else null.
 const char* Loop::tick(const std::string& text, double fraction) {
+  if (!hud_.has_progress()) busy_since_ = Clock::now();
   hud_.set_progress(text, fraction);
   auto now = Clock::now();
   ticked_at_ = now;
@@ -607,7 +612,7 @@ const char* Loop::tick(const std::string& text, double fraction) {
   if (!ctx_.windowed()) {
     if (since >= 1) fprintf(stderr, "[live] %s\n", text.c_str()), last_tick_ = now;  // headless: a line a second
     if (!shown_path_.empty() && since >= 1) present();
-    if (why) fprintf(stderr, "[live] cancelled: %s\n", text.c_str());
+    if (why) fprintf(stderr, "[live] cancelled: %s\n", text.c_str()), stopped_ = true;
     return why;
   }
   if (since < 0.04 && !why) return nullptr;  // work that ticks every 50 ms is shown at each tick
@@ -623,6 +628,7 @@ const char* Loop::tick(const std::string& text, double fraction) {
     fprintf(stderr, "[live] cannot show the progress: %s\n", e.what());
   }
   if (why) fprintf(stderr, "[live] %s: %s\n", quit_ ? "window closed" : "cancelled", text.c_str());
+  if (why) stopped_ = true;
   return why;
 }
 
@@ -634,6 +640,12 @@ std::unique_ptr<Watch> Loop::watch(const std::string& what) {
 // Asked by the hook about every 40 ms while plain Lua runs: why it must stop, or null. Shows the
 // last picture with a bar naming what runs once it has run for half a second.
 const char* Loop::check_run() {
+  const char* why = check_stop();
+  if (why) stopped_ = true;
+  return why;
+}
+
+const char* Loop::check_stop() {
   // Work that ticks (training, recording) reads the keys and Ctrl-C itself and says why it stopped
   // (sn.train: cancelled by the user (Esc) in epoch 1 of 3): it is left to do so while it ticks,
   // also through gaps of a loaded machine.
@@ -657,6 +669,7 @@ const char* Loop::check_run() {
       running_shown_ = Clock::now();
       char text[512];
       snprintf(text, sizeof text, "running %s: %.1f s  (Esc or Ctrl-C stops it)", running_.c_str(), running);
+      if (!hud_.has_progress()) busy_since_ = Clock::now();
       hud_.set_progress(text, 0);
       present();
     }
@@ -698,8 +711,12 @@ void Loop::update_probe() {
 
 // After a run, a console line or an action: the progress bar goes.
 void Loop::end_busy() {
+  bool stopped = std::exchange(stopped_, false);
   if (!hud_.has_progress()) return;
   hud_.set_progress("", 0);
+  // An Esc soon after is taken for one meant to stop the work when the bar was up long enough to
+  // be seen, and the work was not stopped (that took its key: a later one is meant).
+  if (!stopped && seconds_since(busy_since_) >= 0.3) busy_ended_ = Clock::now();
   present_due_ = true;
 }
 
@@ -737,23 +754,31 @@ void Loop::present() {
 
 // Q or Esc, the window's close button, Ctrl-D at the console: quits at once, unless console edits
 // (or bound keys' changes) that are not in the script would be lost; then it asks, in the window
-// and on the terminal, for a second request (any of them) within kConfirm.
+// and on the terminal, for a second request (any of them) within kConfirm. An Esc (it also stops
+// work; Q is a plain quit) read within kLateEsc of the end of a training, a recording or a long
+// run that ended by itself was most likely meant to stop it: it asks too.
 void Loop::ask_quit(QuitBy by) {
   auto now = Clock::now();
   if (by == QuitBy::close) glfwSetWindowShouldClose(static_cast<GLFWwindow*>(ctx_.native_window()), GLFW_FALSE);
-  if (!unsaved_ || now < confirm_until_) {
+  bool late = by == QuitBy::esc && now - busy_ended_ < kLateEsc;
+  if ((!unsaved_ && !late) || now < confirm_until_) {
     quit_ = true;
     return;
   }
   const char* again = by == QuitBy::close    ? "close the window again (or press Q)"
                       : by == QuitBy::ctrl_d ? "press Ctrl-D again (or Q)"
+                      : by == QuitBy::esc    ? "press Esc (or Q) again"
                                              : "press Q (or Esc) again";
-  fprintf(stderr, "[live] Console edits are not in the script and will be lost: %s to quit\n", again);
+  if (unsaved_)
+    fprintf(stderr, "[live] Console edits are not in the script and will be lost: %s to quit\n", again);
+  else
+    fprintf(stderr, "[live] The work had ended before the key was read (nothing was cancelled): %s to quit\n", again);
   fflush(stderr);
   std::string last = by == QuitBy::close    ? "Close again (or Q): quit"
                      : by == QuitBy::ctrl_d ? "Ctrl-D again (or Q): quit"
                                             : "Q or Esc again: quit";
-  hud_.set_notice({"Console edits will be lost", "(they are not in the script)", last});
+  if (unsaved_) hud_.set_notice({"Console edits will be lost", "(they are not in the script)", last});
+  else hud_.set_notice({"The work ended before the key:", "nothing was cancelled", last});
   confirm_until_ = now + kConfirm;
   present_due_ = true;
 }
@@ -793,7 +818,7 @@ void Loop::actions() {
     lua_settop(L_, 0);
   }
   if (!a.keys.empty()) update_binds();
-  if (a.quit) ask_quit(QuitBy::key);
+  if (a.quit) ask_quit(a.escape ? QuitBy::esc : QuitBy::key);
   if (hud_.has_notice() && Clock::now() >= confirm_until_) hud_.set_notice({}), present_due_ = true;
   if (a.help) printf("%s", Input::help());
   auto run_lua = [&](const char* what, const char* code) {

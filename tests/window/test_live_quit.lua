@@ -2,7 +2,9 @@
 -- line that changed something, not a query) it asks in the window and on the terminal, and a
 -- second Q within 3 s quits; the question goes after 3 s; a reload drops the edits (the script
 -- is the truth again), so Q quits at once. The window's close button does as Q (it quit at once,
--- edits or not). (Ctrl-D at the console: tests/lua/test_live_console_tty.lua.)
+-- edits or not). An Esc read just after a training ended (it came too late to cancel it) asks
+-- before it quits (it quit, and the freshly trained network was gone). (Ctrl-D at the console:
+-- tests/lua/test_live_console_tty.lua.)
 local sn = require "shadenet"
 package.path = "tests/live/?.lua;" .. package.path
 local H = require "harness"
@@ -116,6 +118,38 @@ x11:close_window()
 wait_exit(s, "a second close within 3 s quits")
 s.pipe:close()
 
+-- 5. Esc just after a training ended asks first; Esc again quits.
+local train_script = dir .. "/train.lua"
+H.write(train_script, ([[
+local sn = require "shadenet"
+local net = sn.keep("net", function()
+  local data = sn.dataset.sample { target = sn.lighting.phong {}, n = 400000, seed = 1 }
+  local n = sn.mlp { inputs = 6, hidden = { 32, 32 }, outputs = 3, seed = 1 }
+  sn.train { nets = n, data = data, epochs = 1, batch = 8, backend = "cpu" }
+  io.stderr:write("TRAINED\n")
+  return n
+end)
+sn.live.show { network = function(view)
+  local t = sn.target { width = view.width, height = view.height }
+  t:clear { 0.5 + 0.1 * net.layers[1].weight[1][1], 0.5, 0.5, 1 }
+  return t
+end }
+]]))
+s = H.start { dir = dir .. "/s6", script = train_script, size = "240x180", limit = 60 }
+s:wait_log("TRAINED", 50)
+x11:move(120, 90)
+x11:key("Escape")
+local LATE = "The work had ended before the key was read %(nothing was cancelled%): press Esc %(or Q%) again to quit"
+for _ = 1, 50 do
+  if s:log():find(LATE) or not alive(s) then break end
+  H.sleep(0.02)
+end
+if alive(s) and not s:log():find(LATE) then x11:key("Escape") end  -- a key XTest lost
+s:wait_log(LATE)
+assert(alive(s), "an Esc just after the training does not quit")
+x11:key("Escape")
+wait_exit(s, "Esc again quits")
+s.pipe:close()
 x11:close()
 print("quit: at once without edits, asked (window + terminal) after a console edit, asked again after 3 s, at once after a reload; "
-      .. "the close button alike")
+      .. "the close button alike; an Esc just after a training asks")
