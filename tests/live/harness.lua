@@ -32,6 +32,16 @@ function H.write(path, text)
   assert(os.rename(path .. ".tmp", path))
 end
 
+-- A live test's folder made afresh with the scenario script (tests/live/scenario.lua, through
+-- `edit` when given) and the shader it includes: the script's path and its text.
+function H.scenario(dir, edit)
+  os.execute(("rm -rf %q && mkdir -p %q && cp tests/live/tint.frag %q/"):format(dir, dir, dir))
+  local text = H.read("tests/live/scenario.lua")
+  if edit then text = edit(text) end
+  H.write(dir .. "/scenario.lua", text)
+  return dir .. "/scenario.lua", text
+end
+
 -- Saves in place (truncate and write), the other way editors save.
 function H.write_in_place(path, text)
   local f = assert(io.open(path, "wb"))

@@ -7,10 +7,7 @@ package.path = "tests/live/?.lua;" .. package.path
 local H = require "harness"
 
 local dir = "out/live_tests/interrupt_headless"
-os.execute(("rm -rf %q && mkdir -p %q && cp tests/live/tint.frag %q/"):format(dir, dir, dir))
-local script = dir .. "/scenario.lua"
-local template = H.read("tests/live/scenario.lua")
-H.write(script, template)
+local script, template = H.scenario(dir)
 
 local s = H.start { dir = dir .. "/session", script = script, window = false, sigint = true, limit = 90 }
 s:wait_log("%[live%] ran ")

@@ -6,11 +6,9 @@ package.path = "tests/live/?.lua;" .. package.path
 local H = require "harness"
 
 local dir = "out/live_tests/bind"
-os.execute(("mkdir -p %q && cp tests/live/tint.frag %q/"):format(dir, dir))
-local script = dir .. "/scenario.lua"
-local template = H.read("tests/live/scenario.lua"):gsub("%-%- EDITS\n",
-  '-- EDITS\nsn.live.bind { key = "k", param = "net.layers[1].weight[1][2]", step = 0.2 }\n')
-H.write(script, template)
+local script, template = H.scenario(dir, function(text)
+  return (text:gsub("%-%- EDITS\n", '-- EDITS\nsn.live.bind { key = "k", param = "net.layers[1].weight[1][2]", step = 0.2 }\n'))
+end)
 
 local s = H.start { dir = dir, script = script, size = "240x180", shown = true }
 s:wait_frame(1)

@@ -8,9 +8,7 @@ package.path = "tests/live/?.lua;" .. package.path
 local H = require "harness"
 
 local dir = "out/live_tests/hud"
-os.execute(("mkdir -p %q && cp tests/live/tint.frag %q/"):format(dir, dir))
-local script = dir .. "/scenario.lua"
-H.write(script, H.read("tests/live/scenario.lua"))
+local script = H.scenario(dir)
 
 local W, Hh = 320, 240
 local s = H.start { dir = dir .. "/session", script = script, size = W .. "x" .. Hh, shown = true }

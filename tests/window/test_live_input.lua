@@ -7,10 +7,9 @@ package.path = "tests/live/?.lua;" .. package.path
 local H = require "harness"
 
 local dir = "out/live_tests/input"
-os.execute(("mkdir -p %q && cp tests/live/tint.frag %q/"):format(dir, dir))
-local script = dir .. "/scenario.lua"
-H.write(script, (H.read("tests/live/scenario.lua"):gsub('title = "live test",',
-  'title = "live test", val_mse = function() return net:best().val_mse end,')))
+local script = H.scenario(dir, function(text)
+  return (text:gsub('title = "live test",', 'title = "live test", val_mse = function() return net:best().val_mse end,'))
+end)
 
 local s = H.start { dir = dir, script = script, size = "200x150" }
 s:wait_frame(1)

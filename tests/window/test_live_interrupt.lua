@@ -10,10 +10,7 @@ package.path = "tests/live/?.lua;" .. package.path
 local H = require "harness"
 
 local dir = "out/live_tests/interrupt"
-os.execute(("rm -rf %q && mkdir -p %q && cp tests/live/tint.frag %q/"):format(dir, dir, dir))
-local script = dir .. "/scenario.lua"
-local template = H.read("tests/live/scenario.lua")
-H.write(script, template)
+local script, template = H.scenario(dir)
 
 local s = H.start { dir = dir .. "/session", script = script, size = "160x120", shown = true, limit = 90 }
 s:wait_frame(1)

@@ -7,9 +7,7 @@ package.path = "tests/live/?.lua;" .. package.path
 local H = require "harness"
 
 local dir = "out/live_tests/parity"
-os.execute(("mkdir -p %q && cp tests/live/tint.frag %q/"):format(dir, dir))
-local script = dir .. "/scenario.lua"
-H.write(script, H.read("tests/live/scenario.lua"))
+local script = H.scenario(dir)
 
 local s = H.start { dir = dir, script = script, size = "180x120" }
 s:wait_frame(1)

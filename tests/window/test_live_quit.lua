@@ -10,10 +10,7 @@ package.path = "tests/live/?.lua;" .. package.path
 local H = require "harness"
 
 local dir = "out/live_tests/quit"
-os.execute(("mkdir -p %q && cp tests/live/tint.frag %q/"):format(dir, dir))
-local script = dir .. "/scenario.lua"
-local template = H.read("tests/live/scenario.lua")
-H.write(script, template)
+local script, template = H.scenario(dir)
 local ASK = "press Q (or Esc) again to quit"
 local ASK_PATTERN = (ASK:gsub("%p", "%%%0"))
 

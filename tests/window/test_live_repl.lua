@@ -6,9 +6,7 @@ package.path = "tests/live/?.lua;" .. package.path
 local H = require "harness"
 
 local dir = "out/live_tests/repl"
-os.execute(("mkdir -p %q && cp tests/live/tint.frag %q/"):format(dir, dir))
-local script = dir .. "/scenario.lua"
-H.write(script, H.read("tests/live/scenario.lua"))
+local script = H.scenario(dir)
 
 local s = H.start { dir = dir, script = script }
 s:wait_frame(1)
