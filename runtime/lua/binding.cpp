@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <cstring>
 #include <new>
 #include <stdexcept>
@@ -193,8 +192,8 @@ namespace {
 void fingerprint(lua_State* L, int idx, std::vector<const void*>& seen, std::string& out) {
   idx = absindex(L, idx);
   const void* self = lua_topointer(L, idx);
-  if (std::find(seen.begin(), seen.end(), self) != seen.end()) {  // recursion: a local function calling itself
-    out += "(seen " + std::to_string(std::find(seen.begin(), seen.end(), self) - seen.begin()) + ")";
+  if (auto at = std::find(seen.begin(), seen.end(), self); at != seen.end()) {  // a local function calling itself
+    out += "(seen " + std::to_string(at - seen.begin()) + ")";
     return;
   }
   seen.push_back(self);
@@ -216,12 +215,7 @@ void fingerprint(lua_State* L, int idx, std::vector<const void*>& seen, std::str
   for (int i = 1; lua_getupvalue(L, idx, i); ++i) {
     out += "\nupvalue " + std::to_string(i) + " ";
     switch (lua_type(L, -1)) {
-      case LUA_TNUMBER: {
-        char buf[40];
-        std::snprintf(buf, sizeof buf, "%.17g", lua_tonumber(L, -1));
-        out += buf;
-        break;
-      }
+      case LUA_TNUMBER: out += io::exact_text(lua_tonumber(L, -1)); break;
       case LUA_TSTRING: {
         std::size_t n = 0;
         const char* s = lua_tolstring(L, -1, &n);
